@@ -1,0 +1,1 @@
+//! The pattern language (issue 3): to be written.

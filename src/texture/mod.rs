@@ -1,0 +1,1 @@
+//! Image textures (issue 4): to be written.
