@@ -1,0 +1,23 @@
+//! Camera, clipping, triangle setup, edge-function scan conversion into tiles, framebuffer.
+//!
+//! The stages follow the GL pipeline: vertices are moved into camera-relative space (in f64, so
+//! scenes far from the origin keep their precision) and projected to clip space; triangles are
+//! culled and clipped in homogeneous space, snapped to fixed point and binned into tiles; each tile
+//! resolves visibility into a small buffer (depth and triangle per pixel) and then shades only the
+//! visible pixels (deferred shading: no fragment is shaded twice).
+
+mod bin;
+mod camera;
+mod clip;
+mod framebuffer;
+mod pipeline;
+mod scan;
+mod setup;
+
+pub use bin::{TILE_SIZE, TileBins};
+pub use camera::Camera;
+pub use clip::{ClipVertex, clip_triangle};
+pub use framebuffer::{Framebuffer, linear_to_srgb8};
+pub use pipeline::{FrameStats, PreparedObject, PreparedScene, RenderTarget, render};
+pub use scan::{PixelRect, scan_triangle};
+pub use setup::{SUBPIXEL_BITS, ScreenTriangle, Viewport};

@@ -1,0 +1,251 @@
+use super::bin::{TILE_SIZE, TileBins};
+use super::camera::Camera;
+use super::clip::{ClipVertex, clip_triangle};
+use super::framebuffer::Framebuffer;
+use super::scan::{PixelRect, scan_triangle};
+use super::setup::{ScreenTriangle, Viewport};
+use crate::scene::{Material, Scene};
+use crate::shade::{FrameLights, blinn_phong};
+use crate::surface::{Mesh, Surface, Tessellation};
+use glam::{Mat4, Vec2, Vec3, Vec4};
+use rayon::prelude::*;
+
+/// A scene's objects tessellated once, reused for every frame until the scene or density changes.
+pub struct PreparedScene {
+    pub scene: Scene,
+    pub objects: Vec<PreparedObject>,
+}
+
+pub struct PreparedObject {
+    pub surface: Surface,
+    pub material: Material,
+    pub mesh: Mesh,
+}
+
+impl PreparedScene {
+    pub fn new(scene: Scene, tessellation: Tessellation) -> PreparedScene {
+        let objects = scene
+            .objects
+            .par_iter()
+            .map(|o| PreparedObject {
+                surface: o.surface.clone(),
+                material: o.material,
+                mesh: o.surface.tessellate(tessellation),
+            })
+            .collect();
+        PreparedScene { scene, objects }
+    }
+
+    pub fn triangle_count(&self) -> usize {
+        self.objects.iter().map(|o| o.mesh.indices.len()).sum()
+    }
+}
+
+/// What one frame cost.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct FrameStats {
+    /// Triangles of the tessellated scene.
+    pub triangles: usize,
+    /// Screen triangles after culling and clipping that reached scan conversion.
+    pub rasterized_triangles: usize,
+    /// Pixels shaded (each visible pixel exactly once).
+    pub fragments: usize,
+}
+
+/// Where a frame goes and how it is seen.
+pub struct RenderTarget<'a> {
+    pub camera: &'a Camera,
+    pub viewport: Viewport,
+}
+
+/// Per-object state for one frame, in camera-relative space.
+struct FrameObject<'a> {
+    prepared: &'a PreparedObject,
+    /// The surface's anchor relative to the eye, subtracted in f64 before narrowing to f32.
+    origin: Vec3,
+}
+
+/// Renders a frame on the current rayon pool: transform, cull, clip, set up, bin, then per tile
+/// resolve visibility and shade each visible pixel once with the surface's exact frame.
+pub fn render(prepared: &PreparedScene, target: &RenderTarget) -> (Framebuffer, FrameStats) {
+    let RenderTarget { camera, viewport } = *target;
+    let scene = &prepared.scene;
+    let objects: Vec<FrameObject> = prepared
+        .objects
+        .iter()
+        .map(|o| FrameObject {
+            prepared: o,
+            origin: (o.surface.origin() - camera.eye).as_vec3(),
+        })
+        .collect();
+    let view_projection = camera.view_projection(viewport.aspect());
+    let triangles: Vec<ScreenTriangle> = objects
+        .iter()
+        .enumerate()
+        .flat_map(|(index, object)| {
+            object_triangles(object, index as u32, camera, view_projection, viewport)
+        })
+        .collect();
+    let bins = TileBins::new(viewport, &triangles);
+    let lights = FrameLights::new(scene.ambient, &scene.lights, camera.eye);
+    let mut framebuffer = Framebuffer::new(viewport.width, viewport.height, scene.background);
+    let strip = (TILE_SIZE * viewport.width) as usize;
+    let fragments: usize = framebuffer
+        .color
+        .par_chunks_mut(strip)
+        .zip(framebuffer.depth.par_chunks_mut(strip))
+        .enumerate()
+        .map(|(ty, (color, depth))| {
+            let mut tile = TileBuffers::default();
+            let mut shaded = 0;
+            for tx in 0..bins.tiles_x {
+                let rect = TileBins::tile_rect(viewport, tx, ty as u32);
+                let bin = &bins.bins[(ty as u32 * bins.tiles_x + tx) as usize];
+                tile.resolve_visibility(&triangles, bin, &rect);
+                let out = StripOutput {
+                    color,
+                    depth,
+                    width: viewport.width,
+                    first_row: rect.y0,
+                };
+                shaded += tile.shade(&triangles, &objects, &lights, &rect, out);
+            }
+            shaded
+        })
+        .sum();
+    let stats = FrameStats {
+        triangles: prepared.triangle_count(),
+        rasterized_triangles: triangles.len(),
+        fragments,
+    };
+    (framebuffer, stats)
+}
+
+/// Transforms one object's vertices and turns its triangles into screen triangles (in parallel,
+/// order preserved).
+fn object_triangles(
+    object: &FrameObject,
+    index: u32,
+    camera: &Camera,
+    view_projection: Mat4,
+    viewport: Viewport,
+) -> Vec<ScreenTriangle> {
+    let mesh = &object.prepared.mesh;
+    let clip_positions: Vec<Vec4> = mesh
+        .positions
+        .par_iter()
+        .map(|&p| view_projection * (object.origin + p).extend(1.0))
+        .collect();
+    let cull_back_faces = object.prepared.surface.encloses(camera.eye) == Some(true);
+    let guard = viewport.guard_band();
+    mesh.indices
+        .par_iter()
+        .flat_map_iter(|tri| {
+            let corners = tri.map(|i| mesh.positions[i as usize]);
+            let facing_away = (corners[1] - corners[0])
+                .cross(corners[2] - corners[0])
+                .dot(object.origin + corners[0])
+                >= 0.0;
+            let vertices = tri.map(|i| ClipVertex {
+                position: clip_positions[i as usize],
+                uv: mesh.uvs[i as usize],
+            });
+            let polygon = if cull_back_faces && facing_away {
+                None
+            } else {
+                clip_triangle(vertices, guard)
+            };
+            polygon.into_iter().flat_map(move |polygon| {
+                let v = polygon.vertices;
+                (1..polygon.len - 1).filter_map(move |k| {
+                    ScreenTriangle::new([v[0], v[k], v[k + 1]], viewport, index)
+                })
+            })
+        })
+        .collect()
+}
+
+const NO_TRIANGLE: u32 = u32::MAX;
+const TILE_PIXELS: usize = (TILE_SIZE * TILE_SIZE) as usize;
+
+/// A tile's visibility: the nearest triangle per pixel, by interpolated 1/w (greater is nearer,
+/// and f32 keeps its precision best near 0, i.e. far away: the "reversed-z" trick).
+struct TileBuffers {
+    inv_w: Vec<f32>,
+    triangle: Vec<u32>,
+}
+
+impl Default for TileBuffers {
+    fn default() -> Self {
+        TileBuffers {
+            inv_w: vec![0.0; TILE_PIXELS],
+            triangle: vec![NO_TRIANGLE; TILE_PIXELS],
+        }
+    }
+}
+
+/// The rows of the framebuffer one tile row writes to.
+struct StripOutput<'a> {
+    color: &'a mut [Vec3],
+    depth: &'a mut [f32],
+    width: u32,
+    first_row: u32,
+}
+
+impl TileBuffers {
+    fn resolve_visibility(&mut self, triangles: &[ScreenTriangle], bin: &[u32], rect: &PixelRect) {
+        self.inv_w.fill(0.0);
+        self.triangle.fill(NO_TRIANGLE);
+        for &index in bin {
+            let t = &triangles[index as usize];
+            let (inv_w, triangle) = (&mut self.inv_w, &mut self.triangle);
+            scan_triangle(t, rect, |x, y| {
+                let depth = t.inv_w.at(pixel_offset(t, x, y));
+                let slot = ((y - rect.y0) * TILE_SIZE + (x - rect.x0)) as usize;
+                // Strictly nearer wins, so the first of two equal depths stays: deterministic.
+                if depth > inv_w[slot] {
+                    inv_w[slot] = depth;
+                    triangle[slot] = index;
+                }
+            });
+        }
+    }
+
+    fn shade(
+        &self,
+        triangles: &[ScreenTriangle],
+        objects: &[FrameObject],
+        lights: &FrameLights,
+        rect: &PixelRect,
+        out: StripOutput,
+    ) -> usize {
+        let mut shaded = 0;
+        for y in rect.y0..=rect.y1 {
+            for x in rect.x0..=rect.x1 {
+                let slot = ((y - rect.y0) * TILE_SIZE + (x - rect.x0)) as usize;
+                let index = self.triangle[slot];
+                if index == NO_TRIANGLE {
+                    continue;
+                }
+                let t = &triangles[index as usize];
+                let offset = pixel_offset(t, x, y);
+                let w = 1.0 / t.inv_w.at(offset);
+                let uv = Vec2::new(t.u_over_w.at(offset), t.v_over_w.at(offset)) * w;
+                let object = &objects[t.object as usize];
+                let frame = object.prepared.surface.frame(uv.x, uv.y);
+                let p = object.origin + frame.p;
+                let pixel = ((y - out.first_row) * out.width + x) as usize;
+                out.color[pixel] = blinn_phong(lights, &object.prepared.material, p, frame.n);
+                out.depth[pixel] = w;
+                shaded += 1;
+            }
+        }
+        shaded
+    }
+}
+
+/// The pixel centre relative to the triangle's attribute origin.
+#[inline]
+fn pixel_offset(t: &ScreenTriangle, x: u32, y: u32) -> Vec2 {
+    Vec2::new(x as f32 + 0.5, y as f32 + 0.5) - t.origin
+}

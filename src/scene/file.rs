@@ -1,0 +1,404 @@
+//! The scene file: TOML, every field checked as it is read so that a bad value is reported at its
+//! own line and column. Built-in presets are written in the same types, so any preset can be
+//! printed as a file and edited.
+
+use super::{Light, Material, Object, Scene};
+use crate::Error;
+use crate::raster::Camera;
+use crate::surface::{AxisBasis, Cone, Paraboloid, Plane, Sphere, Surface, Triangle, Wave};
+use glam::{DVec3, Vec2, Vec3};
+use serde::{Deserialize, Serialize};
+use std::path::Path;
+
+/// Scene files past this size are refused before parsing.
+pub const MAX_SCENE_FILE_BYTES: u64 = 1 << 20;
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, rename_all = "kebab-case")]
+pub struct SceneFile {
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub name: Option<String>,
+    pub camera: CameraFile,
+    #[serde(default = "black")]
+    pub background: Rgb,
+    #[serde(default = "dim")]
+    pub ambient: Rgb,
+    #[serde(default, rename = "light")]
+    pub lights: Vec<LightFile>,
+    #[serde(rename = "object")]
+    pub objects: Vec<ObjectFile>,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, rename_all = "kebab-case")]
+pub struct CameraFile {
+    pub eye: Point,
+    pub target: Point,
+    #[serde(default = "up")]
+    pub up: Direction,
+    /// Vertical field of view in degrees.
+    #[serde(default = "default_fov")]
+    pub fov: FieldOfView,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub near: Option<Positive>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub far: Option<Positive>,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(tag = "type", deny_unknown_fields, rename_all = "kebab-case")]
+pub enum LightFile {
+    Point {
+        position: Point,
+        #[serde(default = "white")]
+        color: Rgb,
+    },
+    Directional {
+        /// From the surface towards the light.
+        towards: Direction,
+        #[serde(default = "white")]
+        color: Rgb,
+    },
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, rename_all = "kebab-case")]
+pub struct ObjectFile {
+    pub surface: SurfaceFile,
+    #[serde(default)]
+    pub material: MaterialFile,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(tag = "type", deny_unknown_fields, rename_all = "kebab-case")]
+pub enum SurfaceFile {
+    Plane {
+        origin: Point,
+        normal: Direction,
+        #[serde(rename = "u-axis")]
+        u_axis: Direction,
+        size: [Positive; 2],
+    },
+    Sphere {
+        center: Point,
+        radius: Positive,
+    },
+    Paraboloid {
+        apex: Point,
+        #[serde(default = "up")]
+        axis: Direction,
+        curvature: Positive,
+        radius: Positive,
+    },
+    Cone {
+        apex: Point,
+        /// From the apex towards the base.
+        #[serde(default = "down")]
+        axis: Direction,
+        #[serde(rename = "half-angle")]
+        half_angle: HalfAngle,
+        height: Positive,
+    },
+    Wave {
+        origin: Point,
+        size: [Positive; 2],
+        amplitude: Finite,
+        wavelength: Positive,
+    },
+    Triangle {
+        a: Point,
+        b: Point,
+        c: Point,
+    },
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, rename_all = "kebab-case")]
+pub struct MaterialFile {
+    #[serde(default = "grey")]
+    pub color: Rgb,
+    #[serde(default = "default_specular")]
+    pub specular: NonNegative,
+    #[serde(default = "default_shininess")]
+    pub shininess: Positive,
+}
+
+impl Default for MaterialFile {
+    fn default() -> Self {
+        MaterialFile {
+            color: grey(),
+            specular: default_specular(),
+            shininess: default_shininess(),
+        }
+    }
+}
+
+/// Defines a value type that is checked as it is read: serde reports a refused value at its own
+/// line and column with the "expected …" text given here.
+macro_rules! checked {
+    ($(#[$doc:meta])* $name:ident($inner:ty) from $raw:literal $raw_ty:ty, $expected:literal,
+     check |$v:ident| $check:expr, make $make:expr, back |$b:ident| $back:expr) => {
+        $(#[$doc])*
+        #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+        #[serde(try_from = $raw, into = $raw)]
+        pub struct $name(pub $inner);
+
+        impl TryFrom<$raw_ty> for $name {
+            type Error = String;
+            fn try_from($v: $raw_ty) -> Result<Self, String> {
+                if $check {
+                    Ok($name($make))
+                } else {
+                    Err(format!(concat!("expected ", $expected, ", found {:?}"), $v))
+                }
+            }
+        }
+
+        impl From<$name> for $raw_ty {
+            fn from($b: $name) -> $raw_ty {
+                $back
+            }
+        }
+    };
+}
+
+/// Coordinates past this are refused: beyond it even f64 positions lose sub-unit precision.
+const MAX_COORDINATE: f64 = 1e12;
+
+checked!(Finite(f32) from "f64" f64, "a finite number",
+    check |v| v.is_finite() && v.abs() < 1e30, make v as f32, back |x| x.0 as f64);
+checked!(Positive(f32) from "f64" f64, "a positive number",
+    check |v| v.is_finite() && v < 1e30 && (v as f32) > 0.0, make v as f32, back |x| x.0 as f64);
+checked!(NonNegative(f32) from "f64" f64, "a number ≥ 0",
+    check |v| (0.0..1e30).contains(&v), make v as f32, back |x| x.0 as f64);
+checked!(
+    /// Degrees, strictly between 0 and 180.
+    FieldOfView(f32) from "f64" f64, "an angle in degrees between 0 and 180",
+    check |v| v > 0.0 && v < 180.0, make v as f32, back |x| x.0 as f64);
+checked!(
+    /// Degrees, strictly between 0 and 90.
+    HalfAngle(f32) from "f64" f64, "an angle in degrees between 0 and 90",
+    check |v| v > 0.0 && v < 90.0, make v as f32, back |x| x.0 as f64);
+checked!(Point(DVec3) from "[f64; 3]" [f64; 3], "a point: three finite numbers",
+    check |v| v.iter().all(|c| c.abs() < MAX_COORDINATE), make DVec3::from_array(v), back |x| x.0.to_array());
+checked!(Direction(Vec3) from "[f64; 3]" [f64; 3], "a direction: three finite numbers, not all zero",
+    check |v| v.iter().all(|c| c.abs() < 1e30) && v.iter().any(|&c| c as f32 != 0.0),
+    make DVec3::from_array(v).as_vec3(), back |x| x.0.as_dvec3().to_array());
+checked!(Rgb(Vec3) from "[f64; 3]" [f64; 3], "a linear RGB colour: three numbers ≥ 0",
+    check |v| v.iter().all(|&c| (0.0..1e30).contains(&c)),
+    make DVec3::from_array(v).as_vec3(), back |x| x.0.as_dvec3().to_array());
+
+fn black() -> Rgb {
+    Rgb(Vec3::ZERO)
+}
+fn dim() -> Rgb {
+    Rgb(Vec3::splat(0.08))
+}
+fn white() -> Rgb {
+    Rgb(Vec3::ONE)
+}
+fn grey() -> Rgb {
+    Rgb(Vec3::splat(0.6))
+}
+fn up() -> Direction {
+    Direction(Vec3::Y)
+}
+fn down() -> Direction {
+    Direction(-Vec3::Y)
+}
+fn default_fov() -> FieldOfView {
+    FieldOfView(40.0)
+}
+fn default_specular() -> NonNegative {
+    NonNegative(0.3)
+}
+fn default_shininess() -> Positive {
+    Positive(40.0)
+}
+
+/// Parses and checks scene text; `origin` names the file in messages.
+pub fn parse_scene(text: &str, origin: &str) -> Result<Scene, Error> {
+    let file: SceneFile = toml::from_str(text).map_err(|e| {
+        let offset = e.span().map_or(0, |s| s.start);
+        Error::Diagnostic(crate::diagnostic::render(origin, text, offset, e.message()))
+    })?;
+    let fallback_name = Path::new(origin)
+        .file_stem()
+        .map_or("scene".into(), |s| s.to_string_lossy());
+    file.to_scene(&fallback_name).map_err(|message| {
+        Error::Diagnostic(format!(
+            "{}: error: {message}",
+            crate::diagnostic::sanitize(origin)
+        ))
+    })
+}
+
+/// Reads a scene file, refusing files past `MAX_SCENE_FILE_BYTES` before reading them.
+pub fn load_scene_file(path: &Path) -> Result<Scene, Error> {
+    let text = crate::read_text_limited(path, MAX_SCENE_FILE_BYTES)?;
+    parse_scene(&text, &path.display().to_string())
+}
+
+impl SceneFile {
+    pub fn to_toml(&self) -> String {
+        toml::to_string(self).expect("scene files hold only TOML-representable values")
+    }
+
+    /// The checked scene, or a message naming the object that cannot be built.
+    pub fn to_scene(&self, fallback_name: &str) -> Result<Scene, String> {
+        let objects = self
+            .objects
+            .iter()
+            .enumerate()
+            .map(|(i, o)| {
+                o.to_object()
+                    .map_err(|e| format!("object {} ({}): {e}", i + 1, o.surface.kind()))
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        if objects.is_empty() {
+            return Err("a scene needs at least one [[object]]".into());
+        }
+        Ok(Scene {
+            name: self
+                .name
+                .clone()
+                .unwrap_or_else(|| fallback_name.to_string()),
+            camera: self.camera.to_camera()?,
+            background: self.background.0,
+            ambient: self.ambient.0,
+            lights: self.lights.iter().map(LightFile::to_light).collect(),
+            objects,
+        })
+    }
+}
+
+impl CameraFile {
+    fn to_camera(&self) -> Result<Camera, String> {
+        let distance = (self.target.0 - self.eye.0).length() as f32;
+        if distance <= 0.0 {
+            return Err("the camera's eye and target are the same point".into());
+        }
+        let near = self.near.map_or(distance * 1e-3, |n| n.0);
+        let far = self.far.map_or(distance * 1e6, |f| f.0);
+        if near >= far {
+            return Err(format!(
+                "the camera's near ({near}) must be less than its far ({far})"
+            ));
+        }
+        Ok(Camera {
+            eye: self.eye.0,
+            target: self.target.0,
+            up: self.up.0,
+            vfov_degrees: self.fov.0,
+            near,
+            far,
+        })
+    }
+}
+
+impl LightFile {
+    fn to_light(&self) -> Light {
+        match *self {
+            LightFile::Point { position, color } => Light::Point {
+                position: position.0,
+                color: color.0,
+            },
+            LightFile::Directional { towards, color } => Light::Directional {
+                towards: towards.0,
+                color: color.0,
+            },
+        }
+    }
+}
+
+impl ObjectFile {
+    fn to_object(&self) -> Result<Object, String> {
+        Ok(Object {
+            surface: self.surface.to_surface()?,
+            material: Material {
+                color: self.material.color.0,
+                specular: self.material.specular.0,
+                shininess: self.material.shininess.0,
+            },
+        })
+    }
+}
+
+impl SurfaceFile {
+    pub fn kind(&self) -> &'static str {
+        match self {
+            SurfaceFile::Plane { .. } => "plane",
+            SurfaceFile::Sphere { .. } => "sphere",
+            SurfaceFile::Paraboloid { .. } => "paraboloid",
+            SurfaceFile::Cone { .. } => "cone",
+            SurfaceFile::Wave { .. } => "wave",
+            SurfaceFile::Triangle { .. } => "triangle",
+        }
+    }
+
+    fn to_surface(&self) -> Result<Surface, String> {
+        Ok(match *self {
+            SurfaceFile::Plane {
+                origin,
+                normal,
+                u_axis,
+                size,
+            } => {
+                if normal.0.normalize().cross(u_axis.0.normalize()).length() < 1e-6 {
+                    return Err("u-axis must not be parallel to the normal".into());
+                }
+                Surface::Plane(Plane::new(
+                    origin.0,
+                    normal.0,
+                    u_axis.0,
+                    Vec2::new(size[0].0, size[1].0),
+                ))
+            }
+            SurfaceFile::Sphere { center, radius } => Surface::Sphere(Sphere {
+                center: center.0,
+                radius: radius.0,
+            }),
+            SurfaceFile::Paraboloid {
+                apex,
+                axis,
+                curvature,
+                radius,
+            } => Surface::Paraboloid(Paraboloid {
+                apex: apex.0,
+                basis: AxisBasis::from_axis(axis.0),
+                curvature: curvature.0,
+                radius: radius.0,
+            }),
+            SurfaceFile::Cone {
+                apex,
+                axis,
+                half_angle,
+                height,
+            } => Surface::Cone(Cone {
+                apex: apex.0,
+                basis: AxisBasis::from_axis(axis.0),
+                half_angle: half_angle.0.to_radians(),
+                height: height.0,
+            }),
+            SurfaceFile::Wave {
+                origin,
+                size,
+                amplitude,
+                wavelength,
+            } => Surface::Wave(Wave {
+                origin: origin.0,
+                size: Vec2::new(size[0].0, size[1].0),
+                amplitude: amplitude.0,
+                wavelength: wavelength.0,
+            }),
+            SurfaceFile::Triangle { a, b, c } => {
+                let area2 = (b.0 - a.0).cross(c.0 - a.0).length();
+                let scale = (b.0 - a.0).length().max((c.0 - a.0).length());
+                if area2.is_nan() || area2 <= 1e-9 * scale * scale {
+                    return Err("the corners a, b and c are collinear".into());
+                }
+                Surface::Triangle(Triangle::new(a.0, b.0, c.0))
+            }
+        })
+    }
+}

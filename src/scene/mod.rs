@@ -1,0 +1,58 @@
+//! What is drawn: surfaces with materials, lights and a camera, from a TOML file or a preset.
+
+mod file;
+mod presets;
+
+pub use file::{SceneFile, load_scene_file, parse_scene};
+pub use presets::{PRESET_NAMES, preset};
+
+use crate::raster::Camera;
+use crate::surface::Surface;
+use glam::{DVec3, Vec3};
+
+/// A scene ready to render. Colours are linear RGB.
+#[derive(Clone, Debug)]
+pub struct Scene {
+    pub name: String,
+    pub camera: Camera,
+    pub background: Vec3,
+    pub ambient: Vec3,
+    pub lights: Vec<Light>,
+    pub objects: Vec<Object>,
+}
+
+#[derive(Clone, Debug)]
+pub struct Object {
+    pub surface: Surface,
+    pub material: Material,
+}
+
+/// Blinn-Phong material: diffuse colour (linear RGB), white specular weight and exponent.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Material {
+    pub color: Vec3,
+    pub specular: f32,
+    pub shininess: f32,
+}
+
+/// Lights have no distance fall-off, like the seed's ray tracer.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Light {
+    Point { position: DVec3, color: Vec3 },
+    Directional { towards: Vec3, color: Vec3 },
+}
+
+/// A scene named on the command line: a built-in name, or a path to a scene file.
+pub fn resolve(name_or_path: &str) -> Result<Scene, crate::Error> {
+    if let Some(scene) = preset(name_or_path) {
+        return Ok(scene);
+    }
+    let path = std::path::Path::new(name_or_path);
+    if path.exists() || name_or_path.ends_with(".toml") {
+        return load_scene_file(path);
+    }
+    Err(crate::Error::UnknownScene {
+        name: name_or_path.to_string(),
+        suggestion: presets::closest_name(name_or_path),
+    })
+}

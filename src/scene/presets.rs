@@ -1,0 +1,427 @@
+//! The built-in scenes: one per figure of the seed lecture, named as in DESIGN.md.
+//! Geometry uses the seed's units: a 400-wide plane, a "big sphere" of radius 280.
+
+use super::Scene;
+use super::file::*;
+use glam::{DVec3, Vec3};
+
+/// Every built-in scene name, in the lecture's order.
+pub const PRESET_NAMES: &[&str] = &[
+    "plane-spheres",
+    "plane-horizontal-wave",
+    "plane-vertical-wave",
+    "plane-ripple",
+    "plane-ripples",
+    "plane-mesh",
+    "plane-waffle",
+    "plane-dimples",
+    "plane-squares",
+    "plane-dots-and-dimples",
+    "sphere-on-plane-spheres",
+    "sphere-on-plane-horizontal-wave",
+    "sphere-on-plane-vertical-wave",
+    "sphere-on-plane-ripple",
+    "sphere-on-plane-ripples",
+    "sphere-on-plane-mesh",
+    "sphere-on-plane-waffle",
+    "sphere-on-plane-dimples",
+    "sphere-on-plane-squares",
+    "wave-spheres",
+    "parabola-spheres",
+    "parabola-dimples",
+    "parabola-squares",
+    "big-sphere-dimples",
+    "big-sphere-squares",
+    "big-sphere-vertical-wave",
+    "big-sphere-mesh",
+    "cone-vertical-wave",
+    "cone-dimples",
+    "cone-ripple",
+    "cone-ripples",
+    "plane-image-bump",
+    "sphere-image-bump",
+    "plane-stripes",
+    "plane-checks",
+    "plane-stripes-and-checks",
+    "planes-stripes-checks-image",
+    "image-scroll",
+    "two-planes-textured",
+    "image-to-triangle",
+    "textured-sphere",
+    "textured-spheres",
+];
+
+/// The built-in scene of that name, as a scene file (so it can be printed and edited).
+pub fn preset_file(name: &str) -> Option<SceneFile> {
+    if !PRESET_NAMES.contains(&name) {
+        return None;
+    }
+    let mut file = if name.starts_with("sphere-on-plane-") {
+        sphere_on_plane()
+    } else if name.starts_with("wave-") {
+        wave()
+    } else if name.starts_with("parabola-") {
+        parabola()
+    } else if name.starts_with("big-sphere-") {
+        big_sphere()
+    } else if name.starts_with("cone-") {
+        cone()
+    } else if name == "sphere-image-bump" || name == "textured-sphere" {
+        single_sphere()
+    } else if name == "textured-spheres" {
+        spheres_on_floor()
+    } else if name == "planes-stripes-checks-image" {
+        room_corner()
+    } else if name == "two-planes-textured" {
+        two_planes()
+    } else if name == "image-to-triangle" {
+        triangle()
+    } else if matches!(
+        name,
+        "plane-stripes" | "plane-checks" | "plane-stripes-and-checks"
+    ) {
+        floor_plane()
+    } else {
+        facing_plane()
+    };
+    file.name = Some(name.to_string());
+    Some(file)
+}
+
+/// The built-in scene of that name, ready to render.
+pub fn preset(name: &str) -> Option<Scene> {
+    let file = preset_file(name)?;
+    Some(file.to_scene(name).expect("built-in scenes are valid"))
+}
+
+/// The preset name nearest to a mistyped one, if any is close.
+pub fn closest_name(name: &str) -> Option<String> {
+    PRESET_NAMES
+        .iter()
+        .map(|candidate| (edit_distance(name, candidate), candidate))
+        .filter(|&(d, candidate)| d <= 3.max(candidate.len() / 4))
+        .min()
+        .map(|(_, c)| c.to_string())
+}
+
+fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut diagonal = row[0];
+        row[0] = i + 1;
+        for (j, &cb) in b.iter().enumerate() {
+            let next = (diagonal + usize::from(ca != cb))
+                .min(row[j] + 1)
+                .min(row[j + 1] + 1);
+            diagonal = row[j + 1];
+            row[j + 1] = next;
+        }
+    }
+    row[b.len()]
+}
+
+fn point(x: f64, y: f64, z: f64) -> Point {
+    Point(DVec3::new(x, y, z))
+}
+
+fn direction(x: f32, y: f32, z: f32) -> Direction {
+    Direction(Vec3::new(x, y, z))
+}
+
+fn material(r: f32, g: f32, b: f32) -> MaterialFile {
+    MaterialFile {
+        color: Rgb(Vec3::new(r, g, b)),
+        ..MaterialFile::default()
+    }
+}
+
+fn camera(eye: Point, target: Point, fov: f32) -> CameraFile {
+    CameraFile {
+        eye,
+        target,
+        up: direction(0.0, 1.0, 0.0),
+        fov: FieldOfView(fov),
+        near: None,
+        far: None,
+    }
+}
+
+fn key_light(x: f64, y: f64, z: f64) -> LightFile {
+    LightFile::Point {
+        position: point(x, y, z),
+        color: Rgb(Vec3::splat(0.9)),
+    }
+}
+
+fn scene(camera: CameraFile, lights: Vec<LightFile>, objects: Vec<ObjectFile>) -> SceneFile {
+    SceneFile {
+        name: None,
+        camera,
+        background: Rgb(Vec3::splat(0.02)),
+        ambient: Rgb(Vec3::splat(0.08)),
+        lights,
+        objects,
+    }
+}
+
+fn object(surface: SurfaceFile, material: MaterialFile) -> ObjectFile {
+    ObjectFile { surface, material }
+}
+
+/// An axis-aligned rectangle: `normal` and `u_axis` are world axes.
+fn rectangle(
+    origin: Point,
+    normal: Direction,
+    u_axis: Direction,
+    width: f32,
+    height: f32,
+) -> SurfaceFile {
+    SurfaceFile::Plane {
+        origin,
+        normal,
+        u_axis,
+        size: [Positive(width), Positive(height)],
+    }
+}
+
+fn sphere(x: f64, y: f64, z: f64, radius: f32) -> SurfaceFile {
+    SurfaceFile::Sphere {
+        center: point(x, y, z),
+        radius: Positive(radius),
+    }
+}
+
+/// The ground y = 0, `half` units each way from the origin; v runs towards −z.
+fn ground(half: f32) -> SurfaceFile {
+    let h = half as f64;
+    rectangle(
+        point(-h, 0.0, h),
+        direction(0.0, 1.0, 0.0),
+        direction(1.0, 0.0, 0.0),
+        2.0 * half,
+        2.0 * half,
+    )
+}
+
+/// The seed's 400×400 plane facing the viewer: u = h, v = 400 − row, as in `x = h − 200`.
+fn facing_plane() -> SceneFile {
+    scene(
+        camera(point(0.0, 0.0, 780.0), point(0.0, 0.0, 0.0), 30.0),
+        vec![key_light(-350.0, 350.0, 500.0)],
+        vec![object(
+            rectangle(
+                point(-200.0, -200.0, 0.0),
+                direction(0.0, 0.0, 1.0),
+                direction(1.0, 0.0, 0.0),
+                400.0,
+                400.0,
+            ),
+            material(0.72, 0.72, 0.78),
+        )],
+    )
+}
+
+fn sphere_on_plane() -> SceneFile {
+    scene(
+        camera(point(0.0, 260.0, 620.0), point(0.0, 70.0, 0.0), 40.0),
+        vec![key_light(-400.0, 600.0, 500.0)],
+        vec![
+            object(ground(600.0), material(0.55, 0.6, 0.7)),
+            object(sphere(0.0, 100.0, 0.0, 100.0), material(0.8, 0.45, 0.3)),
+        ],
+    )
+}
+
+fn wave() -> SceneFile {
+    scene(
+        camera(point(0.0, 330.0, 520.0), point(0.0, 0.0, -30.0), 40.0),
+        vec![key_light(-300.0, 500.0, 300.0)],
+        vec![object(
+            SurfaceFile::Wave {
+                origin: point(-200.0, 0.0, 200.0),
+                size: [Positive(400.0), Positive(400.0)],
+                amplitude: Finite(20.0),
+                wavelength: Positive(100.0),
+            },
+            material(0.5, 0.7, 0.6),
+        )],
+    )
+}
+
+fn parabola() -> SceneFile {
+    scene(
+        camera(point(0.0, 330.0, 560.0), point(0.0, 20.0, 0.0), 40.0),
+        vec![key_light(-300.0, 600.0, 400.0)],
+        vec![object(
+            SurfaceFile::Paraboloid {
+                apex: point(0.0, -120.0, 0.0),
+                axis: direction(0.0, 1.0, 0.0),
+                curvature: Positive(0.012),
+                radius: Positive(150.0),
+            },
+            material(0.75, 0.65, 0.4),
+        )],
+    )
+}
+
+fn big_sphere() -> SceneFile {
+    scene(
+        camera(point(0.0, 0.0, 1100.0), point(0.0, 0.0, 0.0), 32.0),
+        vec![key_light(-500.0, 500.0, 800.0)],
+        vec![object(
+            sphere(0.0, 0.0, 0.0, 280.0),
+            material(0.7, 0.55, 0.75),
+        )],
+    )
+}
+
+fn cone() -> SceneFile {
+    scene(
+        camera(point(0.0, 120.0, 900.0), point(0.0, 0.0, 0.0), 35.0),
+        vec![key_light(-400.0, 400.0, 600.0)],
+        vec![object(
+            SurfaceFile::Cone {
+                apex: point(0.0, 160.0, 0.0),
+                axis: direction(0.0, -1.0, 0.0),
+                half_angle: HalfAngle(30.0),
+                height: Positive(320.0),
+            },
+            material(0.6, 0.7, 0.85),
+        )],
+    )
+}
+
+fn single_sphere() -> SceneFile {
+    scene(
+        camera(point(0.0, 0.0, 620.0), point(0.0, 0.0, 0.0), 32.0),
+        vec![key_light(-400.0, 400.0, 600.0)],
+        vec![object(
+            sphere(0.0, 0.0, 0.0, 150.0),
+            material(0.8, 0.8, 0.8),
+        )],
+    )
+}
+
+fn spheres_on_floor() -> SceneFile {
+    scene(
+        camera(point(0.0, 220.0, 700.0), point(0.0, 60.0, 0.0), 40.0),
+        vec![key_light(-400.0, 600.0, 500.0)],
+        vec![
+            object(ground(700.0), material(0.5, 0.5, 0.55)),
+            object(sphere(-180.0, 80.0, 0.0, 80.0), material(0.8, 0.8, 0.8)),
+            object(sphere(30.0, 110.0, -60.0, 110.0), material(0.8, 0.8, 0.8)),
+            object(sphere(220.0, 60.0, 60.0, 60.0), material(0.8, 0.8, 0.8)),
+        ],
+    )
+}
+
+/// Three planes parallel to the coordinate planes, meeting at a corner.
+fn room_corner() -> SceneFile {
+    scene(
+        camera(point(380.0, 300.0, 520.0), point(0.0, 100.0, 0.0), 45.0),
+        vec![key_light(300.0, 500.0, 400.0)],
+        vec![
+            object(
+                rectangle(
+                    point(0.0, 0.0, 400.0),
+                    direction(0.0, 1.0, 0.0),
+                    direction(1.0, 0.0, 0.0),
+                    400.0,
+                    400.0,
+                ),
+                material(0.8, 0.3, 0.3),
+            ),
+            object(
+                rectangle(
+                    point(0.0, 0.0, 0.0),
+                    direction(0.0, 0.0, 1.0),
+                    direction(1.0, 0.0, 0.0),
+                    400.0,
+                    400.0,
+                ),
+                material(0.3, 0.8, 0.8),
+            ),
+            object(
+                rectangle(
+                    point(0.0, 0.0, 400.0),
+                    direction(1.0, 0.0, 0.0),
+                    direction(0.0, 0.0, -1.0),
+                    400.0,
+                    400.0,
+                ),
+                material(0.8, 0.8, 0.8),
+            ),
+        ],
+    )
+}
+
+fn two_planes() -> SceneFile {
+    scene(
+        camera(point(0.0, 250.0, 650.0), point(0.0, 100.0, 0.0), 45.0),
+        vec![key_light(-200.0, 500.0, 500.0)],
+        vec![
+            object(ground(300.0), material(0.8, 0.8, 0.8)),
+            object(
+                rectangle(
+                    point(-300.0, 0.0, -300.0),
+                    direction(0.0, 0.0, 1.0),
+                    direction(1.0, 0.0, 0.0),
+                    600.0,
+                    400.0,
+                ),
+                material(0.8, 0.8, 0.8),
+            ),
+        ],
+    )
+}
+
+fn triangle() -> SceneFile {
+    scene(
+        camera(point(0.0, 0.0, 700.0), point(0.0, 0.0, 0.0), 35.0),
+        vec![key_light(0.0, 200.0, 600.0)],
+        vec![object(
+            SurfaceFile::Triangle {
+                a: point(-180.0, -150.0, 0.0),
+                b: point(200.0, -120.0, -60.0),
+                c: point(-20.0, 190.0, 40.0),
+            },
+            material(0.85, 0.85, 0.85),
+        )],
+    )
+}
+
+/// A large floor seen at an angle, crossing x = 0 and z = 0 where the seed's `x % 50` breaks.
+fn floor_plane() -> SceneFile {
+    scene(
+        camera(point(0.0, 300.0, 600.0), point(0.0, 0.0, 0.0), 45.0),
+        vec![key_light(-200.0, 600.0, 400.0)],
+        vec![object(ground(1000.0), material(0.8, 0.8, 0.8))],
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_preset_builds_and_round_trips_through_toml() {
+        for name in PRESET_NAMES {
+            let file = preset_file(name).unwrap();
+            let text = file.to_toml();
+            let scene = super::super::parse_scene(&text, "preset.toml")
+                .unwrap_or_else(|e| panic!("{name}: {e}"));
+            assert_eq!(scene.name, *name);
+            assert_eq!(scene.objects.len(), file.objects.len());
+        }
+    }
+
+    #[test]
+    fn suggests_a_close_name() {
+        assert_eq!(
+            closest_name("plane-dimple").as_deref(),
+            Some("plane-dimples")
+        );
+        assert_eq!(closest_name("completely-different-thing"), None);
+    }
+}

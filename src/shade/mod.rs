@@ -1,0 +1,5 @@
+//! Per-fragment shading: the surface's exact frame at the fragment's (u,v), then lighting.
+
+mod lighting;
+
+pub use lighting::{FrameLights, blinn_phong};

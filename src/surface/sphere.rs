@@ -1,0 +1,93 @@
+use super::{Domain, Frame};
+use glam::{DVec3, Vec2, Vec3};
+use std::f32::consts::PI;
+
+/// Seed units per radian: the seed scales its sphere angles by 360/π, so a full turn of azimuth is
+/// 720 units and pole to pole is 360, which makes its dimple period of 30 look right.
+pub const SEED_UNITS_PER_RADIAN: f32 = 360.0 / PI;
+
+/// A sphere. Domain: u ∈ [0, 720) azimuth, v ∈ [0, 360] polar angle from the +Y pole, both in
+/// seed units. As in the seed, u = 180 faces +Z (the default camera), the front hemisphere is
+/// u ∈ [0, 360] and u grows towards +X;
+/// v grows downwards. Pu vanishes at the poles; the normal there is the pole's direction.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Sphere {
+    pub center: DVec3,
+    pub radius: f32,
+}
+
+impl Sphere {
+    pub const DOMAIN: Domain = Domain {
+        min: Vec2::ZERO,
+        max: Vec2::new(720.0, 360.0),
+    };
+
+    #[inline]
+    pub fn frame(&self, u: f32, v: f32) -> Frame {
+        let (sin_phi, cos_phi) = azimuth(u).sin_cos();
+        let (sin_theta, cos_theta) = (v / SEED_UNITS_PER_RADIAN).sin_cos();
+        let n = Vec3::new(sin_theta * sin_phi, cos_theta, sin_theta * cos_phi);
+        let k = self.radius / SEED_UNITS_PER_RADIAN;
+        Frame {
+            p: n * self.radius,
+            pu: Vec3::new(cos_phi, 0.0, -sin_phi) * (k * sin_theta),
+            pv: Vec3::new(cos_theta * sin_phi, -sin_theta, cos_theta * cos_phi) * k,
+            n,
+        }
+    }
+}
+
+/// The azimuth φ of the seed's `uu = (π/2 + atan(x/z))·360/π`, so that x = sin φ, z = cos φ.
+#[inline]
+pub(super) fn azimuth(u: f32) -> f32 {
+    u / SEED_UNITS_PER_RADIAN - PI / 2.0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::tests::assert_frame_matches_finite_differences;
+    use super::*;
+
+    #[test]
+    fn matches_the_seed_angles() {
+        let s = Sphere {
+            center: DVec3::ZERO,
+            radius: 280.0,
+        };
+        // Facing the camera (+Z) at the equator: the seed's uu = (π/2 + atan(0))·360/π = 180.
+        let f = s.frame(180.0, 180.0);
+        assert!(
+            (f.p - Vec3::new(0.0, 0.0, 280.0)).length() < 1e-3,
+            "{:?}",
+            f.p
+        );
+        // The +Y pole is v = 0 (seed: vv = acos(y/r)·360/π).
+        assert!((s.frame(123.0, 0.0).p - Vec3::new(0.0, 280.0, 0.0)).length() < 1e-3);
+        // u grows towards +X.
+        assert!(s.frame(200.0, 180.0).p.x > 0.0);
+    }
+
+    #[test]
+    fn frame_is_consistent() {
+        let s = Sphere {
+            center: DVec3::ZERO,
+            radius: 3.0,
+        };
+        assert_frame_matches_finite_differences(|u, v| s.frame(u, v), Sphere::DOMAIN, 0.05);
+    }
+
+    #[test]
+    fn poles_have_finite_unit_normals() {
+        let s = Sphere {
+            center: DVec3::ZERO,
+            radius: 1.0,
+        };
+        for u in [0.0, 100.0, 719.9] {
+            for v in [0.0, 360.0] {
+                let f = s.frame(u, v);
+                assert!((f.n.length() - 1.0).abs() < 1e-6);
+                assert!(f.n.y.abs() > 0.999);
+            }
+        }
+    }
+}

@@ -1,0 +1,80 @@
+use super::{Domain, Frame, Mesh, normalize_or};
+use glam::{DVec3, Vec2, Vec3};
+
+/// A triangle with the seed's plane parametrisation: U from corner a towards b, V = N × U, and
+/// P = a + u·U + v·V in world units. Domain: the triangle's own corners in (u,v), inside the
+/// rectangle `domain()` returns.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Triangle {
+    pub a: DVec3,
+    pub u_axis: Vec3,
+    pub v_axis: Vec3,
+    pub normal: Vec3,
+    /// (u,v) of the corners a, b, c.
+    pub corners_uv: [Vec2; 3],
+}
+
+impl Triangle {
+    pub fn new(a: DVec3, b: DVec3, c: DVec3) -> Triangle {
+        let ab = (b - a).as_vec3();
+        let ac = (c - a).as_vec3();
+        let normal = normalize_or(ab.cross(ac), Vec3::Z);
+        let u_axis = normalize_or(ab, normal.any_orthonormal_vector());
+        let v_axis = normal.cross(u_axis);
+        let uv = |p: Vec3| Vec2::new(p.dot(u_axis), p.dot(v_axis));
+        Triangle {
+            a,
+            u_axis,
+            v_axis,
+            normal,
+            corners_uv: [Vec2::ZERO, uv(ab), uv(ac)],
+        }
+    }
+
+    pub fn domain(&self) -> Domain {
+        let [a, b, c] = self.corners_uv;
+        Domain {
+            min: a.min(b).min(c),
+            max: a.max(b).max(c),
+        }
+    }
+
+    #[inline]
+    pub fn frame(&self, u: f32, v: f32) -> Frame {
+        Frame {
+            p: self.u_axis * u + self.v_axis * v,
+            pu: self.u_axis,
+            pv: self.v_axis,
+            n: self.normal,
+        }
+    }
+
+    /// A planar triangle needs no subdivision: perspective-correct interpolation is exact on it.
+    pub(super) fn mesh(&self) -> Mesh {
+        let positions = self.corners_uv.map(|uv| self.frame(uv.x, uv.y).p).to_vec();
+        Mesh {
+            positions,
+            uvs: self.corners_uv.to_vec(),
+            indices: vec![[0, 1, 2]],
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn corners_map_back_to_their_points() {
+        let (a, b, c) = (
+            DVec3::new(1.0, 2.0, 3.0),
+            DVec3::new(4.0, 2.0, 3.5),
+            DVec3::new(2.0, 5.0, 1.0),
+        );
+        let t = Triangle::new(a, b, c);
+        for (uv, corner) in t.corners_uv.iter().zip([a, b, c]) {
+            let p = a + t.frame(uv.x, uv.y).p.as_dvec3();
+            assert!((p - corner).length() < 1e-5, "{p:?} vs {corner:?}");
+        }
+    }
+}
