@@ -107,6 +107,7 @@ fn render_command(args: RenderArgs) -> Result<(), Error> {
         &RenderTarget {
             camera: &camera,
             viewport,
+            interpolation: Default::default(),
         },
     );
     bumpwork::export::write_png(&framebuffer, &output)

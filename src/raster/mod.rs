@@ -18,6 +18,9 @@ pub use bin::{TILE_SIZE, TileBins};
 pub use camera::Camera;
 pub use clip::{ClipVertex, clip_triangle};
 pub use framebuffer::{Framebuffer, linear_to_srgb8};
-pub use pipeline::{FrameStats, PreparedObject, PreparedScene, RenderTarget, render};
+pub use pipeline::{
+    Fragment, FragmentShader, FrameObject, FrameStats, Interpolation, LitShader, PreparedObject,
+    PreparedScene, RenderTarget, frame_objects, render, render_with, screen_triangles,
+};
 pub use scan::{PixelRect, scan_triangle};
 pub use setup::{SUBPIXEL_BITS, ScreenTriangle, Viewport};

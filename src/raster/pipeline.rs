@@ -56,39 +56,104 @@ pub struct FrameStats {
 pub struct RenderTarget<'a> {
     pub camera: &'a Camera,
     pub viewport: Viewport,
+    pub interpolation: Interpolation,
+}
+
+/// How (u,v) is interpolated across a triangle in screen space.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Interpolation {
+    /// Exact for the triangle's plane: u/w, v/w and 1/w are affine in screen space.
+    #[default]
+    PerspectiveCorrect,
+    /// Linear in screen space, as early hardware did: cheaper, wrong under perspective.
+    Affine,
 }
 
 /// Per-object state for one frame, in camera-relative space.
-struct FrameObject<'a> {
-    prepared: &'a PreparedObject,
+pub struct FrameObject<'a> {
+    pub prepared: &'a PreparedObject,
     /// The surface's anchor relative to the eye, subtracted in f64 before narrowing to f32.
-    origin: Vec3,
+    pub origin: Vec3,
 }
 
-/// Renders a frame on the current rayon pool: transform, cull, clip, set up, bin, then per tile
-/// resolve visibility and shade each visible pixel once with the surface's exact frame.
+/// What the shading stage knows about a visible pixel.
+pub struct Fragment<'a> {
+    pub object: &'a FrameObject<'a>,
+    pub object_index: u32,
+    pub uv: Vec2,
+    /// Distance along the view direction.
+    pub depth: f32,
+}
+
+/// The per-fragment program. Generic, so each shader's loop is compiled for it.
+pub trait FragmentShader: Sync {
+    fn shade(&self, fragment: &Fragment) -> Vec3;
+}
+
+/// The default program: the surface's exact frame at (u,v), lit by Blinn-Phong.
+pub struct LitShader {
+    pub lights: FrameLights,
+}
+
+impl FragmentShader for LitShader {
+    #[inline]
+    fn shade(&self, fragment: &Fragment) -> Vec3 {
+        let object = fragment.object;
+        let frame = object.prepared.surface.frame(fragment.uv.x, fragment.uv.y);
+        blinn_phong(
+            &self.lights,
+            &object.prepared.material,
+            object.origin + frame.p,
+            frame.n,
+        )
+    }
+}
+
+/// Renders a lit frame on the current rayon pool.
 pub fn render(prepared: &PreparedScene, target: &RenderTarget) -> (Framebuffer, FrameStats) {
-    let RenderTarget { camera, viewport } = *target;
     let scene = &prepared.scene;
-    let objects: Vec<FrameObject> = prepared
+    let shader = LitShader {
+        lights: FrameLights::new(scene.ambient, &scene.lights, target.camera.eye),
+    };
+    render_with(prepared, target, &shader)
+}
+
+/// The objects of a prepared scene placed relative to the camera for one frame.
+pub fn frame_objects<'a>(prepared: &'a PreparedScene, camera: &Camera) -> Vec<FrameObject<'a>> {
+    prepared
         .objects
         .iter()
         .map(|o| FrameObject {
             prepared: o,
             origin: (o.surface.origin() - camera.eye).as_vec3(),
         })
-        .collect();
-    let view_projection = camera.view_projection(viewport.aspect());
-    let triangles: Vec<ScreenTriangle> = objects
+        .collect()
+}
+
+/// Transforms, culls, clips and sets up every triangle of the scene, in submission order.
+pub fn screen_triangles(objects: &[FrameObject], target: &RenderTarget) -> Vec<ScreenTriangle> {
+    let view_projection = target.camera.view_projection(target.viewport.aspect());
+    objects
         .iter()
         .enumerate()
-        .flat_map(|(index, object)| {
-            object_triangles(object, index as u32, camera, view_projection, viewport)
-        })
-        .collect();
+        .flat_map(|(index, object)| object_triangles(object, index as u32, target, view_projection))
+        .collect()
+}
+
+/// Renders a frame with any fragment program: transform, cull, clip, set up, bin, then per tile
+/// resolve visibility and run the program once for each visible pixel.
+pub fn render_with(
+    prepared: &PreparedScene,
+    target: &RenderTarget,
+    shader: &impl FragmentShader,
+) -> (Framebuffer, FrameStats) {
+    let viewport = target.viewport;
+    let objects = frame_objects(prepared, target.camera);
+    let triangles = screen_triangles(&objects, target);
     let bins = TileBins::new(viewport, &triangles);
-    let lights = FrameLights::new(scene.ambient, &scene.lights, camera.eye);
-    let mut framebuffer = Framebuffer::new(viewport.width, viewport.height, scene.background);
+    let perspective = target.interpolation == Interpolation::PerspectiveCorrect;
+    let mut framebuffer =
+        Framebuffer::new(viewport.width, viewport.height, prepared.scene.background);
     let strip = (TILE_SIZE * viewport.width) as usize;
     let fragments: usize = framebuffer
         .color
@@ -108,7 +173,7 @@ pub fn render(prepared: &PreparedScene, target: &RenderTarget) -> (Framebuffer, 
                     width: viewport.width,
                     first_row: rect.y0,
                 };
-                shaded += tile.shade(&triangles, &objects, &lights, &rect, out);
+                shaded += tile.shade(&triangles, &objects, shader, perspective, &rect, out);
             }
             shaded
         })
@@ -126,10 +191,14 @@ pub fn render(prepared: &PreparedScene, target: &RenderTarget) -> (Framebuffer, 
 fn object_triangles(
     object: &FrameObject,
     index: u32,
-    camera: &Camera,
+    target: &RenderTarget,
     view_projection: Mat4,
-    viewport: Viewport,
 ) -> Vec<ScreenTriangle> {
+    let RenderTarget {
+        camera,
+        viewport,
+        interpolation,
+    } = *target;
     let mesh = &object.prepared.mesh;
     let clip_positions: Vec<Vec4> = mesh
         .positions
@@ -158,7 +227,7 @@ fn object_triangles(
             polygon.into_iter().flat_map(move |polygon| {
                 let v = polygon.vertices;
                 (1..polygon.len - 1).filter_map(move |k| {
-                    ScreenTriangle::new([v[0], v[k], v[k + 1]], viewport, index)
+                    ScreenTriangle::new([v[0], v[k], v[k + 1]], viewport, interpolation, index)
                 })
             })
         })
@@ -215,7 +284,8 @@ impl TileBuffers {
         &self,
         triangles: &[ScreenTriangle],
         objects: &[FrameObject],
-        lights: &FrameLights,
+        shader: &impl FragmentShader,
+        perspective: bool,
         rect: &PixelRect,
         out: StripOutput,
     ) -> usize {
@@ -230,12 +300,15 @@ impl TileBuffers {
                 let t = &triangles[index as usize];
                 let offset = pixel_offset(t, x, y);
                 let w = 1.0 / t.inv_w.at(offset);
-                let uv = Vec2::new(t.u_over_w.at(offset), t.v_over_w.at(offset)) * w;
-                let object = &objects[t.object as usize];
-                let frame = object.prepared.surface.frame(uv.x, uv.y);
-                let p = object.origin + frame.p;
+                let uv_plane = Vec2::new(t.u_over_w.at(offset), t.v_over_w.at(offset));
+                let fragment = Fragment {
+                    object: &objects[t.object as usize],
+                    object_index: t.object,
+                    uv: if perspective { uv_plane * w } else { uv_plane },
+                    depth: w,
+                };
                 let pixel = ((y - out.first_row) * out.width + x) as usize;
-                out.color[pixel] = blinn_phong(lights, &object.prepared.material, p, frame.n);
+                out.color[pixel] = shader.shade(&fragment);
                 out.depth[pixel] = w;
                 shaded += 1;
             }

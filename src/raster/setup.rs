@@ -1,4 +1,5 @@
 use super::clip::ClipVertex;
+use super::pipeline::Interpolation;
 use super::scan::PixelRect;
 use glam::Vec2;
 
@@ -71,9 +72,11 @@ pub struct ScreenTriangle {
 impl ScreenTriangle {
     /// Snaps a clipped triangle to fixed point and sets up its edge functions and attribute
     /// planes. `None` for triangles with zero snapped area or no pixel centre in the viewport.
+    /// With affine interpolation the (u,v) planes hold u and v themselves rather than u/w, v/w.
     pub fn new(
         vertices: [ClipVertex; 3],
         viewport: Viewport,
+        interpolation: Interpolation,
         object: u32,
     ) -> Option<ScreenTriangle> {
         let mut snapped = [(0i64, 0i64); 3];
@@ -87,7 +90,11 @@ impl ScreenTriangle {
             let sx = (v.position.x as f64 * inv_w * 0.5 + 0.5) * viewport.width as f64;
             let sy = (0.5 - v.position.y as f64 * inv_w * 0.5) * viewport.height as f64;
             snapped[i] = (snap(sx), snap(sy));
-            attributes[i] = [inv_w, v.uv.x as f64 * inv_w, v.uv.y as f64 * inv_w];
+            let uv_weight = match interpolation {
+                Interpolation::PerspectiveCorrect => inv_w,
+                Interpolation::Affine => 1.0,
+            };
+            attributes[i] = [inv_w, v.uv.x as f64 * uv_weight, v.uv.y as f64 * uv_weight];
         }
         let mut area = edge_value(snapped[1], snapped[2], snapped[0]);
         if area == 0 {

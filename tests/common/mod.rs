@@ -1,0 +1,90 @@
+//! Helpers shared by the integration tests.
+#![allow(dead_code)]
+
+use bumpwork::raster::{
+    Camera, ClipVertex, Fragment, FragmentShader, Framebuffer, Interpolation, PixelRect,
+    PreparedScene, RenderTarget, ScreenTriangle, Viewport, render_with, scan_triangle,
+};
+use bumpwork::scene::Scene;
+use bumpwork::surface::Tessellation;
+use glam::{Vec2, Vec3, Vec4};
+
+/// A vertex at pixel position (x, y) of the viewport, at w = 1.
+pub fn at_pixel(viewport: Viewport, x: f64, y: f64) -> ClipVertex {
+    let ndc_x = x / viewport.width as f64 * 2.0 - 1.0;
+    let ndc_y = 1.0 - y / viewport.height as f64 * 2.0;
+    ClipVertex {
+        position: Vec4::new(ndc_x as f32, ndc_y as f32, 0.5, 1.0),
+        uv: Vec2::ZERO,
+    }
+}
+
+pub fn screen_triangle(viewport: Viewport, corners: [(f64, f64); 3]) -> Option<ScreenTriangle> {
+    let vertices = corners.map(|(x, y)| at_pixel(viewport, x, y));
+    ScreenTriangle::new(vertices, viewport, Interpolation::PerspectiveCorrect, 0)
+}
+
+/// How many of the triangles cover each pixel centre, ignoring depth.
+pub fn coverage(viewport: Viewport, triangles: &[ScreenTriangle]) -> Vec<u32> {
+    let mut count = vec![0u32; (viewport.width * viewport.height) as usize];
+    let all = PixelRect {
+        x0: 0,
+        y0: 0,
+        x1: viewport.width - 1,
+        y1: viewport.height - 1,
+    };
+    for t in triangles {
+        scan_triangle(t, &all, |x, y| {
+            count[(y * viewport.width + x) as usize] += 1
+        });
+    }
+    count
+}
+
+/// Writes each fragment's (u, v, object) into the colour channels.
+pub struct UvShader;
+
+impl FragmentShader for UvShader {
+    fn shade(&self, fragment: &Fragment) -> Vec3 {
+        Vec3::new(fragment.uv.x, fragment.uv.y, fragment.object_index as f32)
+    }
+}
+
+pub fn render_uv(
+    scene: Scene,
+    viewport: Viewport,
+    interpolation: Interpolation,
+    density: u32,
+) -> Framebuffer {
+    let camera = scene.camera.clone();
+    let prepared = PreparedScene::new(scene, Tessellation { density });
+    let target = RenderTarget {
+        camera: &camera,
+        viewport,
+        interpolation,
+    };
+    render_with(&prepared, &target, &UvShader).0
+}
+
+/// A small deterministic generator, so failures reproduce.
+pub struct XorShift(pub u64);
+
+impl XorShift {
+    pub fn next_f64(&mut self) -> f64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        (self.0 >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+pub fn camera(eye: [f64; 3], target: [f64; 3], fov: f32) -> Camera {
+    Camera {
+        eye: eye.into(),
+        target: target.into(),
+        up: Vec3::Y,
+        vfov_degrees: fov,
+        near: 0.01,
+        far: 1e5,
+    }
+}
