@@ -23,4 +23,4 @@ pub use pipeline::{
     PreparedScene, RenderTarget, frame_objects, render, render_with, screen_triangles,
 };
 pub use scan::{PixelRect, scan_triangle};
-pub use setup::{SUBPIXEL_BITS, ScreenTriangle, Viewport};
+pub use setup::{SUBPIXEL_BITS, ScreenTriangle, TrianglePlanes, Viewport};

@@ -3,7 +3,7 @@ use super::camera::Camera;
 use super::clip::{ClipVertex, clip_triangle};
 use super::framebuffer::Framebuffer;
 use super::scan::{PixelRect, scan_triangle};
-use super::setup::{ScreenTriangle, Viewport};
+use super::setup::{ScreenTriangle, TrianglePlanes, Viewport};
 use crate::scene::{Material, Scene};
 use crate::shade::{FrameLights, blinn_phong};
 use crate::surface::{Mesh, Surface, Tessellation};
@@ -219,15 +219,15 @@ fn object_triangles(
                 position: clip_positions[i as usize],
                 uv: mesh.uvs[i as usize],
             });
-            let polygon = if cull_back_faces && facing_away {
-                None
-            } else {
-                clip_triangle(vertices, guard)
-            };
-            polygon.into_iter().flat_map(move |polygon| {
+            let visible = !(cull_back_faces && facing_away);
+            let planes = visible
+                .then(|| TrianglePlanes::new(&vertices, viewport, interpolation))
+                .flatten();
+            let clipped = planes.and_then(|planes| Some((planes, clip_triangle(vertices, guard)?)));
+            clipped.into_iter().flat_map(move |(planes, polygon)| {
                 let v = polygon.vertices;
                 (1..polygon.len - 1).filter_map(move |k| {
-                    ScreenTriangle::new([v[0], v[k], v[k + 1]], viewport, interpolation, index)
+                    ScreenTriangle::new([v[0], v[k], v[k + 1]], viewport, &planes, index)
                 })
             })
         })

@@ -1,7 +1,7 @@
 use super::clip::ClipVertex;
 use super::pipeline::Interpolation;
 use super::scan::PixelRect;
-use glam::Vec2;
+use glam::{DVec3, Vec2};
 
 /// Sub-pixel precision of snapped vertex positions: 1/256 of a pixel.
 pub const SUBPIXEL_BITS: u32 = 8;
@@ -61,7 +61,9 @@ pub struct ScreenTriangle {
     /// Pixels whose centres may be covered (inclusive ranges), already inside the viewport.
     pub bounds: PixelRect,
     pub edges: [Edge; 3],
-    /// Pixel position that attribute planes are relative to (the first snapped vertex).
+    /// Pixel position that attribute planes are relative to: the bounds' top-left corner, inside
+    /// the viewport, so per-pixel offsets stay small and exact in f32 even when the triangle's
+    /// vertices lie far out in the guard band.
     pub origin: Vec2,
     pub inv_w: AttributePlane,
     pub u_over_w: AttributePlane,
@@ -69,52 +71,107 @@ pub struct ScreenTriangle {
     pub object: u32,
 }
 
+/// The screen-space planes of 1/w and of the (u,v) attributes of one scene triangle, in f64
+/// over absolute pixel coordinates: value(x, y) = c[0]·x + c[1]·y + c[2].
+///
+/// They come from the original triangle's homogeneous coordinates (2D homogeneous
+/// interpolation), not from the clipped vertices: so every piece of a clipped triangle shares the
+/// exact planes, and precision does not suffer from clip vertices computed near the eye.
+#[derive(Clone, Copy, Debug)]
+pub struct TrianglePlanes {
+    inv_w: [f64; 3],
+    u: [f64; 3],
+    v: [f64; 3],
+}
+
+impl TrianglePlanes {
+    /// `None` when the triangle's plane passes through the eye (it is seen edge-on).
+    pub fn new(
+        vertices: &[ClipVertex; 3],
+        viewport: Viewport,
+        interpolation: Interpolation,
+    ) -> Option<TrianglePlanes> {
+        let (width, height) = (viewport.width as f64, viewport.height as f64);
+        let homogeneous = vertices.map(|v| {
+            let [x, y, _, w] = v.position.as_dvec4().to_array();
+            DVec3::new((0.5 * x + 0.5 * w) * width, (0.5 * w - 0.5 * y) * height, w)
+        });
+        let inverse = inverse_rows(homogeneous)?;
+        let combine = |values: [f64; 3], rows: &[DVec3; 3]| {
+            (rows[0] * values[0] + rows[1] * values[1] + rows[2] * values[2]).to_array()
+        };
+        let us = vertices.map(|v| v.uv.x as f64);
+        let vs = vertices.map(|v| v.uv.y as f64);
+        let affine_rows = match interpolation {
+            Interpolation::Affine if homogeneous.iter().all(|h| h.z > 0.0) => {
+                inverse_rows(homogeneous.map(|h| DVec3::new(h.x / h.z, h.y / h.z, 1.0)))
+            }
+            // Affine is undefined for a triangle crossing the camera plane: keep it correct there.
+            _ => None,
+        };
+        let uv_rows = affine_rows.as_ref().unwrap_or(&inverse);
+        Some(TrianglePlanes {
+            inv_w: combine([1.0; 3], &inverse),
+            u: combine(us, uv_rows),
+            v: combine(vs, uv_rows),
+        })
+    }
+
+    fn at(&self, coefficients: [f64; 3], origin: Vec2) -> AttributePlane {
+        AttributePlane {
+            at_origin: (coefficients[0] * origin.x as f64
+                + coefficients[1] * origin.y as f64
+                + coefficients[2]) as f32,
+            dx: coefficients[0] as f32,
+            dy: coefficients[1] as f32,
+        }
+    }
+}
+
+/// Rows of the inverse of the matrix whose columns are `h`, or `None` if it is near singular.
+fn inverse_rows(h: [DVec3; 3]) -> Option<[DVec3; 3]> {
+    let rows = [h[1].cross(h[2]), h[2].cross(h[0]), h[0].cross(h[1])];
+    let det = h[0].dot(rows[0]);
+    let scale = h[0].length() * h[1].length() * h[2].length();
+    (det.abs() > 1e-12 * scale && det.is_finite()).then(|| rows.map(|r| r / det))
+}
+
 impl ScreenTriangle {
-    /// Snaps a clipped triangle to fixed point and sets up its edge functions and attribute
-    /// planes. `None` for triangles with zero snapped area or no pixel centre in the viewport.
-    /// With affine interpolation the (u,v) planes hold u and v themselves rather than u/w, v/w.
+    /// Snaps a (clipped) triangle to fixed point and sets up its edge functions; its attributes
+    /// come from the planes of the scene triangle it belongs to. `None` for triangles with zero
+    /// snapped area or no pixel centre in the viewport.
     pub fn new(
         vertices: [ClipVertex; 3],
         viewport: Viewport,
-        interpolation: Interpolation,
+        planes: &TrianglePlanes,
         object: u32,
     ) -> Option<ScreenTriangle> {
         let mut snapped = [(0i64, 0i64); 3];
-        let mut attributes = [[0f64; 3]; 3];
         for (i, v) in vertices.iter().enumerate() {
             let w = v.position.w as f64;
             if !(w > 0.0 && w.is_finite()) {
                 return None;
             }
-            let inv_w = 1.0 / w;
-            let sx = (v.position.x as f64 * inv_w * 0.5 + 0.5) * viewport.width as f64;
-            let sy = (0.5 - v.position.y as f64 * inv_w * 0.5) * viewport.height as f64;
+            let sx = (v.position.x as f64 / w * 0.5 + 0.5) * viewport.width as f64;
+            let sy = (0.5 - v.position.y as f64 / w * 0.5) * viewport.height as f64;
             snapped[i] = (snap(sx), snap(sy));
-            let uv_weight = match interpolation {
-                Interpolation::PerspectiveCorrect => inv_w,
-                Interpolation::Affine => 1.0,
-            };
-            attributes[i] = [inv_w, v.uv.x as f64 * uv_weight, v.uv.y as f64 * uv_weight];
         }
-        let mut area = edge_value(snapped[1], snapped[2], snapped[0]);
+        let area = edge_value(snapped[1], snapped[2], snapped[0]);
         if area == 0 {
             return None;
         }
         if area < 0 {
             snapped.swap(1, 2);
-            attributes.swap(1, 2);
-            area = -area;
         }
         let bounds = pixel_bounds(&snapped, viewport)?;
-        let origin = snapped[0];
-        let planes = attribute_planes(&snapped, &attributes, area);
+        let origin = Vec2::new(bounds.x0 as f32, bounds.y0 as f32);
         Some(ScreenTriangle {
             bounds,
             edges: [0, 1, 2].map(|i| edge(snapped[(i + 1) % 3], snapped[(i + 2) % 3], &bounds)),
-            origin: Vec2::new(origin.0 as f32, origin.1 as f32) / ONE as f32,
-            inv_w: planes[0],
-            u_over_w: planes[1],
-            v_over_w: planes[2],
+            origin,
+            inv_w: planes.at(planes.inv_w, origin),
+            u_over_w: planes.at(planes.u, origin),
+            v_over_w: planes.at(planes.v, origin),
             object,
         })
     }
@@ -164,32 +221,5 @@ fn pixel_bounds(snapped: &[(i64, i64); 3], viewport: Viewport) -> Option<PixelRe
         y0: y0 as u32,
         x1: x1 as u32,
         y1: y1 as u32,
-    })
-}
-
-/// Plane equations for the per-vertex attributes, in f64 from the snapped positions (so they
-/// agree exactly with coverage), relative to the first vertex.
-fn attribute_planes(
-    snapped: &[(i64, i64); 3],
-    values: &[[f64; 3]; 3],
-    area: i64,
-) -> [AttributePlane; 3] {
-    let px = |i: usize| {
-        (
-            snapped[i].0 as f64 / ONE as f64,
-            snapped[i].1 as f64 / ONE as f64,
-        )
-    };
-    let (p0, p1, p2) = (px(0), px(1), px(2));
-    let (e1, e2) = ((p1.0 - p0.0, p1.1 - p0.1), (p2.0 - p0.0, p2.1 - p0.1));
-    // The same orientation as `edge_value`: det = e1.x·e2.y − e1.y·e2.x = area / ONE².
-    let det = area as f64 / (ONE * ONE) as f64;
-    [0, 1, 2].map(|k| {
-        let (d1, d2) = (values[1][k] - values[0][k], values[2][k] - values[0][k]);
-        AttributePlane {
-            at_origin: values[0][k] as f32,
-            dx: ((d1 * e2.1 - d2 * e1.1) / det) as f32,
-            dy: ((d2 * e1.0 - d1 * e2.0) / det) as f32,
-        }
     })
 }

@@ -3,7 +3,8 @@
 
 use bumpwork::raster::{
     Camera, ClipVertex, Fragment, FragmentShader, Framebuffer, Interpolation, PixelRect,
-    PreparedScene, RenderTarget, ScreenTriangle, Viewport, render_with, scan_triangle,
+    PreparedScene, RenderTarget, ScreenTriangle, TrianglePlanes, Viewport, render_with,
+    scan_triangle,
 };
 use bumpwork::scene::Scene;
 use bumpwork::surface::Tessellation;
@@ -21,7 +22,8 @@ pub fn at_pixel(viewport: Viewport, x: f64, y: f64) -> ClipVertex {
 
 pub fn screen_triangle(viewport: Viewport, corners: [(f64, f64); 3]) -> Option<ScreenTriangle> {
     let vertices = corners.map(|(x, y)| at_pixel(viewport, x, y));
-    ScreenTriangle::new(vertices, viewport, Interpolation::PerspectiveCorrect, 0)
+    let planes = TrianglePlanes::new(&vertices, viewport, Interpolation::PerspectiveCorrect)?;
+    ScreenTriangle::new(vertices, viewport, &planes, 0)
 }
 
 /// How many of the triangles cover each pixel centre, ignoring depth.
