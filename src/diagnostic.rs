@@ -1,4 +1,4 @@
-//! Messages about user files: `file:line:column: error: …` with the line and a caret, with any
+//! Messages about user files: `file:line:column: what was expected` with the line and a caret, with any
 //! control characters from the file escaped so nothing from a file reaches the terminal raw.
 
 use std::borrow::Cow;
@@ -29,7 +29,7 @@ pub fn line_column(source: &str, offset: usize) -> (usize, usize) {
     (line, source[line_start..offset].chars().count() + 1)
 }
 
-/// Renders `file:line:column: error: message`, the offending line and a caret under the spot.
+/// Renders `file:line:column: message`, the offending line and a caret under the spot.
 pub fn render(file: &str, source: &str, offset: usize, message: &str) -> String {
     let (line, column) = line_column(source, offset);
     let text = source.lines().nth(line - 1).unwrap_or("");
@@ -39,7 +39,7 @@ pub fn render(file: &str, source: &str, offset: usize, message: &str) -> String 
         .map(|c| if c == '\t' { ' ' } else { c })
         .collect();
     format!(
-        "{file}:{line}:{column}: error: {message}\n{pad} |\n{line} | {code}\n{pad} | {caret:>column$}",
+        "{file}:{line}:{column}: {message}\n{pad} |\n{line} | {code}\n{pad} | {caret:>column$}",
         file = sanitize(file),
         message = sanitize(message),
         pad = " ".repeat(gutter),
@@ -73,7 +73,7 @@ mod tests {
         assert_eq!(line_column(src, offset), (2, 10));
         let message = render("s.toml", src, offset, "expected a positive number");
         assert!(
-            message.starts_with("s.toml:2:10: error: expected a positive number"),
+            message.starts_with("s.toml:2:10: expected a positive number"),
             "{message}"
         );
         let caret_line = message.lines().last().unwrap();

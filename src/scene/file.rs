@@ -46,7 +46,7 @@ pub struct CameraFile {
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize)]
-#[serde(tag = "type", deny_unknown_fields, rename_all = "kebab-case")]
+#[serde(deny_unknown_fields, rename_all = "kebab-case")]
 pub enum LightFile {
     Point {
         position: Point,
@@ -70,7 +70,7 @@ pub struct ObjectFile {
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize)]
-#[serde(tag = "type", deny_unknown_fields, rename_all = "kebab-case")]
+#[serde(deny_unknown_fields, rename_all = "kebab-case")]
 pub enum SurfaceFile {
     Plane {
         origin: Point,
