@@ -3,6 +3,7 @@
 pub mod diagnostic;
 mod error;
 pub mod export;
+pub mod measure;
 pub mod pattern;
 pub mod raster;
 pub mod scene;

@@ -23,6 +23,16 @@ impl Framebuffer {
         }
     }
 
+    /// Makes the framebuffer `width` × `height`, keeping its allocation when it is large enough.
+    /// The contents are unspecified until the next render writes every pixel.
+    pub fn resize(&mut self, width: u32, height: u32) {
+        let n = width as usize * height as usize;
+        self.width = width;
+        self.height = height;
+        self.color.resize(n, Vec3::ZERO);
+        self.depth.resize(n, f32::INFINITY);
+    }
+
     /// 8-bit sRGB, row-major, top row first.
     pub fn to_srgb8(&self) -> Vec<[u8; 3]> {
         self.color

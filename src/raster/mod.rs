@@ -20,7 +20,7 @@ pub use clip::{ClipVertex, clip_triangle};
 pub use framebuffer::{Framebuffer, linear_to_srgb8};
 pub use pipeline::{
     Fragment, FragmentShader, FrameObject, FrameStats, Interpolation, LitShader, PreparedObject,
-    PreparedScene, RenderTarget, frame_objects, render, render_with, screen_triangles,
+    PreparedScene, RenderTarget, frame_objects, render, render_into, render_with, screen_triangles,
 };
 pub use scan::{PixelRect, scan_triangle};
 pub use setup::{SUBPIXEL_BITS, ScreenTriangle, TrianglePlanes, Viewport};

@@ -140,20 +140,33 @@ pub fn screen_triangles(objects: &[FrameObject], target: &RenderTarget) -> Vec<S
         .collect()
 }
 
-/// Renders a frame with any fragment program: transform, cull, clip, set up, bin, then per tile
-/// resolve visibility and run the program once for each visible pixel.
+/// Renders a frame with any fragment program into a new framebuffer.
 pub fn render_with(
     prepared: &PreparedScene,
     target: &RenderTarget,
     shader: &impl FragmentShader,
 ) -> (Framebuffer, FrameStats) {
+    let mut framebuffer = Framebuffer::new(0, 0, Vec3::ZERO);
+    let stats = render_into(prepared, target, shader, &mut framebuffer);
+    (framebuffer, stats)
+}
+
+/// Renders a frame into `framebuffer`, reusing its memory: transform, cull, clip, set up, bin,
+/// then per tile resolve visibility and run the program once for each visible pixel. Every
+/// pixel is written (shaded or background), so no separate clear pass is needed.
+pub fn render_into(
+    prepared: &PreparedScene,
+    target: &RenderTarget,
+    shader: &impl FragmentShader,
+    framebuffer: &mut Framebuffer,
+) -> FrameStats {
     let viewport = target.viewport;
     let objects = frame_objects(prepared, target.camera);
     let triangles = screen_triangles(&objects, target);
     let bins = TileBins::new(viewport, &triangles);
     let perspective = target.interpolation == Interpolation::PerspectiveCorrect;
-    let mut framebuffer =
-        Framebuffer::new(viewport.width, viewport.height, prepared.scene.background);
+    let background = prepared.scene.background;
+    framebuffer.resize(viewport.width, viewport.height);
     let strip = (TILE_SIZE * viewport.width) as usize;
     let fragments: usize = framebuffer
         .color
@@ -166,24 +179,28 @@ pub fn render_with(
             for tx in 0..bins.tiles_x {
                 let rect = TileBins::tile_rect(viewport, tx, ty as u32);
                 let bin = &bins.bins[(ty as u32 * bins.tiles_x + tx) as usize];
-                tile.resolve_visibility(&triangles, bin, &rect);
                 let out = StripOutput {
                     color,
                     depth,
                     width: viewport.width,
                     first_row: rect.y0,
+                    background,
                 };
+                if bin.is_empty() {
+                    out.fill_background(&rect);
+                    continue;
+                }
+                tile.resolve_visibility(&triangles, bin, &rect);
                 shaded += tile.shade(&triangles, &objects, shader, perspective, &rect, out);
             }
             shaded
         })
         .sum();
-    let stats = FrameStats {
+    FrameStats {
         triangles: prepared.triangle_count(),
         rasterized_triangles: triangles.len(),
         fragments,
-    };
-    (framebuffer, stats)
+    }
 }
 
 /// Transforms one object's vertices and turns its triangles into screen triangles (in parallel,
@@ -259,6 +276,18 @@ struct StripOutput<'a> {
     depth: &'a mut [f32],
     width: u32,
     first_row: u32,
+    background: Vec3,
+}
+
+impl StripOutput<'_> {
+    fn fill_background(self, rect: &PixelRect) {
+        for y in rect.y0..=rect.y1 {
+            let row = ((y - self.first_row) * self.width) as usize;
+            let span = row + rect.x0 as usize..=row + rect.x1 as usize;
+            self.color[span.clone()].fill(self.background);
+            self.depth[span].fill(f32::INFINITY);
+        }
+    }
 }
 
 impl TileBuffers {
@@ -294,7 +323,10 @@ impl TileBuffers {
             for x in rect.x0..=rect.x1 {
                 let slot = ((y - rect.y0) * TILE_SIZE + (x - rect.x0)) as usize;
                 let index = self.triangle[slot];
+                let pixel = ((y - out.first_row) * out.width + x) as usize;
                 if index == NO_TRIANGLE {
+                    out.color[pixel] = out.background;
+                    out.depth[pixel] = f32::INFINITY;
                     continue;
                 }
                 let t = &triangles[index as usize];
@@ -307,7 +339,6 @@ impl TileBuffers {
                     uv: if perspective { uv_plane * w } else { uv_plane },
                     depth: w,
                 };
-                let pixel = ((y - out.first_row) * out.width + x) as usize;
                 out.color[pixel] = shader.shade(&fragment);
                 out.depth[pixel] = w;
                 shaded += 1;

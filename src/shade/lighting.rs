@@ -61,9 +61,20 @@ pub fn blinn_phong(lights: &FrameLights, material: &Material, p: Vec3, n: Vec3) 
         }
         diffuse += color * lambert;
         let half = crate::surface::normalize_or(to_light + to_eye, n);
-        specular += color * n.dot(half).max(0.0).powf(material.shininess);
+        specular += color * power(n.dot(half).max(0.0), material.shininess);
     }
     material.color * diffuse + specular * material.specular
+}
+
+/// x^exponent; integer exponents (the usual case) take the multiply chain of `powi`, several
+/// times faster than `powf`, with the same result to within rounding.
+#[inline]
+fn power(x: f32, exponent: f32) -> f32 {
+    if exponent.fract() == 0.0 && exponent.abs() <= 1024.0 {
+        x.powi(exponent as i32)
+    } else {
+        x.powf(exponent)
+    }
 }
 
 #[cfg(test)]

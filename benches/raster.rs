@@ -1,0 +1,135 @@
+//! Fill rate of the rendering core: a lit 128×64 sphere, 540 pixels high, at 1920×1080, on one
+//! thread and on all threads, with a breakdown of where a single-threaded frame goes. Medians
+//! over repeated frames with min–max spread.
+//!
+//! Run: `cargo bench --bench raster`.
+
+use bumpwork::measure::Timing;
+use bumpwork::raster::{
+    Camera, Fragment, FragmentShader, Framebuffer, Interpolation, LitShader, PreparedScene,
+    RenderTarget, Viewport, frame_objects, render_into, screen_triangles,
+};
+use bumpwork::scene::{Light, Material, Object, Scene};
+use bumpwork::shade::FrameLights;
+use bumpwork::surface::{Sphere, Surface, Tessellation};
+use glam::{DVec3, Vec3};
+
+const RUNS: usize = 31;
+
+fn sphere_scene() -> Scene {
+    // r / d = sin(atan(0.5·tan 20°)) puts the 1-unit sphere 540 of 1080 pixels high at fov 40°.
+    let half_angle = (0.5 * 20f64.to_radians().tan()).atan();
+    let distance = 1.0 / half_angle.sin();
+    Scene {
+        name: "bench-sphere".into(),
+        camera: Camera {
+            eye: DVec3::new(0.0, 0.0, distance),
+            target: DVec3::ZERO,
+            up: Vec3::Y,
+            vfov_degrees: 40.0,
+            near: 0.1,
+            far: 100.0,
+        },
+        background: Vec3::ZERO,
+        ambient: Vec3::splat(0.05),
+        lights: vec![Light::Point {
+            position: DVec3::new(-4.0, 4.0, 6.0),
+            color: Vec3::ONE,
+        }],
+        objects: vec![Object {
+            surface: Surface::Sphere(Sphere {
+                center: DVec3::ZERO,
+                radius: 1.0,
+            }),
+            material: Material {
+                color: Vec3::new(0.8, 0.5, 0.3),
+                specular: 0.4,
+                shininess: 32.0,
+            },
+        }],
+    }
+}
+
+/// Coverage and visibility only: isolates the rasterizer from the cost of lighting.
+struct FlatShader;
+
+impl FragmentShader for FlatShader {
+    fn shade(&self, _: &Fragment) -> Vec3 {
+        Vec3::ONE
+    }
+}
+
+fn main() {
+    let scene = sphere_scene();
+    let camera = scene.camera.clone();
+    let prepared = PreparedScene::new(scene, Tessellation { density: 64 });
+    let target = RenderTarget {
+        camera: &camera,
+        viewport: Viewport {
+            width: 1920,
+            height: 1080,
+        },
+        interpolation: Interpolation::PerspectiveCorrect,
+    };
+    let lit = LitShader {
+        lights: FrameLights::new(prepared.scene.ambient, &prepared.scene.lights, camera.eye),
+    };
+    let mut framebuffer = Framebuffer::new(1920, 1080, Vec3::ZERO);
+    let one_thread = rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .build()
+        .expect("thread pool");
+
+    println!(
+        "lit 128x64 sphere ({} triangles) at 1920x1080, {RUNS} frames each",
+        prepared.triangle_count()
+    );
+    println!("\none thread, where the frame goes:");
+    let objects = frame_objects(&prepared, &camera);
+    let setup = one_thread.install(|| {
+        Timing::measure(3, RUNS, || {
+            std::hint::black_box(screen_triangles(&objects, &target));
+        })
+    });
+    let flat = one_thread.install(|| {
+        Timing::measure(3, RUNS, || {
+            render_into(&prepared, &target, &FlatShader, &mut framebuffer);
+        })
+    });
+    println!(
+        "  {:<44} {}",
+        "transform, clip, set up triangles",
+        setup.summary_ms()
+    );
+    println!(
+        "  {:<44} {}",
+        "+ bin, scan, depth test, write (flat colour)",
+        flat.summary_ms()
+    );
+
+    println!(
+        "\n{:<10} {:>28} {:>12} {:>10} {:>10}",
+        "threads", "lit frame median (min-max)", "fragments", "Mpix/s", "Mtri/s"
+    );
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+    for threads in [1, cores] {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .expect("thread pool");
+        let mut stats = Default::default();
+        let timing = pool.install(|| {
+            Timing::measure(3, RUNS, || {
+                stats = render_into(&prepared, &target, &lit, &mut framebuffer)
+            })
+        });
+        println!(
+            "{:<10} {:>28} {:>12} {:>10.1} {:>10.2}",
+            threads,
+            timing.summary_ms(),
+            stats.fragments,
+            timing.rate(stats.fragments as f64) / 1e6,
+            timing.rate(stats.triangles as f64) / 1e6,
+        );
+    }
+}
