@@ -3,15 +3,15 @@
 mod file;
 mod presets;
 
-pub use file::{SceneFile, load_scene_file, parse_scene};
-pub use presets::{PRESET_NAMES, preset};
+pub use file::{MAX_SCENE_FILE_BYTES, SceneFile, load_scene_file, parse_scene};
+pub use presets::{PRESET_NAMES, preset, preset_file};
 
 use crate::raster::Camera;
 use crate::surface::Surface;
 use glam::{DVec3, Vec3};
 
 /// A scene ready to render. Colours are linear RGB.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Scene {
     pub name: String,
     pub camera: Camera,
@@ -21,7 +21,7 @@ pub struct Scene {
     pub objects: Vec<Object>,
 }
 
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Object {
     pub surface: Surface,
     pub material: Material,
