@@ -5,6 +5,7 @@ use std::collections::HashMap;
 use super::ast::{Ast, BinaryOp, ExprId, ExprKind, OutputKind, Stmt, UnaryOp};
 use super::error::{PatternError, Span};
 use super::functions::{self, FUNCTIONS, Function};
+use super::parser::OUTPUT_NAMES;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Type {
@@ -164,6 +165,7 @@ impl Checker<'_> {
 
     fn declare(&mut self, name: &str, span: Span, binding: Binding) -> Result<(), PatternError> {
         let builtin = name == "pi"
+            || OUTPUT_NAMES.contains(&name)
             || INPUTS.iter().any(|(n, _)| *n == name)
             || functions::lookup(name).is_some();
         if builtin {
@@ -345,19 +347,29 @@ pub fn closest<'a>(name: &str, known: impl Iterator<Item = &'a str>) -> Option<&
         .map(|(_, k)| k)
 }
 
+/// Optimal-string-alignment distance: insertions, deletions, substitutions and swaps of
+/// neighbours (the commonest typo) each cost 1.
 fn edit_distance(a: &str, b: &str) -> usize {
-    let b: Vec<char> = b.chars().collect();
-    let mut row: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().enumerate() {
-        let mut diagonal = row[0];
-        row[0] = i + 1;
-        for (j, &cb) in b.iter().enumerate() {
-            let substitution = diagonal + usize::from(ca != cb);
-            diagonal = row[j + 1];
-            row[j + 1] = substitution.min(row[j] + 1).min(row[j + 1] + 1);
+    let (a, b): (Vec<char>, Vec<char>) = (a.chars().collect(), b.chars().collect());
+    let width = b.len() + 1;
+    let mut d = vec![0; (a.len() + 1) * width];
+    for i in 0..=a.len() {
+        for j in 0..=b.len() {
+            d[i * width + j] = if i == 0 || j == 0 {
+                i + j
+            } else {
+                let cost = usize::from(a[i - 1] != b[j - 1]);
+                let mut best = (d[(i - 1) * width + j] + 1)
+                    .min(d[i * width + j - 1] + 1)
+                    .min(d[(i - 1) * width + j - 1] + cost);
+                if i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] {
+                    best = best.min(d[(i - 2) * width + j - 2] + 1);
+                }
+                best
+            };
         }
     }
-    row[b.len()]
+    d[a.len() * width + b.len()]
 }
 
 #[cfg(test)]
@@ -374,6 +386,7 @@ mod tests {
         assert_eq!(edit_distance("perod", "period"), 1);
         assert_eq!(edit_distance("", "abc"), 3);
         assert_eq!(edit_distance("kitten", "sitting"), 3);
+        assert_eq!(edit_distance("dpeth", "depth"), 1);
     }
 
     #[test]

@@ -5,6 +5,10 @@ use super::ast::{Ast, BinaryOp, Expr, ExprId, ExprKind, OutputKind, Stmt, UnaryO
 use super::error::{PatternError, Span};
 use super::lexer::{Tok, Token};
 
+/// Names that start an output statement; reserved, so a dangling operator before the next
+/// line's output is reported there rather than swallowing the output's name.
+pub const OUTPUT_NAMES: [&str; 4] = ["height", "slope", "color", "colour"];
+
 /// Deepest expression nesting accepted (parentheses, operators, calls, `if`s).
 pub const MAX_DEPTH: usize = 256;
 
@@ -259,7 +263,9 @@ impl Parser<'_> {
                 Ok(inner)
             }
             Tok::If => self.conditional(token.span),
-            Tok::Ident => self.name_or_call(token.span),
+            Tok::Ident if !OUTPUT_NAMES.contains(&self.text(token.span)) => {
+                self.name_or_call(token.span)
+            }
             _ => {
                 self.pos -= usize::from(token.tok != Tok::Eof);
                 Err(self.expected("an expression"))
