@@ -158,6 +158,12 @@ impl Lowering<'_> {
         {
             return if condition != 0.0 { args[1] } else { args[2] };
         }
+        if op == Op::Pow
+            && let Operand::Const(exponent) = args[1]
+            && let Some(reduced) = self.small_power(args[0], exponent)
+        {
+            return reduced;
+        }
         let args = args.map(|a| self.slot(a));
         if let Some(&slot) = self.shared.get(&(op, args)) {
             return Operand::Slot(slot);
@@ -166,6 +172,26 @@ impl Lowering<'_> {
         self.instrs.push(Instr { op, dst, args });
         self.shared.insert((op, args), dst);
         Operand::Slot(dst)
+    }
+
+    /// `a^n` for the exponents patterns use most, by multiplication or `sqrt` instead of the
+    /// far slower `powf`.
+    fn small_power(&mut self, a: Operand, exponent: f64) -> Option<Operand> {
+        Some(match exponent {
+            0.5 => self.emit1(Op::Sqrt, a),
+            1.0 => a,
+            2.0 => self.emit2(Op::Mul, a, a),
+            3.0 => {
+                let square = self.emit2(Op::Mul, a, a);
+                self.emit2(Op::Mul, square, a)
+            }
+            4.0 => {
+                let square = self.emit2(Op::Mul, a, a);
+                self.emit2(Op::Mul, square, square)
+            }
+            -1.0 => self.emit2(Op::Div, Operand::Const(1.0), a),
+            _ => return None,
+        })
     }
 
     fn emit1(&mut self, op: Op, a: Operand) -> Operand {
@@ -375,6 +401,14 @@ mod tests {
             program("let unused = sin(u)\nlet a = cos(v)\nheight = if 1 < 2 then a else sqrt(u)");
         assert_eq!(p.instrs.len(), 1);
         assert!(!p.uses(Input::U));
+    }
+
+    #[test]
+    fn small_integer_powers_become_multiplications() {
+        let p = program("height = u^2 + pow(v, 3) + u^2.5");
+        let ops: Vec<Op> = p.instrs.iter().map(|i| i.op).collect();
+        assert_eq!(ops.iter().filter(|&&o| o == Op::Pow).count(), 1);
+        assert_eq!(ops.iter().filter(|&&o| o == Op::Mul).count(), 3);
     }
 
     #[test]

@@ -21,6 +21,10 @@ pub trait Scalar: Copy + Default + Send + Sync + 'static {
     /// `f(a, b)` given its value and, lazily, `(∂f/∂a, ∂f/∂b)`.
     fn chain2(f: f64, a: Self, b: Self, partials: impl FnOnce() -> (f64, f64)) -> Self;
 
+    /// Like `chain2`, for partials that are finite wherever `f` is (arithmetic): skips the
+    /// 0·∞ guard, which is then never needed.
+    fn arith2(f: f64, a: Self, b: Self, pa: f64, pb: f64) -> Self;
+
     /// `f(a, b, c)` given its value and, lazily, its three partials.
     fn chain3(
         f: f64,
@@ -55,6 +59,10 @@ impl Scalar for f64 {
     }
 
     fn chain3(f: f64, _: f64, _: f64, _: f64, _: impl FnOnce() -> (f64, f64, f64)) -> f64 {
+        f
+    }
+
+    fn arith2(f: f64, _: f64, _: f64, _: f64, _: f64) -> f64 {
         f
     }
 }
@@ -114,6 +122,15 @@ impl Scalar for Dual {
             value: f,
             du: times(pa, a.du) + times(pb, b.du),
             dv: times(pa, a.dv) + times(pb, b.dv),
+        }
+    }
+
+    #[inline(always)]
+    fn arith2(f: f64, a: Dual, b: Dual, pa: f64, pb: f64) -> Dual {
+        Dual {
+            value: f,
+            du: pa * a.du + pb * b.du,
+            dv: pa * a.dv + pb * b.dv,
         }
     }
 

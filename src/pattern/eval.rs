@@ -213,3 +213,69 @@ fn lanes<T: Scalar>(out: &mut [T], a: &[T], b: &[T], c: &[T], f: impl Fn(T, T, T
         *o = f(x, y, z);
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::super::compile::Instr;
+    use super::*;
+
+    /// slot 0 = u, slot 1 = constant 3, slot 2 = u * 3, slot 3 = sin(slot 2)
+    fn program() -> Program {
+        Program {
+            sources: vec![
+                Source::Input(Input::U),
+                Source::Constant(3.0),
+                Source::Computed,
+                Source::Computed,
+            ],
+            instrs: vec![
+                Instr {
+                    op: Op::Mul,
+                    dst: 2,
+                    args: [0, 1, 0],
+                },
+                Instr {
+                    op: Op::Sin,
+                    dst: 3,
+                    args: [2, 2, 2],
+                },
+            ],
+            outputs: vec![3],
+        }
+    }
+
+    #[test]
+    fn runs_instructions_over_the_lanes_with_derivatives() {
+        let program = program();
+        let u = [0.5f32, 1.0, 2.0];
+        let mut scratch = Scratch::new();
+        let slots = scratch.lanes::<Dual>(4);
+        load_uniforms(&program, |_| 0.0, 0.0, slots);
+        load_inputs(&program, &Inputs::uv(&u, &u, 0.0), 0, 3, slots);
+        run(&program, 3, slots);
+        for (i, &u) in u.iter().enumerate() {
+            let r = slots[3 * CHUNK + i];
+            let u = f64::from(u);
+            assert_eq!(r.value, (3.0 * u).sin());
+            assert_eq!(r.du, 3.0 * (3.0 * u).cos());
+            assert_eq!(r.dv, 0.0);
+        }
+    }
+
+    #[test]
+    fn value_lanes_ignore_missing_point_partials() {
+        let mut program = program();
+        program.sources[0] = Source::Input(Input::X);
+        let x = [1.0f32; 70];
+        let inputs = Inputs {
+            x: &x,
+            ..Inputs::default()
+        };
+        let mut scratch = Scratch::new();
+        let slots = scratch.lanes::<f64>(4);
+        load_uniforms(&program, |_| 0.0, 0.0, slots);
+        load_inputs(&program, &inputs, 64, 6, slots);
+        run(&program, 6, slots);
+        assert_eq!(slots[3 * CHUNK + 5], 3.0f64.sin());
+    }
+}

@@ -296,3 +296,54 @@ fn read_limited(path: &Path, origin: &str) -> Result<String, PatternError> {
         )
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const SOURCE: &str = "param k = 2 in 1..3\nheight = k * u";
+
+    fn height_at(pattern: &Pattern, params: &[f32], u: f32) -> BumpSample {
+        let mut out = [BumpSample::default()];
+        let (u, v) = ([u], [0.0]);
+        let inputs = Inputs::uv(&u, &v, 0.0);
+        pattern.eval_bump(&inputs, params, &mut Scratch::new(), &mut out);
+        out[0]
+    }
+
+    #[test]
+    fn params_default_clamp_and_ignore_non_finite() {
+        let p = Pattern::compile(SOURCE, "t").unwrap();
+        assert_eq!(height_at(&p, &[], 1.0).height, 2.0);
+        assert_eq!(height_at(&p, &[2.5], 1.0).height, 2.5);
+        assert_eq!(height_at(&p, &[10.0], 1.0).height, 3.0);
+        assert_eq!(height_at(&p, &[f32::NAN], 1.0).du, 2.0);
+    }
+
+    #[test]
+    fn pattern_is_shareable_between_threads() {
+        fn shareable<T: Send + Sync + Clone>() {}
+        shareable::<Pattern>();
+    }
+
+    #[test]
+    fn one_scratch_serves_patterns_of_any_size() {
+        let small = Pattern::compile("height = u", "t").unwrap();
+        let big = Pattern::compile(builtin("ripples").unwrap(), "ripples").unwrap();
+        let mut scratch = small.scratch();
+        let mut out = [BumpSample::default(); 3];
+        let u = [1.0, 2.0, 3.0];
+        big.eval_bump(&Inputs::uv(&u, &u, 0.0), &[], &mut scratch, &mut out);
+        assert!(out.iter().all(|s| s.du != 0.0));
+    }
+
+    #[test]
+    fn summary_reports_what_the_workbench_needs() {
+        let s = Pattern::compile("param a = 1 in 0..2\nslope = (sin(t), a * z)", "t")
+            .unwrap()
+            .summary();
+        assert_eq!(s.output, OutputKind::Slope);
+        assert!(s.uses_time && s.uses_point);
+        assert_eq!(s.params.len(), 1);
+    }
+}

@@ -105,10 +105,14 @@ fn sign(x: f64) -> f64 {
 fn apply_binary<T: Scalar>(op: Op, a: T, b: T, c: T) -> T {
     let (x, y) = (a.value(), b.value());
     match op {
-        Op::Add => T::chain2(x + y, a, b, || (1.0, 1.0)),
-        Op::Sub => T::chain2(x - y, a, b, || (1.0, -1.0)),
-        Op::Mul => T::chain2(x * y, a, b, || (y, x)),
-        Op::Div => T::chain2(x / y, a, b, || (1.0 / y, -x / (y * y))),
+        // Arithmetic partials are non-finite only where the value is too, so no 0·∞ guard.
+        Op::Add => T::arith2(x + y, a, b, 1.0, 1.0),
+        Op::Sub => T::arith2(x - y, a, b, 1.0, -1.0),
+        Op::Mul => T::arith2(x * y, a, b, y, x),
+        Op::Div => {
+            let q = x / y;
+            T::arith2(q, a, b, 1.0 / y, -q / y)
+        }
         Op::Pow => {
             let r = x.powf(y);
             // x^y has no real slope in y for x <= 0; take 0 there.
