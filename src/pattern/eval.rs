@@ -51,8 +51,7 @@ impl<'a> Inputs<'a> {
 /// calls (one per thread) so evaluation never allocates.
 #[derive(Clone, Debug, Default)]
 pub struct Scratch {
-    values: Vec<f64>,
-    duals: Vec<Dual>,
+    lanes: Vec<f64>,
 }
 
 impl Scratch {
@@ -60,147 +59,175 @@ impl Scratch {
         Scratch::default()
     }
 
-    pub(crate) fn lanes<T: Lane>(&mut self, slots: usize) -> &mut [T] {
-        let storage = T::storage(self);
-        if storage.len() < slots * CHUNK {
-            storage.resize(slots * CHUNK, T::default());
+    /// Storage for `slots` slots of `T`.
+    pub(crate) fn slots<T: Lane>(&mut self, slots: usize) -> &mut [f64] {
+        let len = slots * T::SLOT;
+        if self.lanes.len() < len {
+            self.lanes.resize(len, 0.0);
         }
-        &mut storage[..slots * CHUNK]
+        &mut self.lanes[..len]
     }
 }
 
-/// A scalar type with its own storage in `Scratch`.
+/// How a scalar type is laid out in a slot: structure-of-arrays, `CHUNK` values, then (for
+/// duals) `CHUNK` u-partials and `CHUNK` v-partials, so every lane loop reads and writes
+/// contiguous `f64`s and vectorises.
 pub(crate) trait Lane: Scalar {
-    fn storage(scratch: &mut Scratch) -> &mut Vec<Self>;
+    /// `f64`s per slot.
+    const SLOT: usize;
+    fn get(slot: &[f64], i: usize) -> Self;
+    fn set(slot: &mut [f64], i: usize, value: Self);
 }
 
 impl Lane for f64 {
-    fn storage(scratch: &mut Scratch) -> &mut Vec<f64> {
-        &mut scratch.values
+    const SLOT: usize = CHUNK;
+
+    #[inline(always)]
+    fn get(slot: &[f64], i: usize) -> f64 {
+        slot[i]
+    }
+
+    #[inline(always)]
+    fn set(slot: &mut [f64], i: usize, value: f64) {
+        slot[i] = value;
     }
 }
 
 impl Lane for Dual {
-    fn storage(scratch: &mut Scratch) -> &mut Vec<Dual> {
-        &mut scratch.duals
+    const SLOT: usize = 3 * CHUNK;
+
+    #[inline(always)]
+    fn get(slot: &[f64], i: usize) -> Dual {
+        Dual::input(slot[i], slot[CHUNK + i], slot[2 * CHUNK + i])
+    }
+
+    #[inline(always)]
+    fn set(slot: &mut [f64], i: usize, value: Dual) {
+        slot[i] = value.value;
+        slot[CHUNK + i] = value.du;
+        slot[2 * CHUNK + i] = value.dv;
     }
 }
 
-/// Fills the slots that hold the same value for every fragment of a call: params and constants.
-pub(crate) fn load_uniforms<T: Scalar>(
+/// The storage of slot `index`.
+pub(crate) fn slot<T: Lane>(slots: &[f64], index: usize) -> &[f64] {
+    &slots[index * T::SLOT..(index + 1) * T::SLOT]
+}
+
+fn slot_mut<T: Lane>(slots: &mut [f64], index: usize) -> &mut [f64] {
+    &mut slots[index * T::SLOT..(index + 1) * T::SLOT]
+}
+
+/// Fills the slots that hold the same value for every fragment of a call: params, constants, t.
+pub(crate) fn load_uniforms<T: Lane>(
     program: &Program,
     param: impl Fn(usize) -> f64,
     t: f64,
-    slots: &mut [T],
+    slots: &mut [f64],
 ) {
-    for (slot, source) in program.sources.iter().enumerate() {
+    for (index, source) in program.sources.iter().enumerate() {
         let value = match *source {
             Source::Param(p) => param(p),
             Source::Constant(c) => c,
             Source::Input(Input::T) => t,
             _ => continue,
         };
-        slots[slot * CHUNK..(slot + 1) * CHUNK].fill(T::constant(value));
+        let lanes = slot_mut::<T>(slots, index);
+        for i in 0..CHUNK {
+            T::set(lanes, i, T::constant(value));
+        }
     }
 }
 
 /// Loads the per-fragment inputs of fragments `start..start + n` into their slots.
-pub(crate) fn load_inputs<T: Scalar>(
+pub(crate) fn load_inputs<T: Lane>(
     program: &Program,
     inputs: &Inputs,
     start: usize,
     n: usize,
-    slots: &mut [T],
+    slots: &mut [f64],
 ) {
-    for (slot, source) in program.sources.iter().enumerate() {
+    let range = start..start + n;
+    for (index, source) in program.sources.iter().enumerate() {
         let Source::Input(input) = *source else {
             continue;
         };
-        let lanes = &mut slots[slot * CHUNK..slot * CHUNK + n];
-        let range = start..start + n;
+        let lanes = slot_mut::<T>(slots, index);
+        let r = range.clone();
         match input {
-            Input::U => seed(lanes, &inputs.u[range], None),
-            Input::V => seed(lanes, &inputs.v[range], None),
-            Input::X => seed(
+            Input::U => seed::<T>(lanes, &inputs.u[r], Seed::Constant(1.0, 0.0)),
+            Input::V => seed::<T>(lanes, &inputs.v[r], Seed::Constant(0.0, 1.0)),
+            Input::X => seed::<T>(
                 lanes,
-                &inputs.x[range.clone()],
-                partials(inputs.x_u, inputs.x_v, range, T::DUAL),
+                &inputs.x[r.clone()],
+                point(inputs.x_u, inputs.x_v, r, T::DUAL),
             ),
-            Input::Y => seed(
+            Input::Y => seed::<T>(
                 lanes,
-                &inputs.y[range.clone()],
-                partials(inputs.y_u, inputs.y_v, range, T::DUAL),
+                &inputs.y[r.clone()],
+                point(inputs.y_u, inputs.y_v, r, T::DUAL),
             ),
-            Input::Z => seed(
+            Input::Z => seed::<T>(
                 lanes,
-                &inputs.z[range.clone()],
-                partials(inputs.z_u, inputs.z_v, range, T::DUAL),
+                &inputs.z[r.clone()],
+                point(inputs.z_u, inputs.z_v, r, T::DUAL),
             ),
             Input::T => {}
-        }
-        if T::DUAL {
-            seed_parameter_derivative(lanes, input);
         }
     }
 }
 
-fn partials<'a>(
+/// Partials (∂/∂u, ∂/∂v) of an input.
+enum Seed<'a> {
+    Constant(f64, f64),
+    PerFragment(&'a [f32], &'a [f32]),
+}
+
+/// The point's partials, read only when derivatives are wanted (the slices may be empty).
+fn point<'a>(
     du: &'a [f32],
     dv: &'a [f32],
     range: std::ops::Range<usize>,
     wanted: bool,
-) -> Option<(&'a [f32], &'a [f32])> {
-    wanted.then(|| (&du[range.clone()], &dv[range]))
-}
-
-fn seed<T: Scalar>(lanes: &mut [T], values: &[f32], partials: Option<(&[f32], &[f32])>) {
-    match partials {
-        Some((du, dv)) => {
-            for (((lane, &x), &du), &dv) in lanes.iter_mut().zip(values).zip(du).zip(dv) {
-                *lane = T::input(f64::from(x), f64::from(du), f64::from(dv));
-            }
-        }
-        None => {
-            for (lane, &x) in lanes.iter_mut().zip(values) {
-                *lane = T::constant(f64::from(x));
-            }
-        }
+) -> Seed<'a> {
+    if wanted {
+        Seed::PerFragment(&du[range.clone()], &dv[range])
+    } else {
+        Seed::Constant(0.0, 0.0)
     }
 }
 
-/// u has ∂/∂u = 1 and v has ∂/∂v = 1.
-fn seed_parameter_derivative<T: Scalar>(lanes: &mut [T], input: Input) {
-    let (du, dv) = match input {
-        Input::U => (1.0, 0.0),
-        Input::V => (0.0, 1.0),
-        _ => return,
-    };
-    for lane in lanes {
-        *lane = T::input(lane.value(), du, dv);
+fn seed<T: Lane>(lanes: &mut [f64], values: &[f32], partials: Seed) {
+    for (i, &x) in values.iter().enumerate() {
+        let (du, dv) = match partials {
+            Seed::Constant(du, dv) => (du, dv),
+            Seed::PerFragment(du, dv) => (f64::from(du[i]), f64::from(dv[i])),
+        };
+        T::set(lanes, i, T::input(f64::from(x), du, dv));
     }
 }
 
 /// Runs every instruction over the first `n` lanes.
-pub(crate) fn run<T: Scalar>(program: &Program, n: usize, slots: &mut [T]) {
+pub(crate) fn run<T: Lane>(program: &Program, n: usize, slots: &mut [f64]) {
     for instr in &program.instrs {
-        let (below, rest) = slots.split_at_mut(instr.dst * CHUNK);
-        let out = &mut rest[..n];
-        let [a, b, c] = instr.args.map(|s| &below[s * CHUNK..s * CHUNK + n]);
-        dispatch(instr.op, out, a, b, c);
+        let (below, rest) = slots.split_at_mut(instr.dst * T::SLOT);
+        let out = &mut rest[..T::SLOT];
+        let [a, b, c] = instr.args.map(|s| slot::<T>(below, s));
+        dispatch::<T>(instr.op, n, out, a, b, c);
     }
 }
 
 /// One monomorphised lane loop per op, so the op's `match` is resolved outside the loop.
 macro_rules! lane_loops {
-    ($op:expr, $out:expr, $a:expr, $b:expr, $c:expr; $($name:ident),* $(,)?) => {
+    ($op:expr, $n:expr, $out:expr, $a:expr, $b:expr, $c:expr; $($name:ident),* $(,)?) => {
         match $op {
-            $(Op::$name => lanes($out, $a, $b, $c, |x, y, z| apply(Op::$name, x, y, z)),)*
+            $(Op::$name => lanes::<T>($n, $out, $a, $b, $c, |x, y, z| apply(Op::$name, x, y, z)),)*
         }
     };
 }
 
-fn dispatch<T: Scalar>(op: Op, out: &mut [T], a: &[T], b: &[T], c: &[T]) {
-    lane_loops!(op, out, a, b, c;
+fn dispatch<T: Lane>(op: Op, n: usize, out: &mut [f64], a: &[f64], b: &[f64], c: &[f64]) {
+    lane_loops!(op, n, out, a, b, c;
         Neg, Not, Sin, Cos, Tan, Asin, Acos, Atan, Sqrt, Abs, Sign, Floor, Ceil, Fract, Exp, Log,
         Add, Sub, Mul, Div, Pow, Mod, Min, Max, Atan2, Hypot, Step, Lt, Le, Gt, Ge, Eq, Ne, And,
         Or, Noise2, Select, Clamp, Mix, Smoothstep, Hypot3, Noise3,
@@ -208,9 +235,24 @@ fn dispatch<T: Scalar>(op: Op, out: &mut [T], a: &[T], b: &[T], c: &[T]) {
 }
 
 #[inline(always)]
-fn lanes<T: Scalar>(out: &mut [T], a: &[T], b: &[T], c: &[T], f: impl Fn(T, T, T) -> T) {
-    for (((o, &x), &y), &z) in out.iter_mut().zip(a).zip(b).zip(c) {
-        *o = f(x, y, z);
+fn lanes<T: Lane>(
+    n: usize,
+    out: &mut [f64],
+    a: &[f64],
+    b: &[f64],
+    c: &[f64],
+    f: impl Fn(T, T, T) -> T,
+) {
+    // Exact lengths let the compiler drop the bounds checks in the loop.
+    let n = n.min(CHUNK);
+    let (out, a, b, c) = (
+        &mut out[..T::SLOT],
+        &a[..T::SLOT],
+        &b[..T::SLOT],
+        &c[..T::SLOT],
+    );
+    for i in 0..n {
+        T::set(out, i, f(T::get(a, i), T::get(b, i), T::get(c, i)));
     }
 }
 
@@ -249,12 +291,12 @@ mod tests {
         let program = program();
         let u = [0.5f32, 1.0, 2.0];
         let mut scratch = Scratch::new();
-        let slots = scratch.lanes::<Dual>(4);
-        load_uniforms(&program, |_| 0.0, 0.0, slots);
-        load_inputs(&program, &Inputs::uv(&u, &u, 0.0), 0, 3, slots);
-        run(&program, 3, slots);
+        let slots = scratch.slots::<Dual>(4);
+        load_uniforms::<Dual>(&program, |_| 0.0, 0.0, slots);
+        load_inputs::<Dual>(&program, &Inputs::uv(&u, &u, 0.0), 0, 3, slots);
+        run::<Dual>(&program, 3, slots);
         for (i, &u) in u.iter().enumerate() {
-            let r = slots[3 * CHUNK + i];
+            let r = Dual::get(slot::<Dual>(slots, 3), i);
             let u = f64::from(u);
             assert_eq!(r.value, (3.0 * u).sin());
             assert_eq!(r.du, 3.0 * (3.0 * u).cos());
@@ -272,10 +314,10 @@ mod tests {
             ..Inputs::default()
         };
         let mut scratch = Scratch::new();
-        let slots = scratch.lanes::<f64>(4);
-        load_uniforms(&program, |_| 0.0, 0.0, slots);
-        load_inputs(&program, &inputs, 64, 6, slots);
-        run(&program, 6, slots);
-        assert_eq!(slots[3 * CHUNK + 5], 3.0f64.sin());
+        let slots = scratch.slots::<f64>(4);
+        load_uniforms::<f64>(&program, |_| 0.0, 0.0, slots);
+        load_inputs::<f64>(&program, &inputs, 64, 6, slots);
+        run::<f64>(&program, 6, slots);
+        assert_eq!(slot::<f64>(slots, 3)[5], 3.0f64.sin());
     }
 }

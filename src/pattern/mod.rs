@@ -129,8 +129,7 @@ impl Pattern {
     /// Scratch memory already sized for this pattern.
     pub fn scratch(&self) -> Scratch {
         let mut scratch = Scratch::new();
-        scratch.lanes::<Dual>(self.inner.program.sources.len());
-        scratch.lanes::<f64>(self.inner.program.sources.len());
+        scratch.slots::<Dual>(self.inner.program.sources.len());
         scratch
     }
 
@@ -223,17 +222,17 @@ impl Pattern {
         params: &[f32],
         scratch: &mut Scratch,
         len: usize,
-        mut store: impl FnMut(usize, &[T]) -> usize,
+        mut store: impl FnMut(usize, &[f64]) -> usize,
     ) -> usize {
         let program = &self.inner.program;
         self.check_lengths(inputs, len, T::DUAL);
-        let slots = scratch.lanes::<T>(program.sources.len());
-        eval::load_uniforms(program, |p| self.param_value(p, params), inputs.t, slots);
+        let slots = scratch.slots::<T>(program.sources.len());
+        eval::load_uniforms::<T>(program, |p| self.param_value(p, params), inputs.t, slots);
         let mut non_finite = 0;
         for start in (0..len).step_by(CHUNK) {
             let n = CHUNK.min(len - start);
-            eval::load_inputs(program, inputs, start, n, slots);
-            eval::run(program, n, slots);
+            eval::load_inputs::<T>(program, inputs, start, n, slots);
+            eval::run::<T>(program, n, slots);
             non_finite += store(start, &slots[..]);
         }
         non_finite

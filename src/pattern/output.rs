@@ -3,7 +3,7 @@
 
 use super::compile::Program;
 use super::dual::Dual;
-use super::eval::CHUNK;
+use super::eval::{CHUNK, Lane, slot};
 
 /// A bump sample: height B and its gradient (Bu, Bv) = (∂B/∂u, ∂B/∂v). Slope patterns give the
 /// gradient directly and report height 0.
@@ -14,18 +14,20 @@ pub struct BumpSample {
     pub dv: f32,
 }
 
-fn lanes<T>(slots: &[T], slot: usize, n: usize) -> &[T] {
-    &slots[slot * CHUNK..slot * CHUNK + n]
+fn lanes(slots: &[f64], index: usize, n: usize) -> &[f64] {
+    &slot::<f64>(slots, index)[..n]
 }
 
 fn finite<const N: usize>(values: [f32; N]) -> bool {
     values.iter().all(|v| v.is_finite())
 }
 
-pub fn height_gradient(program: &Program, slots: &[Dual], out: &mut [BumpSample]) -> usize {
+pub fn height_gradient(program: &Program, slots: &[f64], out: &mut [BumpSample]) -> usize {
     let n = out.len().min(CHUNK);
+    let lanes = slot::<Dual>(slots, program.outputs[0]);
     let mut bad = 0;
-    for (o, d) in out.iter_mut().zip(lanes(slots, program.outputs[0], n)) {
+    for (i, o) in out.iter_mut().take(n).enumerate() {
+        let d = Dual::get(lanes, i);
         let sample = [d.value as f32, d.du as f32, d.dv as f32];
         bad += usize::from(!finite(sample));
         *o = if finite(sample) {
