@@ -181,3 +181,23 @@ fn names_cannot_shadow_built_ins_or_repeat() {
         "already defined",
     );
 }
+
+/// A file just under the size limit made of `let`s, each using the one before.
+fn let_chain(output: &str) -> String {
+    let mut source = String::from("let a0 = u\n");
+    let mut i = 1;
+    while source.len() < MAX_SOURCE_BYTES - 100 {
+        source.push_str(&format!("let a{i} = a{} * 1.5 + v\n", i - 1));
+        i += 1;
+    }
+    source + &output.replace("LAST", &format!("a{}", i - 1))
+}
+
+#[test]
+fn a_megabyte_of_lets_compiles_quickly_or_says_it_is_too_large() {
+    let start = std::time::Instant::now();
+    assert!(Pattern::compile(&let_chain("height = a0"), "big.pat").is_ok());
+    let e = error(&let_chain("height = LAST"));
+    assert!(e.message.contains("pattern too large"), "{}", e.message);
+    assert!(start.elapsed().as_secs() < 20, "took {:?}", start.elapsed());
+}

@@ -66,9 +66,9 @@ pub enum Stmt {
     Param {
         name: String,
         name_span: Span,
-        default: f64,
-        min: f64,
-        max: f64,
+        default: f32,
+        min: f32,
+        max: f32,
     },
     Let {
         name: String,

@@ -139,9 +139,9 @@ impl Checker<'_> {
                 self.declare(name, *name_span, Binding::Param(self.params.len()))?;
                 self.params.push(Param {
                     name: name.clone(),
-                    default: *default as f32,
-                    min: *min as f32,
-                    max: *max as f32,
+                    default: *default,
+                    min: *min,
+                    max: *max,
                 });
             }
             Stmt::Let {

@@ -51,6 +51,7 @@ impl<'a> Inputs<'a> {
 /// calls (one per thread) so evaluation never allocates.
 #[derive(Clone, Debug, Default)]
 pub struct Scratch {
+    /// `f64`, not `f32`: see the module comment (t up to 1e7 s, floored mod of large u).
     lanes: Vec<f64>,
 }
 

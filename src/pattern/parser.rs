@@ -131,11 +131,11 @@ impl Parser<'_> {
         self.advance();
         let (name, name_span) = self.name()?;
         self.expect(Tok::Assign, "`=` and the default value")?;
-        let (default, default_span) = self.signed_number()?;
+        let (default, default_span) = self.param_number()?;
         self.expect(Tok::In, "`in MIN..MAX` (the parameter's range)")?;
-        let (min, min_span) = self.signed_number()?;
+        let (min, min_span) = self.param_number()?;
         self.expect(Tok::DotDot, "`..` between the range's ends")?;
-        let (max, _) = self.signed_number()?;
+        let (max, _) = self.param_number()?;
         if min >= max {
             return Err(self.error(min_span, "expected a range MIN..MAX with MIN < MAX"));
         }
@@ -153,6 +153,16 @@ impl Parser<'_> {
             max,
         });
         Ok(())
+    }
+
+    /// A parameter's default or range end; parameters are `f32` for the workbench's controls.
+    fn param_number(&mut self) -> Result<(f32, Span), PatternError> {
+        let (value, span) = self.signed_number()?;
+        let narrow = value as f32;
+        if !narrow.is_finite() {
+            return Err(self.error(span, "expected a number within ±3.4e38"));
+        }
+        Ok((narrow, span))
     }
 
     fn signed_number(&mut self) -> Result<(f64, Span), PatternError> {
@@ -393,6 +403,11 @@ mod tests {
     fn bad_range_and_default_are_errors() {
         assert!(parse_src("param p = 5 in 0..3").is_err());
         assert!(parse_src("param p = 1 in 3..3").is_err());
+        assert!(
+            parse_src("param p = 1 in 1..1.00000001").is_err(),
+            "equal as f32"
+        );
+        assert!(parse_src("param p = 1 in 0..1e39").is_err());
     }
 
     #[test]
@@ -402,7 +417,11 @@ mod tests {
 
     #[test]
     fn deep_nesting_is_an_error_not_a_crash() {
-        let src = format!("height = {}1{}", "(".repeat(100_000), ")".repeat(100_000));
+        let src = format!(
+            "height = {}1{}",
+            "(".repeat(1_000_000),
+            ")".repeat(1_000_000)
+        );
         let e = parse_src(&src).unwrap_err();
         assert!(e.message.contains("too deeply"));
         let chain = format!("height = 1{}", "+1".repeat(1000));
