@@ -35,7 +35,11 @@ pub enum Source {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Program {
     pub sources: Vec<Source>,
+    /// Uniform instructions first (they depend only on params, constants and `t`, so they run
+    /// once per call), then the per-fragment ones.
     pub instrs: Vec<Instr>,
+    /// How many of `instrs` are uniform.
+    pub uniform: usize,
     /// Output slots: 1 for a height, 2 for a slope, 3 for a colour.
     pub outputs: Vec<usize>,
 }
@@ -80,7 +84,7 @@ pub fn compile(checked: &Checked, source: &str, origin: &str) -> Result<Program,
             Value::Color(c) => outputs.extend(c.map(|n| lowering.slot(n))),
         }
     }
-    let program = prune(lowering.sources, lowering.instrs, outputs);
+    let program = hoist_uniform(prune(lowering.sources, lowering.instrs, outputs));
     if program.sources.len() > MAX_SLOTS {
         let message = format!(
             "pattern too large: {} values after simplification (the limit is {MAX_SLOTS})",
@@ -371,8 +375,28 @@ fn prune(sources: Vec<Source>, instrs: Vec<Instr>, outputs: Vec<usize>) -> Progr
     Program {
         sources: kept_sources,
         instrs,
+        uniform: 0,
         outputs: outputs.iter().map(|&o| renumber[o]).collect(),
     }
+}
+
+/// Moves instructions that are the same for every fragment to the front. Order within each
+/// group is kept, so every operand is still computed before it is read.
+fn hoist_uniform(mut program: Program) -> Program {
+    let mut uniform: Vec<bool> = program
+        .sources
+        .iter()
+        .map(|s| !matches!(s, Source::Input(i) if *i != Input::T) && *s != Source::Computed)
+        .collect();
+    for instr in &program.instrs {
+        uniform[instr.dst] = instr.args.iter().all(|&a| uniform[a]);
+    }
+    let (mut front, back): (Vec<Instr>, Vec<Instr>) =
+        program.instrs.into_iter().partition(|i| uniform[i.dst]);
+    program.uniform = front.len();
+    front.extend(back);
+    program.instrs = front;
+    program
 }
 
 #[cfg(test)]
@@ -409,6 +433,14 @@ mod tests {
         let ops: Vec<Op> = p.instrs.iter().map(|i| i.op).collect();
         assert_eq!(ops.iter().filter(|&&o| o == Op::Pow).count(), 1);
         assert_eq!(ops.iter().filter(|&&o| o == Op::Mul).count(), 3);
+    }
+
+    #[test]
+    fn uniform_instructions_are_hoisted() {
+        let p = program("param w = 20 in 1..100\nheight = sin(u * (2 * pi / w)) + cos(t)");
+        assert_eq!(p.uniform, 2); // 2π/w and cos(t)
+        let ops: Vec<Op> = p.instrs.iter().map(|i| i.op).collect();
+        assert_eq!(ops[..2], [Op::Div, Op::Cos]);
     }
 
     #[test]

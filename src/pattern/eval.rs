@@ -7,7 +7,7 @@
 //! accurate to 1e-3. Inputs and outputs stay `f32` for the renderer.
 
 use super::check::Input;
-use super::compile::{Program, Source};
+use super::compile::{Instr, Program, Source};
 use super::dual::{Dual, Scalar};
 use super::ops::{Op, apply};
 
@@ -208,9 +208,18 @@ fn seed<T: Lane>(lanes: &mut [f64], values: &[f32], partials: Seed) {
     }
 }
 
-/// Runs every instruction over the first `n` lanes.
+/// Computes the uniform instructions (same for every fragment) over all lanes; once per call.
+pub(crate) fn run_uniform<T: Lane>(program: &Program, slots: &mut [f64]) {
+    run_instrs::<T>(&program.instrs[..program.uniform], CHUNK, slots);
+}
+
+/// Runs the per-fragment instructions over the first `n` lanes.
 pub(crate) fn run<T: Lane>(program: &Program, n: usize, slots: &mut [f64]) {
-    for instr in &program.instrs {
+    run_instrs::<T>(&program.instrs[program.uniform..], n, slots);
+}
+
+fn run_instrs<T: Lane>(instrs: &[Instr], n: usize, slots: &mut [f64]) {
+    for instr in instrs {
         let (below, rest) = slots.split_at_mut(instr.dst * T::SLOT);
         let out = &mut rest[..T::SLOT];
         let [a, b, c] = instr.args.map(|s| slot::<T>(below, s));
@@ -259,7 +268,6 @@ fn lanes<T: Lane>(
 
 #[cfg(test)]
 mod tests {
-    use super::super::compile::Instr;
     use super::*;
 
     /// slot 0 = u, slot 1 = constant 3, slot 2 = u * 3, slot 3 = sin(slot 2)
@@ -283,6 +291,7 @@ mod tests {
                     args: [2, 2, 2],
                 },
             ],
+            uniform: 0,
             outputs: vec![3],
         }
     }

@@ -228,6 +228,7 @@ impl Pattern {
         self.check_lengths(inputs, len, T::DUAL);
         let slots = scratch.slots::<T>(program.sources.len());
         eval::load_uniforms::<T>(program, |p| self.param_value(p, params), inputs.t, slots);
+        eval::run_uniform::<T>(program, slots);
         let mut non_finite = 0;
         for start in (0..len).step_by(CHUNK) {
             let n = CHUNK.min(len - start);
