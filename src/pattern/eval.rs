@@ -148,63 +148,42 @@ pub(crate) fn load_inputs<T: Lane>(
     n: usize,
     slots: &mut [f64],
 ) {
-    let range = start..start + n;
     for (index, source) in program.sources.iter().enumerate() {
         let Source::Input(input) = *source else {
             continue;
         };
+        let (values, partials) = match input {
+            Input::U => (inputs.u, Seed::Constant(1.0, 0.0)),
+            Input::V => (inputs.v, Seed::Constant(0.0, 1.0)),
+            Input::X => (inputs.x, point::<T>(inputs.x_u, inputs.x_v)),
+            Input::Y => (inputs.y, point::<T>(inputs.y_u, inputs.y_v)),
+            Input::Z => (inputs.z, point::<T>(inputs.z_u, inputs.z_v)),
+            Input::T => continue, // uniform
+        };
         let lanes = slot_mut::<T>(slots, index);
-        let r = range.clone();
-        match input {
-            Input::U => seed::<T>(lanes, &inputs.u[r], Seed::Constant(1.0, 0.0)),
-            Input::V => seed::<T>(lanes, &inputs.v[r], Seed::Constant(0.0, 1.0)),
-            Input::X => seed::<T>(
-                lanes,
-                &inputs.x[r.clone()],
-                point(inputs.x_u, inputs.x_v, r, T::DUAL),
-            ),
-            Input::Y => seed::<T>(
-                lanes,
-                &inputs.y[r.clone()],
-                point(inputs.y_u, inputs.y_v, r, T::DUAL),
-            ),
-            Input::Z => seed::<T>(
-                lanes,
-                &inputs.z[r.clone()],
-                point(inputs.z_u, inputs.z_v, r, T::DUAL),
-            ),
-            Input::T => {}
+        for (i, &x) in values[start..start + n].iter().enumerate() {
+            let (du, dv) = match partials {
+                Seed::Constant(du, dv) => (du, dv),
+                Seed::PerFragment(du, dv) => (f64::from(du[start + i]), f64::from(dv[start + i])),
+            };
+            T::set(lanes, i, T::input(f64::from(x), du, dv));
         }
     }
 }
 
 /// Partials (∂/∂u, ∂/∂v) of an input.
+#[derive(Clone, Copy)]
 enum Seed<'a> {
     Constant(f64, f64),
     PerFragment(&'a [f32], &'a [f32]),
 }
 
-/// The point's partials, read only when derivatives are wanted (the slices may be empty).
-fn point<'a>(
-    du: &'a [f32],
-    dv: &'a [f32],
-    range: std::ops::Range<usize>,
-    wanted: bool,
-) -> Seed<'a> {
-    if wanted {
-        Seed::PerFragment(&du[range.clone()], &dv[range])
+/// The point's partials, read only when derivatives are wanted (else the slices may be empty).
+fn point<'a, T: Lane>(du: &'a [f32], dv: &'a [f32]) -> Seed<'a> {
+    if T::DUAL {
+        Seed::PerFragment(du, dv)
     } else {
         Seed::Constant(0.0, 0.0)
-    }
-}
-
-fn seed<T: Lane>(lanes: &mut [f64], values: &[f32], partials: Seed) {
-    for (i, &x) in values.iter().enumerate() {
-        let (du, dv) = match partials {
-            Seed::Constant(du, dv) => (du, dv),
-            Seed::PerFragment(du, dv) => (f64::from(du[i]), f64::from(dv[i])),
-        };
-        T::set(lanes, i, T::input(f64::from(x), du, dv));
     }
 }
 

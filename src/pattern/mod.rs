@@ -159,13 +159,13 @@ impl Pattern {
     ) -> usize {
         match self.output() {
             OutputKind::Height => {
-                self.evaluate::<Dual>(inputs, params, scratch, out.len(), |s, sl| {
-                    output::height_gradient(&self.inner.program, sl, &mut out[s..])
+                self.evaluate::<Dual>(inputs, params, scratch, out.len(), |start, slots| {
+                    output::height_gradient(&self.inner.program, slots, &mut out[start..])
                 })
             }
             OutputKind::Slope => {
-                self.evaluate::<f64>(inputs, params, scratch, out.len(), |s, sl| {
-                    output::slope(&self.inner.program, sl, &mut out[s..])
+                self.evaluate::<f64>(inputs, params, scratch, out.len(), |start, slots| {
+                    output::slope(&self.inner.program, slots, &mut out[start..])
                 })
             }
             OutputKind::Color => panic!("eval_bump called on a colour pattern"),
@@ -188,8 +188,8 @@ impl Pattern {
             OutputKind::Height,
             "eval_height needs a height pattern"
         );
-        self.evaluate::<f64>(inputs, params, scratch, out.len(), |s, sl| {
-            output::height(&self.inner.program, sl, &mut out[s..])
+        self.evaluate::<f64>(inputs, params, scratch, out.len(), |start, slots| {
+            output::height(&self.inner.program, slots, &mut out[start..])
         })
     }
 
@@ -209,8 +209,8 @@ impl Pattern {
             OutputKind::Color,
             "eval_color needs a colour pattern"
         );
-        self.evaluate::<f64>(inputs, params, scratch, out.len(), |s, sl| {
-            output::color(&self.inner.program, sl, &mut out[s..])
+        self.evaluate::<f64>(inputs, params, scratch, out.len(), |start, slots| {
+            output::color(&self.inner.program, slots, &mut out[start..])
         })
     }
 
