@@ -46,20 +46,27 @@ fn tile() -> (Vec<f32>, Vec<f32>) {
         .unzip()
 }
 
-/// Median, min and max fragments/s of `work` (one call = one batch).
-fn measure(mut work: impl FnMut()) -> [f64; 3] {
-    work(); // warm up caches and scratch
-    let mut rates: Vec<f64> = (0..RUNS)
-        .map(|_| {
-            let start = Instant::now();
-            for _ in 0..BATCHES_PER_RUN {
-                work();
-            }
-            (BATCH * BATCHES_PER_RUN) as f64 / start.elapsed().as_secs_f64()
-        })
-        .collect();
-    rates.sort_by(f64::total_cmp);
-    [rates[RUNS / 2], rates[0], rates[RUNS - 1]]
+/// Median, min and max fragments/s of `interpreted` and `native` (one call = one batch).
+/// Runs alternate between the two, so load from other processes hits both alike.
+fn measure(mut interpreted: impl FnMut(), mut native: impl FnMut()) -> [[f64; 3]; 2] {
+    let mut rates = [Vec::new(), Vec::new()];
+    for _ in 0..RUNS {
+        rates[0].push(rate(&mut interpreted));
+        rates[1].push(rate(&mut native));
+    }
+    rates.map(|mut r| {
+        r.sort_by(f64::total_cmp);
+        [r[RUNS / 2], r[0], r[RUNS - 1]]
+    })
+}
+
+fn rate(work: &mut impl FnMut()) -> f64 {
+    work(); // warm caches and scratch
+    let start = Instant::now();
+    for _ in 0..BATCHES_PER_RUN {
+        work();
+    }
+    (BATCH * BATCHES_PER_RUN) as f64 / start.elapsed().as_secs_f64()
 }
 
 fn row(pattern: &str, mode: &str, interpreted: [f64; 3], native: [f64; 3]) {
@@ -79,11 +86,26 @@ fn row(pattern: &str, mode: &str, interpreted: [f64; 3], native: [f64; 3]) {
     );
 }
 
+/// The two sides must compute the same pattern, or the comparison means nothing.
+fn assert_same(name: &str, interpreted: Vec<f32>, native: Vec<f32>) {
+    let worst = interpreted
+        .iter()
+        .zip(&native)
+        .map(|(a, b)| (a - b).abs())
+        .fold(0.0f32, f32::max);
+    assert!(
+        worst < 1e-3,
+        "{name}: interpreted and native differ by {worst}"
+    );
+}
+
 fn main() {
     let (u, v) = tile();
     let inputs = Inputs::uv(&u, &v, 0.0);
     let mut samples = vec![BumpSample::default(); BATCH];
+    let mut native_samples = samples.clone();
     let mut heights = vec![0.0f32; BATCH];
+    let mut native_heights = heights.clone();
     println!(
         "{BATCH} fragments per batch, {BATCHES_PER_RUN} batches per run, median of {RUNS} runs"
     );
@@ -95,23 +117,30 @@ fn main() {
         let source = builtin(case.name).expect("shipped pattern");
         let pattern = Pattern::compile(source, case.name).expect("shipped pattern compiles");
         let mut scratch = pattern.scratch();
-        let interpreted = measure(|| {
-            pattern.eval_bump(&inputs, &[], &mut scratch, &mut samples);
-            black_box(&samples);
-        });
-        let hand_written = measure(|| {
-            native::eval_bump(case.gradient, &u, &v, &mut samples);
-            black_box(&samples);
-        });
+        let [interpreted, hand_written] = measure(
+            || {
+                pattern.eval_bump(&inputs, &[], &mut scratch, &mut samples);
+                black_box(&samples);
+            },
+            || {
+                native::eval_bump(case.gradient, &u, &v, &mut native_samples);
+                black_box(&native_samples);
+            },
+        );
         row(case.name, "gradient", interpreted, hand_written);
-        let interpreted = measure(|| {
-            pattern.eval_height(&inputs, &[], &mut scratch, &mut heights);
-            black_box(&heights);
-        });
-        let hand_written = measure(|| {
-            native::eval_height(case.height, &u, &v, &mut heights);
-            black_box(&heights);
-        });
+        let flat = |s: &[BumpSample]| s.iter().flat_map(|s| [s.height, s.du, s.dv]).collect();
+        assert_same(case.name, flat(&samples), flat(&native_samples));
+        let [interpreted, hand_written] = measure(
+            || {
+                pattern.eval_height(&inputs, &[], &mut scratch, &mut heights);
+                black_box(&heights);
+            },
+            || {
+                native::eval_height(case.height, &u, &v, &mut native_heights);
+                black_box(&native_heights);
+            },
+        );
         row(case.name, "value", interpreted, hand_written);
+        assert_same(case.name, heights.clone(), native_heights.clone());
     }
 }
