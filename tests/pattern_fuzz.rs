@@ -11,15 +11,62 @@ const TOKENS: &[&str] = &[
     "length", "#", "\n", "\u{1b}", "é", "true",
 ];
 
-fn token_soup() -> impl Strategy<Value = String> {
-    prop::collection::vec(prop::sample::select(TOKENS), 0..60).prop_map(|t| t.join(" "))
+fn tokens(max: usize) -> impl Strategy<Value = String> {
+    prop::collection::vec(prop::sample::select(TOKENS), 0..max).prop_map(|t| t.join(" "))
 }
 
-/// Plausible programs: `let`s and an output built from the grammar's pieces.
+fn token_soup() -> impl Strategy<Value = String> {
+    tokens(60)
+}
+
+const OPERATORS: &[&str] = &["+", "-", "*", "/", "^", "%"];
+const OPERANDS: &[&str] = &[
+    "u",
+    "v",
+    "x",
+    "y",
+    "z",
+    "t",
+    "pi",
+    "0",
+    "1",
+    "2.5",
+    "1e9",
+    "-3",
+    "sin(u)",
+    "sqrt(v - 100)",
+    "log(x)",
+    "noise(u, v)",
+    "noise(x, y, z)",
+    "(u - 200)",
+    "atan2(v, u)",
+    "floor(u / 7)",
+    "smoothstep(0, 1, v)",
+    "if u < v then 1 / x else t",
+];
+
+/// A few operator-operand pairs and, now and then, a stray token.
+fn splice() -> impl Strategy<Value = String> {
+    let term = (
+        prop::sample::select(OPERATORS),
+        prop::sample::select(OPERANDS),
+    );
+    (prop::collection::vec(term, 0..5), tokens(2)).prop_map(|(terms, stray)| {
+        let terms: Vec<String> = terms.iter().map(|(op, x)| format!("{op} {x}")).collect();
+        format!("{} {stray}", terms.join(" "))
+    })
+}
+
+/// Arithmetic on the inputs with stray tokens, so that many programs (about a quarter) compile and get
+/// evaluated.
 fn near_valid() -> impl Strategy<Value = String> {
-    (token_soup(), token_soup(), 0..3usize).prop_map(|(a, b, kind)| {
-        let output = ["height = ", "slope = (u, ", "color = rgb(1, "][kind];
-        format!("let a = u {a}\n{output}a {b}")
+    (splice(), splice(), 0..3usize).prop_map(|(a, b, kind)| {
+        let (open, close) = [
+            ("height = ", ""),
+            ("slope = (u, ", ")"),
+            ("color = rgb(1, ", ", 0)"),
+        ][kind];
+        format!("let a = u {a}\n{open}a {b}{close}")
     })
 }
 
