@@ -266,6 +266,34 @@ impl Pattern {
     }
 }
 
+impl std::fmt::Display for Summary {
+    /// One line for `bumpwork check`, e.g.
+    /// `height pattern, 14 instructions; params: period = 30 in 4..300; animated`.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let kind = match self.output {
+            OutputKind::Height => "height",
+            OutputKind::Slope => "slope",
+            OutputKind::Color => "colour",
+        };
+        write!(f, "{kind} pattern, {} instructions", self.instructions)?;
+        if !self.params.is_empty() {
+            let params: Vec<String> = self
+                .params
+                .iter()
+                .map(|p| format!("{} = {} in {}..{}", p.name, p.default, p.min, p.max))
+                .collect();
+            write!(f, "; params: {}", params.join(", "))?;
+        }
+        if self.uses_point {
+            write!(f, "; reads the point x, y, z")?;
+        }
+        if self.uses_time {
+            write!(f, "; animated")?;
+        }
+        Ok(())
+    }
+}
+
 /// Validates a pattern file (for `bumpwork check`).
 pub fn check_file(path: &Path) -> Result<Summary, PatternError> {
     Pattern::load(path).map(|p| p.summary())
@@ -345,5 +373,9 @@ mod tests {
         assert_eq!(s.output, OutputKind::Slope);
         assert!(s.uses_time && s.uses_point);
         assert_eq!(s.params.len(), 1);
+        assert_eq!(
+            s.to_string(),
+            "slope pattern, 2 instructions; params: a = 1 in 0..2; reads the point x, y, z; animated"
+        );
     }
 }
