@@ -45,13 +45,14 @@ impl PatternError {
         let line_start = source[..at].rfind('\n').map_or(0, |i| i + 1);
         let line_end = source[at..].find('\n').map_or(source.len(), |i| at + i);
         let before = &source[line_start..at];
+        let (shown, caret_offset) = snippet(before, &source[at..line_end]);
         PatternError {
             origin: escape_for_terminal(origin),
             line: source[..line_start].matches('\n').count() + 1,
             column: before.chars().count() + 1,
             message: escape_for_terminal(&message.into()),
-            source_line: escape_for_terminal(source[line_start..line_end].trim_end_matches('\r')),
-            caret_offset: escape_for_terminal(before).chars().count(),
+            source_line: shown,
+            caret_offset,
         }
     }
 
@@ -87,6 +88,29 @@ impl fmt::Display for PatternError {
 }
 
 impl std::error::Error for PatternError {}
+
+/// Characters of context shown on each side of the error in a long line.
+const CONTEXT: usize = 60;
+
+/// The escaped source line around the error (long lines are cut to `CONTEXT` characters each
+/// side, marked with `…`) and the caret's display column in it.
+fn snippet(before: &str, after: &str) -> (String, usize) {
+    let before: Vec<char> = before.chars().collect();
+    let after = after.trim_end_matches('\r');
+    let mut left: String = before[before.len().saturating_sub(CONTEXT)..]
+        .iter()
+        .collect();
+    if before.len() > CONTEXT {
+        left.insert(0, '…');
+    }
+    let mut right: String = after.chars().take(CONTEXT).collect();
+    if after.chars().nth(CONTEXT).is_some() {
+        right.push('…');
+    }
+    let left = escape_for_terminal(&left);
+    let caret = left.chars().count();
+    (left + &escape_for_terminal(&right), caret)
+}
 
 fn floor_char_boundary(s: &str, mut i: usize) -> usize {
     while !s.is_char_boundary(i) {
@@ -135,6 +159,18 @@ mod tests {
             text.ends_with("2 | height = b + 1\n  |          ^"),
             "{text}"
         );
+    }
+
+    #[test]
+    fn long_lines_are_cut_around_the_error() {
+        let source = format!("height = {}u{}", "(".repeat(5000), ")".repeat(5000));
+        let e = PatternError::at(&source, "f", 5009, "here");
+        assert_eq!(e.column, 5010);
+        let text = e.to_string();
+        assert!(text.len() < 400, "{text}");
+        let lines: Vec<&str> = text.lines().collect();
+        let caret = lines[3].chars().position(|c| c == '^').unwrap();
+        assert_eq!(lines[2].chars().nth(caret), Some('u'));
     }
 
     #[test]
