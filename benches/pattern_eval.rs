@@ -1,0 +1,146 @@
+//! Fragments per second of the pattern interpreter against the same patterns hand-written in
+//! Rust, over the same SoA batches, with derivatives (height + gradient) and without (height
+//! only). Prints medians over several runs with their min..max spread.
+//!
+//! `cargo bench --bench pattern_eval`
+
+use std::hint::black_box;
+use std::time::Instant;
+
+use bumpwork::pattern::{BumpSample, Inputs, Pattern, builtin, native};
+
+const BATCH: usize = 4096;
+const BATCHES_PER_RUN: usize = 128;
+const RUNS: usize = 9;
+
+struct Case {
+    name: &'static str,
+    gradient: fn(f64, f64) -> (f64, f64, f64),
+    height: fn(f64, f64) -> f64,
+}
+
+const CASES: [Case; 3] = [
+    Case {
+        name: "dimples",
+        gradient: native::dimples,
+        height: native::dimples_height,
+    },
+    Case {
+        name: "waffle",
+        gradient: native::waffle,
+        height: native::waffle_height,
+    },
+    Case {
+        name: "ripples",
+        gradient: native::ripples,
+        height: native::ripples_height,
+    },
+];
+
+/// A 64×64 tile of fragments spread over the seed's 400×400 plane.
+fn tile() -> (Vec<f32>, Vec<f32>) {
+    let side = (BATCH as f64).sqrt() as usize;
+    let coord = |i: usize| (i as f32 + 0.37) * 400.0 / side as f32;
+    (0..BATCH)
+        .map(|i| (coord(i % side), coord(i / side)))
+        .unzip()
+}
+
+/// Median, min and max fragments/s of `interpreted` and `native` (one call = one batch).
+/// Runs alternate between the two, so load from other processes hits both alike.
+fn measure(mut interpreted: impl FnMut(), mut native: impl FnMut()) -> [[f64; 3]; 2] {
+    let mut rates = [Vec::new(), Vec::new()];
+    for _ in 0..RUNS {
+        rates[0].push(rate(&mut interpreted));
+        rates[1].push(rate(&mut native));
+    }
+    rates.map(|mut r| {
+        r.sort_by(f64::total_cmp);
+        [r[RUNS / 2], r[0], r[RUNS - 1]]
+    })
+}
+
+fn rate(work: &mut impl FnMut()) -> f64 {
+    work(); // warm caches and scratch
+    let start = Instant::now();
+    for _ in 0..BATCHES_PER_RUN {
+        work();
+    }
+    (BATCH * BATCHES_PER_RUN) as f64 / start.elapsed().as_secs_f64()
+}
+
+fn row(pattern: &str, mode: &str, interpreted: [f64; 3], native: [f64; 3]) {
+    let m = |r: [f64; 3]| {
+        format!(
+            "{:>7.1} ({:>5.1}..{:>5.1})",
+            r[0] / 1e6,
+            r[1] / 1e6,
+            r[2] / 1e6
+        )
+    };
+    println!(
+        "{pattern:<9} {mode:<9} {:>26} {:>26} {:>8.2}x",
+        m(interpreted),
+        m(native),
+        native[0] / interpreted[0]
+    );
+}
+
+/// The two sides must compute the same pattern, or the comparison means nothing.
+fn assert_same(name: &str, interpreted: Vec<f32>, native: Vec<f32>) {
+    let worst = interpreted
+        .iter()
+        .zip(&native)
+        .map(|(a, b)| (a - b).abs())
+        .fold(0.0f32, f32::max);
+    assert!(
+        worst < 1e-3,
+        "{name}: interpreted and native differ by {worst}"
+    );
+}
+
+fn main() {
+    let (u, v) = tile();
+    let inputs = Inputs::uv(&u, &v, 0.0);
+    let mut samples = vec![BumpSample::default(); BATCH];
+    let mut native_samples = samples.clone();
+    let mut heights = vec![0.0f32; BATCH];
+    let mut native_heights = heights.clone();
+    println!(
+        "{BATCH} fragments per batch, {BATCHES_PER_RUN} batches per run, median of {RUNS} runs"
+    );
+    println!(
+        "{:<9} {:<9} {:>26} {:>26} {:>9}",
+        "pattern", "mode", "interpreted Mfrag/s", "native Mfrag/s", "ratio"
+    );
+    for case in CASES {
+        let source = builtin(case.name).expect("shipped pattern");
+        let pattern = Pattern::compile(source, case.name).expect("shipped pattern compiles");
+        let mut scratch = pattern.scratch();
+        let [interpreted, hand_written] = measure(
+            || {
+                pattern.eval_bump(&inputs, &[], &mut scratch, &mut samples);
+                black_box(&samples);
+            },
+            || {
+                native::eval_bump(case.gradient, &u, &v, &mut native_samples);
+                black_box(&native_samples);
+            },
+        );
+        row(case.name, "gradient", interpreted, hand_written);
+        let flat = |s: &[BumpSample]| s.iter().flat_map(|s| [s.height, s.du, s.dv]).collect();
+        assert_same(case.name, flat(&samples), flat(&native_samples));
+        let [interpreted, hand_written] = measure(
+            || {
+                pattern.eval_height(&inputs, &[], &mut scratch, &mut heights);
+                black_box(&heights);
+            },
+            || {
+                native::eval_height(case.height, &u, &v, &mut native_heights);
+                black_box(&native_heights);
+            },
+        );
+        row(case.name, "value", interpreted, hand_written);
+        assert_same(case.name, heights.clone(), native_heights.clone());
+    }
+}

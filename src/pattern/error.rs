@@ -1,0 +1,188 @@
+//! `PatternError`: every problem in a pattern file, with its place and a rustc-like snippet.
+
+use std::fmt;
+
+/// A byte range in the source text.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub struct Span {
+    pub start: usize,
+    pub end: usize,
+}
+
+impl Span {
+    pub fn new(start: usize, end: usize) -> Span {
+        Span { start, end }
+    }
+
+    /// The smallest span covering both.
+    pub fn to(self, other: Span) -> Span {
+        Span::new(self.start.min(other.start), self.end.max(other.end))
+    }
+}
+
+/// An error in a pattern file. Displays as
+/// `file:line:column: error: message`, then the source line and a caret under the spot.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct PatternError {
+    /// File name (or other origin) as given to `compile`, escaped for the terminal.
+    pub origin: String,
+    /// 1-based line; 0 when the error is not about a place in the text (e.g. the file cannot be read).
+    pub line: usize,
+    /// 1-based column, counted in characters.
+    pub column: usize,
+    /// What was expected or what is wrong, escaped for the terminal.
+    pub message: String,
+    /// The offending source line, escaped for the terminal (empty when `line` is 0).
+    source_line: String,
+    /// Display columns before the caret in `source_line` (escapes widen the text).
+    caret_offset: usize,
+}
+
+impl PatternError {
+    /// An error at byte offset `at` of `source`.
+    pub fn at(source: &str, origin: &str, at: usize, message: impl Into<String>) -> PatternError {
+        let at = floor_char_boundary(source, at.min(source.len()));
+        let line_start = source[..at].rfind('\n').map_or(0, |i| i + 1);
+        let line_end = source[at..].find('\n').map_or(source.len(), |i| at + i);
+        let before = &source[line_start..at];
+        let (shown, caret_offset) = snippet(before, &source[at..line_end]);
+        PatternError {
+            origin: escape_for_terminal(origin),
+            line: source[..line_start].matches('\n').count() + 1,
+            column: before.chars().count() + 1,
+            message: escape_for_terminal(&message.into()),
+            source_line: shown,
+            caret_offset,
+        }
+    }
+
+    /// An error not tied to a place in the text (unreadable file).
+    pub fn whole_file(origin: &str, message: impl Into<String>) -> PatternError {
+        PatternError {
+            origin: escape_for_terminal(origin),
+            line: 0,
+            column: 0,
+            message: escape_for_terminal(&message.into()),
+            source_line: String::new(),
+            caret_offset: 0,
+        }
+    }
+}
+
+impl fmt::Display for PatternError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if self.line == 0 {
+            return write!(f, "{}: error: {}", self.origin, self.message);
+        }
+        let number = self.line.to_string();
+        let gutter = " ".repeat(number.len());
+        writeln!(
+            f,
+            "{}:{}:{}: error: {}",
+            self.origin, self.line, self.column, self.message
+        )?;
+        writeln!(f, "{gutter} |")?;
+        writeln!(f, "{number} | {}", self.source_line)?;
+        write!(f, "{gutter} | {}^", " ".repeat(self.caret_offset))
+    }
+}
+
+impl std::error::Error for PatternError {}
+
+/// Characters of context shown on each side of the error in a long line.
+const CONTEXT: usize = 60;
+
+/// The escaped source line around the error (long lines are cut to `CONTEXT` characters each
+/// side, marked with `…`) and the caret's display column in it.
+fn snippet(before: &str, after: &str) -> (String, usize) {
+    let before: Vec<char> = before.chars().collect();
+    let after = after.trim_end_matches('\r');
+    let mut left: String = before[before.len().saturating_sub(CONTEXT)..]
+        .iter()
+        .collect();
+    if before.len() > CONTEXT {
+        left.insert(0, '…');
+    }
+    let mut right: String = after.chars().take(CONTEXT).collect();
+    if after.chars().nth(CONTEXT).is_some() {
+        right.push('…');
+    }
+    let left = escape_for_terminal(&left);
+    let caret = left.chars().count();
+    (left + &escape_for_terminal(&right), caret)
+}
+
+fn floor_char_boundary(s: &str, mut i: usize) -> usize {
+    while !s.is_char_boundary(i) {
+        i -= 1;
+    }
+    i
+}
+
+/// Escapes control characters (and bidi overrides, which reorder what a terminal shows) so that
+/// text echoed from a pattern file can never drive the terminal. Tabs become one space so the
+/// caret stays aligned.
+pub fn escape_for_terminal(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        match c {
+            '\t' => out.push(' '),
+            c if c.is_control() || is_bidi_control(c) => {
+                out.push_str(&c.escape_unicode().to_string());
+            }
+            c => out.push(c),
+        }
+    }
+    out
+}
+
+fn is_bidi_control(c: char) -> bool {
+    matches!(c, '\u{200e}' | '\u{200f}' | '\u{202a}'..='\u{202e}' | '\u{2066}'..='\u{2069}')
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn displays_place_line_and_caret() {
+        let e = PatternError::at(
+            "let a = 1\nheight = b + 1\n",
+            "p.pat",
+            19,
+            "unknown name `b`",
+        );
+        assert_eq!((e.line, e.column), (2, 10));
+        let text = e.to_string();
+        assert!(text.starts_with("p.pat:2:10: error: unknown name `b`\n"));
+        assert!(
+            text.ends_with("2 | height = b + 1\n  |          ^"),
+            "{text}"
+        );
+    }
+
+    #[test]
+    fn long_lines_are_cut_around_the_error() {
+        let source = format!("height = {}u{}", "(".repeat(5000), ")".repeat(5000));
+        let e = PatternError::at(&source, "f", 5009, "here");
+        assert_eq!(e.column, 5010);
+        let text = e.to_string();
+        assert!(text.len() < 400, "{text}");
+        let lines: Vec<&str> = text.lines().collect();
+        let caret = lines[3].chars().position(|c| c == '^').unwrap();
+        assert_eq!(lines[2].chars().nth(caret), Some('u'));
+    }
+
+    #[test]
+    fn control_characters_are_escaped_and_caret_follows() {
+        let e = PatternError::at("a\u{1b}[31m b", "x\u{7}.pat", 7, "oops \u{1b}");
+        let text = e.to_string();
+        assert!(
+            !text.chars().any(|c| c.is_control() && c != '\n'),
+            "{text:?}"
+        );
+        let lines: Vec<&str> = text.lines().collect();
+        let caret = lines[3].find('^').unwrap();
+        assert_eq!(&lines[2][caret..caret + 1], "b");
+    }
+}

@@ -1,0 +1,267 @@
+//! The operations of a compiled program and their meaning, defined once for plain values and
+//! duals. At kinks (floor, step, abs at 0, comparisons, min/max ties) the derivative is the
+//! one-sided or zero one, as usual in automatic differentiation.
+
+use super::dual::Scalar;
+use super::noise::{noise2, noise3};
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Op {
+    // one operand
+    Neg,
+    Not,
+    Sin,
+    Cos,
+    Tan,
+    Asin,
+    Acos,
+    Atan,
+    Sqrt,
+    Abs,
+    Sign,
+    Floor,
+    Ceil,
+    Fract,
+    Exp,
+    Log,
+    // two operands
+    Add,
+    Sub,
+    Mul,
+    Div,
+    Pow,
+    /// Floored modulo: `a - b·floor(a/b)`, continuous across 0 (unlike C's `%`).
+    Mod,
+    Min,
+    Max,
+    Atan2,
+    Hypot,
+    Step,
+    Lt,
+    Le,
+    Gt,
+    Ge,
+    Eq,
+    Ne,
+    And,
+    Or,
+    Noise2,
+    // three operands
+    /// `if a then b else c`; both branches are evaluated (branch-free batches).
+    Select,
+    Clamp,
+    Mix,
+    Smoothstep,
+    Hypot3,
+    Noise3,
+}
+
+fn truth(b: bool) -> f64 {
+    if b { 1.0 } else { 0.0 }
+}
+
+/// The result of `op` on `a`, `b`, `c` (operands past the op's arity are ignored).
+#[inline(always)]
+pub fn apply<T: Scalar>(op: Op, a: T, b: T, c: T) -> T {
+    let x = a.value();
+    match op {
+        Op::Neg => T::chain1(-x, a, || -1.0),
+        Op::Not => T::constant(truth(x == 0.0)),
+        Op::Sin => T::chain1(x.sin(), a, || x.cos()),
+        Op::Cos => T::chain1(x.cos(), a, || -x.sin()),
+        Op::Tan => T::chain1(x.tan(), a, || 1.0 / (x.cos() * x.cos())),
+        Op::Asin => T::chain1(x.asin(), a, || 1.0 / (1.0 - x * x).sqrt()),
+        Op::Acos => T::chain1(x.acos(), a, || -1.0 / (1.0 - x * x).sqrt()),
+        Op::Atan => T::chain1(x.atan(), a, || 1.0 / (1.0 + x * x)),
+        Op::Sqrt => {
+            let r = x.sqrt();
+            T::chain1(r, a, || 0.5 / r)
+        }
+        Op::Abs => T::chain1(x.abs(), a, || sign(x)),
+        Op::Sign => T::constant(sign(x)),
+        Op::Floor => T::constant(x.floor()),
+        Op::Ceil => T::constant(x.ceil()),
+        Op::Fract => T::chain1(x - x.floor(), a, || 1.0),
+        Op::Exp => {
+            let r = x.exp();
+            T::chain1(r, a, || r)
+        }
+        Op::Log => T::chain1(x.ln(), a, || 1.0 / x),
+        _ => apply_binary(op, a, b, c),
+    }
+}
+
+fn sign(x: f64) -> f64 {
+    if x > 0.0 {
+        1.0
+    } else if x < 0.0 {
+        -1.0
+    } else {
+        0.0
+    }
+}
+
+#[inline(always)]
+fn apply_binary<T: Scalar>(op: Op, a: T, b: T, c: T) -> T {
+    let (x, y) = (a.value(), b.value());
+    match op {
+        // Arithmetic partials are non-finite only where the value is too, so no 0·∞ guard.
+        Op::Add => T::arith2(x + y, a, b, 1.0, 1.0),
+        Op::Sub => T::arith2(x - y, a, b, 1.0, -1.0),
+        Op::Mul => T::arith2(x * y, a, b, y, x),
+        Op::Div => {
+            let q = x / y;
+            T::arith2(q, a, b, 1.0 / y, -q / y)
+        }
+        Op::Pow => {
+            let r = x.powf(y);
+            // x^y has no real slope in y for x <= 0; take 0 there.
+            T::chain2(r, a, b, || {
+                (y * x.powf(y - 1.0), if x > 0.0 { r * x.ln() } else { 0.0 })
+            })
+        }
+        Op::Mod => {
+            let q = (x / y).floor();
+            T::chain2(x - y * q, a, b, || (1.0, -q))
+        }
+        Op::Min => pick(x <= y, a, b),
+        Op::Max => pick(x >= y, a, b),
+        Op::Atan2 => T::chain2(y_atan2(x, y), a, b, || {
+            let r2 = x * x + y * y;
+            if r2 == 0.0 {
+                (0.0, 0.0)
+            } else {
+                (y / r2, -x / r2)
+            }
+        }),
+        Op::Hypot => {
+            let h = x.hypot(y);
+            T::chain2(
+                h,
+                a,
+                b,
+                || if h == 0.0 { (0.0, 0.0) } else { (x / h, y / h) },
+            )
+        }
+        Op::Step => T::constant(truth(y >= x)),
+        Op::Lt => T::constant(truth(x < y)),
+        Op::Le => T::constant(truth(x <= y)),
+        Op::Gt => T::constant(truth(x > y)),
+        Op::Ge => T::constant(truth(x >= y)),
+        Op::Eq => T::constant(truth(x == y)),
+        Op::Ne => T::constant(truth(x != y)),
+        Op::And => T::constant(truth(x != 0.0 && y != 0.0)),
+        Op::Or => T::constant(truth(x != 0.0 || y != 0.0)),
+        Op::Noise2 => {
+            let (n, gx, gy) = noise2(x, y);
+            T::chain2(n, a, b, || (gx, gy))
+        }
+        _ => apply_ternary(op, a, b, c),
+    }
+}
+
+/// atan2 with the language's argument order `atan2(y, x)`.
+fn y_atan2(y: f64, x: f64) -> f64 {
+    y.atan2(x)
+}
+
+#[inline(always)]
+fn pick<T: Scalar>(first: bool, a: T, b: T) -> T {
+    if first { a } else { b }
+}
+
+#[inline(always)]
+fn apply_ternary<T: Scalar>(op: Op, a: T, b: T, c: T) -> T {
+    let (x, y, z) = (a.value(), b.value(), c.value());
+    match op {
+        Op::Select => pick(x != 0.0, b, c),
+        Op::Clamp => {
+            if x < y {
+                b
+            } else if x > z {
+                c
+            } else {
+                a
+            }
+        }
+        Op::Mix => T::chain3(x + (y - x) * z, a, b, c, || (1.0 - z, z, y - x)),
+        Op::Smoothstep => smoothstep(a, b, c),
+        Op::Hypot3 => {
+            let h = (x * x + y * y + z * z).sqrt();
+            T::chain3(h, a, b, c, || {
+                if h == 0.0 {
+                    (0.0, 0.0, 0.0)
+                } else {
+                    (x / h, y / h, z / h)
+                }
+            })
+        }
+        Op::Noise3 => {
+            let (n, g) = noise3(x, y, z);
+            T::chain3(n, a, b, c, || (g[0], g[1], g[2]))
+        }
+        _ => unreachable!("{op:?} is not a ternary op"),
+    }
+}
+
+/// GLSL `smoothstep(e0, e1, x)`, with its partials in all three arguments.
+fn smoothstep<T: Scalar>(e0: T, e1: T, x: T) -> T {
+    let (a, b, v) = (e0.value(), e1.value(), x.value());
+    let width = b - a;
+    let s = ((v - a) / width).clamp(0.0, 1.0);
+    T::chain3(s * s * (3.0 - 2.0 * s), e0, e1, x, || {
+        if s <= 0.0 || s >= 1.0 {
+            return (0.0, 0.0, 0.0);
+        }
+        let slope = 6.0 * s * (1.0 - s);
+        let w2 = width * width;
+        (slope * (v - b) / w2, -slope * (v - a) / w2, slope / width)
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::dual::Dual;
+    use super::*;
+
+    fn d(x: f64) -> Dual {
+        Dual::input(x, 1.0, 0.0)
+    }
+
+    fn c(x: f64) -> Dual {
+        Dual::constant(x)
+    }
+
+    #[test]
+    fn floored_mod_is_continuous_across_zero() {
+        let m = |x: f64| apply::<f64>(Op::Mod, x, 50.0, 0.0);
+        assert_eq!(m(-10.0), 40.0);
+        assert_eq!(m(60.0), 10.0);
+        assert_eq!(apply(Op::Mod, d(-10.0), c(50.0), c(0.0)).du, 1.0);
+    }
+
+    #[test]
+    fn derivatives_of_unary_functions() {
+        let r = apply(Op::Sin, d(0.3), c(0.0), c(0.0));
+        assert!((r.du - 0.3f64.cos()).abs() < 1e-15);
+        let r = apply(Op::Log, d(2.0), c(0.0), c(0.0));
+        assert_eq!(r.du, 0.5);
+        assert_eq!(apply(Op::Floor, d(2.5), c(0.0), c(0.0)).du, 0.0);
+    }
+
+    #[test]
+    fn smoothstep_partials_match_finite_differences() {
+        let h = 1e-6;
+        let f = |e0: f64, e1: f64, x: f64| apply::<f64>(Op::Smoothstep, e0, e1, x);
+        let (e0, e1, x) = (1.0, 3.0, 1.7);
+        let r = smoothstep(Dual::input(e0, 1.0, 0.0), c(e1), Dual::input(x, 0.0, 1.0));
+        assert!((r.du - (f(e0 + h, e1, x) - f(e0 - h, e1, x)) / (2.0 * h)).abs() < 1e-6);
+        assert!((r.dv - (f(e0, e1, x + h) - f(e0, e1, x - h)) / (2.0 * h)).abs() < 1e-6);
+    }
+
+    #[test]
+    fn select_takes_the_chosen_branch_with_its_derivative() {
+        let r = apply(Op::Select, c(1.0), d(2.0), c(f64::NAN));
+        assert_eq!((r.value, r.du), (2.0, 1.0));
+    }
+}

@@ -1,0 +1,92 @@
+//! Output stage: copies a chunk's output slots to the caller's buffer, making non-finite
+//! fragments flat (height and gradient 0, colour black) and counting them.
+
+use super::compile::Program;
+use super::dual::Dual;
+use super::eval::{CHUNK, Lane, slot};
+
+/// A bump sample: height B and its gradient (Bu, Bv) = (∂B/∂u, ∂B/∂v). Slope patterns give the
+/// gradient directly and report height 0.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct BumpSample {
+    pub height: f32,
+    pub du: f32,
+    pub dv: f32,
+}
+
+fn lanes(slots: &[f64], index: usize, n: usize) -> &[f64] {
+    &slot::<f64>(slots, index)[..n]
+}
+
+fn finite<const N: usize>(values: [f32; N]) -> bool {
+    values.iter().all(|v| v.is_finite())
+}
+
+pub fn height_gradient(program: &Program, slots: &[f64], out: &mut [BumpSample]) -> usize {
+    let n = out.len().min(CHUNK);
+    let lanes = slot::<Dual>(slots, program.outputs[0]);
+    let mut bad = 0;
+    for (i, o) in out.iter_mut().take(n).enumerate() {
+        let d = Dual::get(lanes, i);
+        let sample = [d.value as f32, d.du as f32, d.dv as f32];
+        bad += usize::from(!finite(sample));
+        *o = if finite(sample) {
+            BumpSample {
+                height: sample[0],
+                du: sample[1],
+                dv: sample[2],
+            }
+        } else {
+            BumpSample::default()
+        };
+    }
+    bad
+}
+
+pub fn slope(program: &Program, slots: &[f64], out: &mut [BumpSample]) -> usize {
+    let n = out.len().min(CHUNK);
+    let bu = lanes(slots, program.outputs[0], n);
+    let bv = lanes(slots, program.outputs[1], n);
+    let mut bad = 0;
+    for ((o, &bu), &bv) in out.iter_mut().zip(bu).zip(bv) {
+        let slope = [bu as f32, bv as f32];
+        bad += usize::from(!finite(slope));
+        *o = if finite(slope) {
+            BumpSample {
+                height: 0.0,
+                du: slope[0],
+                dv: slope[1],
+            }
+        } else {
+            BumpSample::default()
+        };
+    }
+    bad
+}
+
+pub fn height(program: &Program, slots: &[f64], out: &mut [f32]) -> usize {
+    let n = out.len().min(CHUNK);
+    let mut bad = 0;
+    for (o, &h) in out.iter_mut().zip(lanes(slots, program.outputs[0], n)) {
+        let h = h as f32;
+        bad += usize::from(!h.is_finite());
+        *o = if h.is_finite() { h } else { 0.0 };
+    }
+    bad
+}
+
+pub fn color(program: &Program, slots: &[f64], out: &mut [[f32; 3]]) -> usize {
+    let n = out.len().min(CHUNK);
+    let [r, g, b] = [0, 1, 2].map(|i| lanes(slots, program.outputs[i], n));
+    let mut bad = 0;
+    for (i, o) in out.iter_mut().take(n).enumerate() {
+        let rgb = [r[i] as f32, g[i] as f32, b[i] as f32];
+        bad += usize::from(!finite(rgb));
+        *o = if finite(rgb) {
+            rgb.map(|c| c.clamp(0.0, 1.0))
+        } else {
+            [0.0; 3]
+        };
+    }
+    bad
+}
