@@ -1,0 +1,199 @@
+//! The fast path to the screen: a cell grid as escape sequences, only the cells that changed since the
+//! grid last shown, inside one synchronized-output update.
+
+use std::io::{self, Write};
+
+use super::cell::{Cell, CellGrid};
+use super::color::Color;
+use super::cursor::{Cursor, move_cost, move_to};
+use super::glyphs::complement;
+use super::sgr::{Need, Pen, RESET};
+
+/// Asks the terminal to hold the screen until the end mark, so a frame never shows half drawn.
+/// Terminals that do not know mode 2026 ignore it.
+pub const SYNC_BEGIN: &[u8] = b"\x1b[?2026h";
+pub const SYNC_END: &[u8] = b"\x1b[?2026l";
+
+/// Appends to `out` what turns the screen from `previous` (`None`: unknown, redraw all) into `next`, with
+/// the grid's top-left cell at screen cell `origin` (column, row; 0-based). Writes nothing when nothing
+/// changed. Leaves the colours reset to the defaults, so other drawing is not tinted.
+pub fn encode_frame(
+    previous: Option<&CellGrid>,
+    next: &CellGrid,
+    origin: (u16, u16),
+    out: &mut Vec<u8>,
+) {
+    let previous = previous.filter(|p| p.cols() == next.cols() && p.rows() == next.rows());
+    let changed =
+        |x: usize, y: usize| previous.is_none_or(|p| !p.get(x, y).looks_same(next.get(x, y)));
+    let mut frame = FrameState {
+        pen: Pen::default(),
+        cursor: None,
+        origin,
+        out,
+    };
+    let start = frame.out.len();
+    frame.out.extend_from_slice(SYNC_BEGIN);
+    let mut drew = false;
+    for y in 0..next.rows() {
+        let row = next.row(y);
+        for x in (0..row.len()).filter(|&x| changed(x, y)) {
+            frame.go_to(row, x, y);
+            frame.draw(row[x], x + 1 == row.len());
+            drew = true;
+        }
+    }
+    if !drew {
+        frame.out.truncate(start);
+        return;
+    }
+    if frame.pen
+        != (Pen {
+            fg: Some(Color::Default),
+            bg: Some(Color::Default),
+        })
+    {
+        frame.out.extend_from_slice(RESET);
+    }
+    frame.out.extend_from_slice(SYNC_END);
+}
+
+struct FrameState<'a> {
+    pen: Pen,
+    cursor: Option<Cursor>,
+    origin: (u16, u16),
+    out: &'a mut Vec<u8>,
+}
+
+impl FrameState<'_> {
+    /// Moves to cell `x` of grid row `y`, by reprinting the unchanged cells in between when that is
+    /// shorter than a cursor move and needs no colour change.
+    fn go_to(&mut self, row: &[Cell], x: usize, y: usize) {
+        let (screen_row, screen_col) = (self.origin.1 + y as u16, self.origin.0 + x as u16);
+        let move_bytes = move_cost(self.cursor, screen_row, screen_col);
+        if let Some(gap) = self.gap_from_cursor(screen_row, screen_col) {
+            let start = x - gap;
+            let reprint: Option<usize> =
+                row[start..x].iter().map(|&c| self.free_glyph_len(c)).sum();
+            if reprint.is_some_and(|bytes| bytes < move_bytes) {
+                for &cell in &row[start..x] {
+                    self.draw(cell, false);
+                }
+                return;
+            }
+        }
+        move_to(self.cursor, screen_row, screen_col, self.out);
+        self.cursor = Some(Cursor {
+            row: screen_row,
+            col: Some(screen_col),
+        });
+    }
+
+    /// Cells between the cursor and the target on the same row, if the cursor is before it there.
+    fn gap_from_cursor(&self, screen_row: u16, screen_col: u16) -> Option<usize> {
+        let cursor = self.cursor.filter(|c| c.row == screen_row)?;
+        let col = cursor.col.filter(|&c| c < screen_col)?;
+        Some((screen_col - col) as usize)
+    }
+
+    /// The glyph bytes of `cell` if the pen can draw it without any colour change.
+    fn free_glyph_len(&self, cell: Cell) -> Option<usize> {
+        forms(cell)
+            .into_iter()
+            .flatten()
+            .find(|(_, need)| self.pen.cost(*need) == 0)
+            .map(|(glyph, _)| glyph.len_utf8())
+    }
+
+    /// Draws `cell` at the cursor in whichever equivalent form costs the fewest bytes from the current pen.
+    fn draw(&mut self, cell: Cell, last_column: bool) {
+        let cheapest = forms(cell)
+            .into_iter()
+            .flatten()
+            .min_by_key(|(glyph, need)| self.pen.cost(*need) + glyph.len_utf8());
+        let (glyph, need) = cheapest.unwrap_or((
+            cell.glyph,
+            Need {
+                fg: Some(cell.fg),
+                bg: Some(cell.bg),
+            },
+        ));
+        self.pen.apply(need, self.out);
+        let mut utf8 = [0u8; 4];
+        self.out
+            .extend_from_slice(glyph.encode_utf8(&mut utf8).as_bytes());
+        if let Some(cursor) = &mut self.cursor {
+            // After the grid's last column the terminal may hold a pending wrap: the column is not known.
+            cursor.col = cursor.col.filter(|_| !last_column).map(|c| c + 1);
+        }
+    }
+}
+
+/// The ways to draw a cell: as it is, with the side that does not show left free, and for block glyphs
+/// in real colours, the complement glyph with fg and bg swapped.
+fn forms(cell: Cell) -> [Option<(char, Need)>; 2] {
+    let Cell { glyph, fg, bg } = cell.canonical();
+    let need = |glyph: char, fg: Color, bg: Color| Need {
+        fg: (glyph != ' ').then_some(fg),
+        bg: (glyph != '█').then_some(bg),
+    };
+    let alternative = match glyph {
+        ' ' if bg.is_concrete() => Some(('█', need('█', bg, bg))),
+        _ if fg.is_concrete() && bg.is_concrete() => {
+            complement(glyph).map(|other| (other, need(other, bg, fg)))
+        }
+        _ => None,
+    };
+    [Some((glyph, need(glyph, fg, bg))), alternative]
+}
+
+/// Draws successive grids at a fixed place on the screen, writing only what changed since the last one.
+#[derive(Debug, Default)]
+pub struct FrameWriter {
+    origin: (u16, u16),
+    shown: Option<CellGrid>,
+    scratch: Vec<u8>,
+}
+
+impl FrameWriter {
+    /// A writer drawing with the grid's top-left cell at screen (column, row) `origin`, 0-based.
+    pub fn new(origin: (u16, u16)) -> Self {
+        FrameWriter {
+            origin,
+            shown: None,
+            scratch: Vec::new(),
+        }
+    }
+
+    /// Forgets what is on screen, so the next frame is drawn in full: call after a resize, a screen
+    /// clear or any other drawing over the picture.
+    pub fn invalidate(&mut self) {
+        self.shown = None;
+    }
+
+    /// Moves the picture; the next frame is drawn in full.
+    pub fn set_origin(&mut self, origin: (u16, u16)) {
+        self.origin = origin;
+        self.invalidate();
+    }
+
+    /// Writes the changes from the last frame to `grid` in one write and flushes; returns the bytes
+    /// written (0 if nothing changed). On an error (say, a terminal gone after SIGHUP) nothing panics and
+    /// the next frame is drawn in full.
+    pub fn draw(&mut self, out: &mut impl Write, grid: &CellGrid) -> io::Result<usize> {
+        self.scratch.clear();
+        encode_frame(self.shown.as_ref(), grid, self.origin, &mut self.scratch);
+        if self.scratch.is_empty() {
+            return Ok(0);
+        }
+        if let Err(error) = out.write_all(&self.scratch).and_then(|()| out.flush()) {
+            self.shown = None;
+            return Err(error);
+        }
+        match &mut self.shown {
+            Some(shown) => shown.clone_from(grid),
+            None => self.shown = Some(grid.clone()),
+        }
+        Ok(self.scratch.len())
+    }
+}
