@@ -22,7 +22,7 @@ impl Cell {
     }
 
     /// One representative of all the cells that look like this one, so that "looks the same" is `==` of
-    /// canonical forms: a space ignores its fg, `█` in a real colour is a space in that bg, equal fg and bg
+    /// canonical forms: a space ignores its fg, `█` its bg, `█` in a real colour is a space in that bg, equal fg and bg
     /// make a solid cell, and a block glyph and its complement with the colours swapped are one cell.
     pub fn canonical(self) -> Self {
         let Cell { glyph, fg, bg } = self;
@@ -30,6 +30,11 @@ impl Cell {
         match glyph {
             ' ' => Cell::solid(bg),
             '█' if fg.is_concrete() => Cell::solid(fg),
+            '█' => Cell {
+                glyph,
+                fg,
+                bg: Color::Default,
+            },
             _ => match complement(glyph) {
                 Some(_) if fg == bg && both_concrete => Cell::solid(bg),
                 Some(other) if both_concrete && other < glyph => Cell {
