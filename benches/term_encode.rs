@@ -108,15 +108,21 @@ fn changed_cells(a: &CellGrid, b: &CellGrid) -> usize {
         .sum()
 }
 
-fn bench_mode(colors: ColorMode, glyphs: GlyphSet) {
+/// A frame to time: its name, its picture and the grid shown before it (`None`: full redraw).
+type Scenario<'a> = (&'a str, &'a [[u8; 3]], Option<&'a CellGrid>);
+
+fn bench_mode(colors: ColorMode, glyphs: GlyphSet, dither: bool) {
     let size = glyphs.picture_size(COLS, ROWS);
     let aspect = glyphs.pixel_aspect();
     let before = sphere_picture(size.0, size.1, aspect, 0.0);
     let after = sphere_picture(size.0, size.1, aspect, ORBIT_STEP);
-    let options = EncodeOptions { colors, glyphs };
+    let options = EncodeOptions {
+        dither,
+        ..EncodeOptions::new(colors, glyphs)
+    };
     let (grid_before, _) = encode_and_write(&before, size, options, None);
     let (grid_after, _) = encode_and_write(&after, size, options, None);
-    let scenarios: [(&str, &[[u8; 3]], Option<&CellGrid>); 3] = [
+    let scenarios: [Scenario; 3] = [
         ("full", &after, None),
         ("small change", &after, Some(&grid_before)),
         ("idle", &after, Some(&grid_after)),
@@ -127,8 +133,8 @@ fn bench_mode(colors: ColorMode, glyphs: GlyphSet) {
             time_runs(|| bytes = encode_and_write(pixels, size, options, previous).1.len());
         let changed = previous.map_or(COLS * ROWS, |p| changed_cells(p, &grid_after));
         println!(
-            "{:<10} {:<9} {:<13} {:>5}x{:<4} {:>8.3} {:>8.3} {:>8.3} {:>9} {:>8}",
-            format!("{colors:?}"),
+            "{:<15} {:<9} {:<13} {:>5}x{:<4} {:>8.3} {:>8.3} {:>8.3} {:>9} {:>8}",
+            format!("{colors:?}{}", if dither { "" } else { "/near" }),
             format!("{glyphs:?}"),
             name,
             size.0,
@@ -182,42 +188,54 @@ fn bench_chafa() {
         size.0, size.1
     );
     println!(
-        "{:<8} {:<4} {:>10} {:>12}",
-        "colors", "-O", "bytes", "wall ms"
+        "{:<8} {:<8} {:>10} {:>12}",
+        "colors", "dither", "bytes", "wall ms"
     );
-    for colors in ["full", "256", "16"] {
-        for optimize in ["5", "9"] {
-            let start = Instant::now();
-            let output = Command::new("chafa")
-                .args([
-                    "-f",
-                    "symbols",
-                    "--symbols",
-                    "half",
-                    "--colors",
-                    colors,
-                    "--animate",
-                    "off",
-                    "--stretch",
-                ])
-                .args(["-O", optimize, "--size", &format!("{COLS}x{ROWS}")])
-                .arg(&path)
-                .output();
-            let elapsed = start.elapsed();
-            match output {
-                Ok(o) if o.status.success() => {
-                    println!(
-                        "{colors:<8} {optimize:<4} {:>10} {:>12.1}",
-                        o.stdout.len(),
-                        ms(elapsed)
-                    )
-                }
-                Ok(o) => println!(
-                    "{colors:<8} {optimize:<4} failed: {}",
-                    String::from_utf8_lossy(&o.stderr).trim()
-                ),
-                Err(error) => println!("{colors:<8} {optimize:<4} failed to run: {error}"),
+    let runs = [
+        ("full", "none"),
+        ("256", "none"),
+        ("256", "ordered"),
+        ("16", "none"),
+        ("16", "ordered"),
+    ];
+    for (colors, dither) in runs {
+        let start = Instant::now();
+        let output = Command::new("chafa")
+            .args([
+                "-f",
+                "symbols",
+                "--symbols",
+                "half",
+                "--animate",
+                "off",
+                "--stretch",
+                "-O",
+                "9",
+            ])
+            .args([
+                "--colors",
+                colors,
+                "--dither",
+                dither,
+                "--size",
+                &format!("{COLS}x{ROWS}"),
+            ])
+            .arg(&path)
+            .output();
+        let elapsed = start.elapsed();
+        match output {
+            Ok(o) if o.status.success() => {
+                println!(
+                    "{colors:<8} {dither:<8} {:>10} {:>12.1}",
+                    o.stdout.len(),
+                    ms(elapsed)
+                )
             }
+            Ok(o) => println!(
+                "{colors:<8} {dither:<8} failed: {}",
+                String::from_utf8_lossy(&o.stderr).trim()
+            ),
+            Err(error) => println!("{colors:<8} {dither:<8} failed to run: {error}"),
         }
     }
     let _ = std::fs::remove_file(&path);
@@ -228,18 +246,16 @@ fn main() {
         "encode + write of a {COLS}x{ROWS}-cell frame, {RUNS} runs (ms); bytes per frame; cells changed"
     );
     println!(
-        "{:<10} {:<9} {:<13} {:>10} {:>8} {:>8} {:>8} {:>9} {:>8}",
+        "{:<15} {:<9} {:<13} {:>10} {:>8} {:>8} {:>8} {:>9} {:>8}",
         "colors", "glyphs", "frame", "pixels", "median", "min", "max", "bytes", "changed"
     );
     for glyphs in [GlyphSet::HalfBlock, GlyphSet::Quadrant, GlyphSet::Sextant] {
-        for colors in [
-            ColorMode::TrueColor,
-            ColorMode::Ansi256,
-            ColorMode::Ansi16,
-            ColorMode::Monochrome,
-        ] {
-            bench_mode(colors, glyphs);
+        bench_mode(ColorMode::TrueColor, glyphs, false);
+        for colors in [ColorMode::Ansi256, ColorMode::Ansi16] {
+            bench_mode(colors, glyphs, true);
+            bench_mode(colors, glyphs, false);
         }
+        bench_mode(ColorMode::Monochrome, glyphs, true);
     }
     bench_chafa();
 }

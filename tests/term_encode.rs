@@ -10,7 +10,7 @@ use ratatui::Terminal;
 use ratatui::backend::TestBackend;
 
 fn options(colors: ColorMode, glyphs: GlyphSet) -> EncodeOptions {
-    EncodeOptions { colors, glyphs }
+    EncodeOptions::new(colors, glyphs)
 }
 
 const RED: [u8; 3] = [255, 0, 0];

@@ -83,7 +83,7 @@ fn encoded(
     let pixels = shaded_picture(width, height, phase);
     encode(
         &Picture::new(&pixels, width, height).unwrap(),
-        EncodeOptions { colors, glyphs },
+        EncodeOptions::new(colors, glyphs),
     )
 }
 

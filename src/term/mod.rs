@@ -38,7 +38,7 @@ pub use guard::{
     write_enter_sequence, write_restore_sequence,
 };
 pub use picture::{Picture, PictureSizeError};
-pub use quantize::{Palette, monochrome_lit, quantize};
+pub use quantize::{Palette, Quantizer, monochrome_lit, quantize};
 pub use sanitize::sanitize;
 pub use signals::{ShutdownSignal, ShutdownSignals, is_ctrl_c};
 pub use split::{Split, best_split, split_error};

@@ -36,31 +36,48 @@ fn grey_ladder_index(step: usize) -> u8 {
 }
 
 /// The segment `levels[i]..=levels[i+1]` holding `v`, and how far along it `v` lies (0..=255).
-fn bracket(levels: &[u8], v: u8) -> (usize, u8) {
-    let i = levels[..levels.len() - 1]
-        .iter()
-        .rposition(|&l| l <= v)
-        .unwrap_or(0);
+const fn bracket(levels: &[u8], v: u8) -> (usize, u8) {
+    let mut i = levels.len() - 2;
+    while i > 0 && levels[i] > v {
+        i -= 1;
+    }
     let (lo, hi) = (levels[i] as u32, levels[i + 1] as u32);
-    let t = ((v as u32).saturating_sub(lo) * 255 + (hi - lo) / 2) / (hi - lo);
-    (i, t.min(255) as u8)
+    let above = (v as u32).saturating_sub(lo);
+    let t = (above * 255 + (hi - lo) / 2) / (hi - lo);
+    (i, if t > 255 { 255 } else { t as u8 })
 }
 
-fn pick(levels: &[u8], v: u8, threshold: u8) -> usize {
-    let (i, t) = bracket(levels, v);
-    if threshold < t { i + 1 } else { i }
+/// [`bracket`] for every byte value, so the per-pixel work is a lookup.
+const fn bracket_table(levels: &[u8]) -> [(u8, u8); 256] {
+    let mut table = [(0u8, 0u8); 256];
+    let mut v = 0;
+    while v < 256 {
+        let (i, t) = bracket(levels, v as u8);
+        table[v] = (i as u8, t);
+        v += 1;
+    }
+    table
+}
+
+const CUBE_BRACKETS: [(u8, u8); 256] = bracket_table(&CUBE_LEVELS);
+const GREY_BRACKETS: [(u8, u8); 256] = bracket_table(&GREY_LADDER);
+
+/// The index into the levels behind `brackets` that `v` takes at `threshold`.
+fn pick(brackets: &[(u8, u8); 256], v: u8, threshold: u8) -> usize {
+    let (i, t) = brackets[v as usize];
+    i as usize + (threshold < t) as usize
 }
 
 fn quantize_xterm256(rgb: [u8; 3], threshold: u8) -> u8 {
     // Decide the family (cube or grey ramp) on the undithered colour, so a flat area dithers within one
     // family and keeps its average.
     let grey = weighted_grey(rgb);
-    let nearest_cube = rgb.map(|v| CUBE_LEVELS[pick(&CUBE_LEVELS, v, 128)]);
-    let nearest_grey = GREY_LADDER[pick(&GREY_LADDER, grey, 128)];
+    let nearest_cube = rgb.map(|v| CUBE_LEVELS[pick(&CUBE_BRACKETS, v, 128)]);
+    let nearest_grey = GREY_LADDER[pick(&GREY_BRACKETS, grey, 128)];
     if distance2(rgb, [nearest_grey; 3]) < distance2(rgb, nearest_cube) {
-        grey_ladder_index(pick(&GREY_LADDER, grey, threshold))
+        grey_ladder_index(pick(&GREY_BRACKETS, grey, threshold))
     } else {
-        let [r, g, b] = rgb.map(|v| pick(&CUBE_LEVELS, v, threshold));
+        let [r, g, b] = rgb.map(|v| pick(&CUBE_BRACKETS, v, threshold));
         cube_index(r, g, b)
     }
 }
@@ -76,8 +93,52 @@ fn weighted_grey(rgb: [u8; 3]) -> u8 {
 const MIX_VARIANCE_PENALTY: f32 = 0.1;
 
 fn quantize_ansi16(rgb: [u8; 3], threshold: u8) -> u8 {
-    let (near, far, t) = best_ansi16_mix(rgb);
+    choose(best_ansi16_mix(rgb), threshold)
+}
+
+fn choose((near, far, t): (u8, u8, u8), threshold: u8) -> u8 {
     if threshold < t { far } else { near }
+}
+
+/// [`quantize`] with a memo of the 16-colour mix search, which costs ~16 projections per colour while
+/// rendered frames repeat colours a lot. One per frame or per thread: it is not shared.
+#[derive(Clone, Debug)]
+pub struct Quantizer {
+    palette: Palette,
+    /// Direct-mapped: (packed rgb | VALID, near, far, t).
+    ansi16_mixes: Vec<(u32, u8, u8, u8)>,
+}
+
+const MEMO_SLOTS: usize = 4096;
+const VALID: u32 = 1 << 24;
+
+impl Quantizer {
+    pub fn new(palette: Palette) -> Self {
+        let slots = if palette == Palette::Ansi16 {
+            MEMO_SLOTS
+        } else {
+            0
+        };
+        Quantizer {
+            palette,
+            ansi16_mixes: vec![(0, 0, 0, 0); slots],
+        }
+    }
+
+    /// Same result as [`quantize`] with this quantizer's palette.
+    pub fn quantize(&mut self, rgb: [u8; 3], threshold: u8) -> u8 {
+        if self.palette == Palette::Xterm256 {
+            return quantize_xterm256(rgb, threshold);
+        }
+        let key = VALID | (rgb[0] as u32) << 16 | (rgb[1] as u32) << 8 | rgb[2] as u32;
+        let slot = (key.wrapping_mul(0x9E37_79B1) >> 20) as usize % MEMO_SLOTS;
+        let entry = &mut self.ansi16_mixes[slot];
+        if entry.0 != key {
+            let (near, far, t) = best_ansi16_mix(rgb);
+            *entry = (key, near, far, t);
+        }
+        choose((entry.1, entry.2, entry.3), threshold)
+    }
 }
 
 /// The nearest ANSI colour, the partner whose mix with it best reproduces `rgb`, and the mix fraction.
@@ -134,6 +195,21 @@ mod tests {
         assert_eq!(bracket(&CUBE_LEVELS, 0), (0, 0));
         assert_eq!(bracket(&CUBE_LEVELS, 95), (1, 0));
         assert_eq!(bracket(&CUBE_LEVELS, 255), (4, 255));
+    }
+
+    #[test]
+    fn memoised_quantizer_agrees_with_quantize() {
+        let mut quantizer = Quantizer::new(Palette::Ansi16);
+        for v in (0..=255u32).step_by(3) {
+            for rgb in [[v as u8, 40, 200], [10, v as u8, v as u8], [v as u8; 3]] {
+                for threshold in [2, 100, 254] {
+                    assert_eq!(
+                        quantizer.quantize(rgb, threshold),
+                        quantize(rgb, Palette::Ansi16, threshold)
+                    );
+                }
+            }
+        }
     }
 
     #[test]
