@@ -134,7 +134,14 @@ fn bench_mode(colors: ColorMode, glyphs: GlyphSet, dither: bool) {
         let changed = previous.map_or(COLS * ROWS, |p| changed_cells(p, &grid_after));
         println!(
             "{:<15} {:<9} {:<13} {:>5}x{:<4} {:>8.3} {:>8.3} {:>8.3} {:>9} {:>8}",
-            format!("{colors:?}{}", if dither { "" } else { "/near" }),
+            format!(
+                "{colors:?}{}",
+                if dither || colors == ColorMode::TrueColor {
+                    ""
+                } else {
+                    "/near"
+                }
+            ),
             format!("{glyphs:?}"),
             name,
             size.0,
@@ -250,7 +257,7 @@ fn main() {
         "colors", "glyphs", "frame", "pixels", "median", "min", "max", "bytes", "changed"
     );
     for glyphs in [GlyphSet::HalfBlock, GlyphSet::Quadrant, GlyphSet::Sextant] {
-        bench_mode(ColorMode::TrueColor, glyphs, false);
+        bench_mode(ColorMode::TrueColor, glyphs, true);
         for colors in [ColorMode::Ansi256, ColorMode::Ansi16] {
             bench_mode(colors, glyphs, true);
             bench_mode(colors, glyphs, false);
