@@ -40,5 +40,5 @@ pub use guard::{
 pub use picture::{Picture, PictureSizeError};
 pub use quantize::{Palette, Quantizer, monochrome_lit, quantize};
 pub use sanitize::sanitize;
-pub use signals::{ShutdownSignal, ShutdownSignals, is_ctrl_c};
+pub use signals::{DEFAULT_GRACE, ShutdownSignal, ShutdownSignals, is_ctrl_c};
 pub use split::{Split, best_split, split_error};
