@@ -6,7 +6,9 @@ use std::path::Path;
 use std::process::Command;
 use std::time::{Duration, Instant};
 
-use bumpwork::term::{CellGrid, ColorMode, EncodeOptions, GlyphSet, Picture, encode, encode_frame};
+use bumpwork::term::{
+    CellGrid, ColorMode, EncodeOptions, FrameOptions, GlyphSet, Picture, encode, encode_frame,
+};
 
 const COLS: usize = 200;
 const ROWS: usize = 60;
@@ -91,10 +93,11 @@ fn encode_and_write(
     size: (usize, usize),
     options: EncodeOptions,
     previous: Option<&CellGrid>,
+    frame: FrameOptions,
 ) -> (CellGrid, Vec<u8>) {
     let grid = encode(&Picture::new(pixels, size.0, size.1).unwrap(), options);
     let mut out = Vec::with_capacity(256 * 1024);
-    encode_frame(previous, &grid, (0, 0), &mut out);
+    encode_frame(previous, &grid, frame, &mut out);
     (grid, out)
 }
 
@@ -120,37 +123,41 @@ fn bench_mode(colors: ColorMode, glyphs: GlyphSet, dither: bool) {
         dither,
         ..EncodeOptions::new(colors, glyphs)
     };
-    let (grid_before, _) = encode_and_write(&before, size, options, None);
-    let (grid_after, _) = encode_and_write(&after, size, options, None);
+    let plain = FrameOptions {
+        origin: (0, 0),
+        repeat: false,
+    };
+    let repeating = FrameOptions {
+        repeat: true,
+        ..plain
+    };
+    let (grid_before, _) = encode_and_write(&before, size, options, None, plain);
+    let (grid_after, _) = encode_and_write(&after, size, options, None, plain);
     let scenarios: [Scenario; 3] = [
         ("full", &after, None),
         ("small change", &after, Some(&grid_before)),
         ("idle", &after, Some(&grid_after)),
     ];
+    let label = format!("{colors:?}{}", if dither { "" } else { "/near" });
     for (name, pixels, previous) in scenarios {
         let mut bytes = 0;
-        let timing =
-            time_runs(|| bytes = encode_and_write(pixels, size, options, previous).1.len());
+        let timing = time_runs(|| {
+            bytes = encode_and_write(pixels, size, options, previous, plain)
+                .1
+                .len();
+        });
+        let with_rep = encode_and_write(pixels, size, options, previous, repeating)
+            .1
+            .len();
         let changed = previous.map_or(COLS * ROWS, |p| changed_cells(p, &grid_after));
         println!(
-            "{:<15} {:<9} {:<13} {:>5}x{:<4} {:>8.3} {:>8.3} {:>8.3} {:>9} {:>8}",
-            format!(
-                "{colors:?}{}",
-                if dither || colors == ColorMode::TrueColor {
-                    ""
-                } else {
-                    "/near"
-                }
-            ),
+            "{label:<15} {:<9} {name:<13} {:>5}x{:<4} {:>8.3} {:>8.3} {:>8.3} {bytes:>9} {with_rep:>9} {changed:>8}",
             format!("{glyphs:?}"),
-            name,
             size.0,
             size.1,
             ms(timing.median),
             ms(timing.min),
             ms(timing.max),
-            bytes,
-            changed
         );
     }
 }
@@ -253,8 +260,17 @@ fn main() {
         "encode + write of a {COLS}x{ROWS}-cell frame, {RUNS} runs (ms); bytes per frame; cells changed"
     );
     println!(
-        "{:<15} {:<9} {:<13} {:>10} {:>8} {:>8} {:>8} {:>9} {:>8}",
-        "colors", "glyphs", "frame", "pixels", "median", "min", "max", "bytes", "changed"
+        "{:<15} {:<9} {:<13} {:>10} {:>8} {:>8} {:>8} {:>9} {:>9} {:>8}",
+        "colors",
+        "glyphs",
+        "frame",
+        "pixels",
+        "median",
+        "min",
+        "max",
+        "bytes",
+        "with REP",
+        "changed"
     );
     for glyphs in [GlyphSet::HalfBlock, GlyphSet::Quadrant, GlyphSet::Sextant] {
         bench_mode(ColorMode::TrueColor, glyphs, true);

@@ -4,13 +4,24 @@
 use std::io::{self, Write};
 
 use bumpwork::term::{
-    Cell, CellGrid, Color, ColorMode, EncodeOptions, FrameWriter, GlyphSet, Picture, SYNC_BEGIN,
-    SYNC_END, encode, encode_frame,
+    Cell, CellGrid, Color, ColorMode, EncodeOptions, FrameOptions, FrameWriter, GlyphSet, Picture,
+    SYNC_BEGIN, SYNC_END, encode, encode_frame,
 };
 
 fn frame(previous: Option<&CellGrid>, next: &CellGrid, origin: (u16, u16)) -> Vec<u8> {
+    frame_with(
+        previous,
+        next,
+        FrameOptions {
+            origin,
+            repeat: false,
+        },
+    )
+}
+
+fn frame_with(previous: Option<&CellGrid>, next: &CellGrid, options: FrameOptions) -> Vec<u8> {
     let mut out = Vec::new();
-    encode_frame(previous, next, origin, &mut out);
+    encode_frame(previous, next, options, &mut out);
     out
 }
 
@@ -99,15 +110,17 @@ fn full_frame_replays_to_the_grid_in_every_mode() {
     for colors in ALL_MODES {
         for glyphs in [GlyphSet::HalfBlock, GlyphSet::Quadrant, GlyphSet::Sextant] {
             let grid = encoded(40, 24, 0.0, colors, glyphs);
-            let origin = (3, 2);
-            let bytes = frame(None, &grid, origin);
-            assert!(bytes.starts_with(SYNC_BEGIN) && bytes.ends_with(SYNC_END));
-            let mut vt = virtual_terminal(30, 60);
-            vt.process(&bytes);
-            assert_screen_shows(vt.screen(), &grid, origin);
-            // Nothing is drawn outside the grid.
-            assert_eq!(screen_cell(vt.screen(), 1, 3), Cell::solid(Color::Default));
-            assert_eq!(screen_cell(vt.screen(), 2, 2), Cell::solid(Color::Default));
+            for repeat in [false, true] {
+                let origin = (3, 2);
+                let bytes = frame_with(None, &grid, FrameOptions { origin, repeat });
+                assert!(bytes.starts_with(SYNC_BEGIN) && bytes.ends_with(SYNC_END));
+                let mut vt = virtual_terminal(30, 60);
+                vt.process(&bytes);
+                assert_screen_shows(vt.screen(), &grid, origin);
+                // Nothing is drawn outside the grid.
+                assert_eq!(screen_cell(vt.screen(), 1, 3), Cell::solid(Color::Default));
+                assert_eq!(screen_cell(vt.screen(), 2, 2), Cell::solid(Color::Default));
+            }
         }
     }
 }
@@ -191,12 +204,15 @@ fn diffs_between_random_grids_replay_exactly() {
                 );
             }
         }
-        let origin = (screen_cols - cols as u16, 1);
+        let options = FrameOptions {
+            origin: (screen_cols - cols as u16, 1),
+            repeat: round % 4 < 2,
+        };
         let mut vt = virtual_terminal(rows as u16 + 2, screen_cols);
-        vt.process(&frame(None, &old, origin));
-        assert_screen_shows(vt.screen(), &old, origin);
-        vt.process(&frame(Some(&old), &new, origin));
-        assert_screen_shows(vt.screen(), &new, origin);
+        vt.process(&frame_with(None, &old, options));
+        assert_screen_shows(vt.screen(), &old, options.origin);
+        vt.process(&frame_with(Some(&old), &new, options));
+        assert_screen_shows(vt.screen(), &new, options.origin);
     }
 }
 
@@ -230,6 +246,36 @@ fn solid_cells_cost_one_byte_once_the_colour_is_set() {
         text,
         "\x1b[?2026h\x1b[H\x1b[48;5;200m          \x1b[m\x1b[?2026l"
     );
+}
+
+#[test]
+fn runs_of_identical_cells_are_repeated_when_allowed() {
+    let mut grid = CellGrid::new(12, 1);
+    for x in 0..12 {
+        let glyph = if x < 10 { '▀' } else { '▄' };
+        grid.set(
+            x,
+            0,
+            Cell {
+                glyph,
+                fg: Color::Indexed(1),
+                bg: Color::Indexed(2),
+            },
+        );
+    }
+    // The '▄' cells reuse the pen as it is by drawing the complement glyph: no colour change.
+    let options = FrameOptions {
+        origin: (0, 0),
+        repeat: true,
+    };
+    let text = String::from_utf8(frame_with(None, &grid, options)).unwrap();
+    assert_eq!(
+        text,
+        "\x1b[?2026h\x1b[H\x1b[31;42m▀\x1b[9b▄▄\x1b[m\x1b[?2026l"
+    );
+    let mut vt = virtual_terminal(2, 12);
+    vt.process(text.as_bytes());
+    assert_screen_shows(vt.screen(), &grid, (0, 0));
 }
 
 struct DeadTerminal;

@@ -7,20 +7,31 @@ use super::cell::{Cell, CellGrid};
 use super::color::Color;
 use super::cursor::{Cursor, move_cost, move_to};
 use super::glyphs::complement;
-use super::sgr::{Need, Pen, RESET};
+use super::sgr::{Need, Pen, RESET, push_decimal};
 
 /// Asks the terminal to hold the screen until the end mark, so a frame never shows half drawn.
 /// Terminals that do not know mode 2026 ignore it.
 pub const SYNC_BEGIN: &[u8] = b"\x1b[?2026h";
 pub const SYNC_END: &[u8] = b"\x1b[?2026l";
 
-/// Appends to `out` what turns the screen from `previous` (`None`: unknown, redraw all) into `next`, with
-/// the grid's top-left cell at screen cell `origin` (column, row; 0-based). Writes nothing when nothing
-/// changed. Leaves the colours reset to the defaults, so other drawing is not tinted.
+/// Where and how [`encode_frame`] draws.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct FrameOptions {
+    /// Screen cell (column, row), 0-based, of the grid's top-left cell.
+    pub origin: (u16, u16),
+    /// Draw runs of identical cells with REP (`ESC[nb`, repeat the last character). Far fewer bytes
+    /// for flat areas; xterm, VTE, kitty, tmux and foot know it, but not every terminal (the Linux
+    /// console, older ones), so it is off unless the terminal is known to support it (terminfo `rep`).
+    pub repeat: bool,
+}
+
+/// Appends to `out` what turns the screen from `previous` (`None`: unknown, redraw all) into `next`.
+/// Writes nothing when nothing changed. Leaves the colours reset to the defaults, so other drawing is
+/// not tinted.
 pub fn encode_frame(
     previous: Option<&CellGrid>,
     next: &CellGrid,
-    origin: (u16, u16),
+    options: FrameOptions,
     out: &mut Vec<u8>,
 ) {
     let previous = previous.filter(|p| p.cols() == next.cols() && p.rows() == next.rows());
@@ -29,7 +40,7 @@ pub fn encode_frame(
     let mut frame = FrameState {
         pen: Pen::default(),
         cursor: None,
-        origin,
+        origin: options.origin,
         out,
     };
     let start = frame.out.len();
@@ -37,10 +48,27 @@ pub fn encode_frame(
     let mut drew = false;
     for y in 0..next.rows() {
         let row = next.row(y);
-        for x in (0..row.len()).filter(|&x| changed(x, y)) {
+        let mut x = 0;
+        while x < row.len() {
+            if !changed(x, y) {
+                x += 1;
+                continue;
+            }
             frame.go_to(row, x, y);
-            frame.draw(row[x], x + 1 == row.len());
+            let glyph_bytes = frame.draw(row[x], x + 1 == row.len());
             drew = true;
+            x += 1;
+            if options.repeat {
+                let run = row[x..]
+                    .iter()
+                    .enumerate()
+                    .take_while(|&(i, c)| changed(x + i, y) && c.looks_same(row[x - 1]))
+                    .count();
+                if run * glyph_bytes > repeat_len(run) {
+                    frame.repeat(run, x + run == row.len());
+                    x += run;
+                }
+            }
         }
     }
     if !drew {
@@ -56,6 +84,18 @@ pub fn encode_frame(
         frame.out.extend_from_slice(RESET);
     }
     frame.out.extend_from_slice(SYNC_END);
+}
+
+fn repeat_len(count: usize) -> usize {
+    if count == 0 {
+        return usize::MAX; // nothing to repeat: never worth it
+    }
+    b"\x1b[b".len()
+        + if count == 1 {
+            0
+        } else {
+            count.to_string().len()
+        }
 }
 
 struct FrameState<'a> {
@@ -105,8 +145,9 @@ impl FrameState<'_> {
             .map(|(glyph, _)| glyph.len_utf8())
     }
 
-    /// Draws `cell` at the cursor in whichever equivalent form costs the fewest bytes from the current pen.
-    fn draw(&mut self, cell: Cell, last_column: bool) {
+    /// Draws `cell` at the cursor in whichever equivalent form costs the fewest bytes from the current
+    /// pen; returns the bytes of the glyph drawn.
+    fn draw(&mut self, cell: Cell, last_column: bool) -> usize {
         let cheapest = forms(cell)
             .into_iter()
             .flatten()
@@ -122,9 +163,25 @@ impl FrameState<'_> {
         let mut utf8 = [0u8; 4];
         self.out
             .extend_from_slice(glyph.encode_utf8(&mut utf8).as_bytes());
+        self.advance(1, last_column);
+        glyph.len_utf8()
+    }
+
+    /// Repeats the last glyph `count` more times.
+    fn repeat(&mut self, count: usize, reaches_last_column: bool) {
+        self.out.extend_from_slice(b"\x1b[");
+        if count > 1 {
+            push_decimal(count as u32, self.out);
+        }
+        self.out.push(b'b');
+        self.advance(count, reaches_last_column);
+    }
+
+    fn advance(&mut self, cells: usize, reaches_last_column: bool) {
         if let Some(cursor) = &mut self.cursor {
             // After the grid's last column the terminal may hold a pending wrap: the column is not known.
-            cursor.col = cursor.col.filter(|_| !last_column).map(|c| c + 1);
+            let col = cursor.col.filter(|_| !reaches_last_column);
+            cursor.col = col.map(|c| c + cells as u16);
         }
     }
 }
@@ -150,7 +207,7 @@ fn forms(cell: Cell) -> [Option<(char, Need)>; 2] {
 /// Draws successive grids at a fixed place on the screen, writing only what changed since the last one.
 #[derive(Debug, Default)]
 pub struct FrameWriter {
-    origin: (u16, u16),
+    options: FrameOptions,
     shown: Option<CellGrid>,
     scratch: Vec<u8>,
 }
@@ -159,7 +216,10 @@ impl FrameWriter {
     /// A writer drawing with the grid's top-left cell at screen (column, row) `origin`, 0-based.
     pub fn new(origin: (u16, u16)) -> Self {
         FrameWriter {
-            origin,
+            options: FrameOptions {
+                origin,
+                repeat: false,
+            },
             shown: None,
             scratch: Vec::new(),
         }
@@ -173,8 +233,13 @@ impl FrameWriter {
 
     /// Moves the picture; the next frame is drawn in full.
     pub fn set_origin(&mut self, origin: (u16, u16)) {
-        self.origin = origin;
+        self.options.origin = origin;
         self.invalidate();
+    }
+
+    /// Whether to use REP for runs of identical cells (see [`FrameOptions::repeat`]).
+    pub fn set_repeat(&mut self, repeat: bool) {
+        self.options.repeat = repeat;
     }
 
     /// Writes the changes from the last frame to `grid` in one write and flushes; returns the bytes
@@ -182,7 +247,7 @@ impl FrameWriter {
     /// the next frame is drawn in full.
     pub fn draw(&mut self, out: &mut impl Write, grid: &CellGrid) -> io::Result<usize> {
         self.scratch.clear();
-        encode_frame(self.shown.as_ref(), grid, self.origin, &mut self.scratch);
+        encode_frame(self.shown.as_ref(), grid, self.options, &mut self.scratch);
         if self.scratch.is_empty() {
             return Ok(0);
         }

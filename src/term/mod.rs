@@ -24,7 +24,7 @@ mod sgr;
 mod signals;
 mod split;
 
-pub use ansi_writer::{FrameWriter, SYNC_BEGIN, SYNC_END, encode_frame};
+pub use ansi_writer::{FrameOptions, FrameWriter, SYNC_BEGIN, SYNC_END, encode_frame};
 pub use cell::{Cell, CellGrid};
 pub use color::Color;
 pub use color_mode::{
