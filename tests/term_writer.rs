@@ -249,21 +249,25 @@ fn solid_cells_cost_one_byte_once_the_colour_is_set() {
 }
 
 #[test]
-fn runs_of_identical_cells_are_repeated_when_allowed() {
-    let mut grid = CellGrid::new(12, 1);
-    for x in 0..12 {
-        let glyph = if x < 10 { '▀' } else { '▄' };
-        grid.set(
-            x,
-            0,
-            Cell {
-                glyph,
+fn runs_of_identical_solid_cells_are_repeated_as_spaces_when_allowed() {
+    let mut grid = CellGrid::new(14, 1);
+    for x in 0..14 {
+        let cell = match x {
+            0..10 => Cell {
+                glyph: '█',
                 fg: Color::Indexed(1),
                 bg: Color::Indexed(2),
             },
-        );
+            // Runs of other glyphs are drawn out (tmux would not repeat them), here as '▀' over the
+            // red background the pen already has.
+            _ => Cell {
+                glyph: '▄',
+                fg: Color::Indexed(1),
+                bg: Color::Indexed(2),
+            },
+        };
+        grid.set(x, 0, cell);
     }
-    // The '▄' cells reuse the pen as it is by drawing the complement glyph: no colour change.
     let options = FrameOptions {
         origin: (0, 0),
         repeat: true,
@@ -271,9 +275,9 @@ fn runs_of_identical_cells_are_repeated_when_allowed() {
     let text = String::from_utf8(frame_with(None, &grid, options)).unwrap();
     assert_eq!(
         text,
-        "\x1b[?2026h\x1b[H\x1b[31;42m▀\x1b[9b▄▄\x1b[m\x1b[?2026l"
+        "\x1b[?2026h\x1b[H\x1b[41m \x1b[9b\x1b[32m▀▀▀▀\x1b[m\x1b[?2026l"
     );
-    let mut vt = virtual_terminal(2, 12);
+    let mut vt = virtual_terminal(2, 14);
     vt.process(text.as_bytes());
     assert_screen_shows(vt.screen(), &grid, (0, 0));
 }

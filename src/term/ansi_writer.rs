@@ -19,9 +19,10 @@ pub const SYNC_END: &[u8] = b"\x1b[?2026l";
 pub struct FrameOptions {
     /// Screen cell (column, row), 0-based, of the grid's top-left cell.
     pub origin: (u16, u16),
-    /// Draw runs of identical cells with REP (`ESC[nb`, repeat the last character). Far fewer bytes
-    /// for flat areas; xterm, VTE, kitty, tmux and foot know it, but not every terminal (the Linux
-    /// console, older ones), so it is off unless the terminal is known to support it (terminfo `rep`).
+    /// Draw runs of identical solid cells as one space and REP (`ESC[nb`, repeat the last character):
+    /// far fewer bytes for flat areas. xterm, VTE, kitty, foot and tmux know it (tmux only after an ASCII
+    /// character, hence spaces only), but not every terminal (the Linux console, older ones), so it is
+    /// off unless the terminal is known to support it (terminfo `rep`).
     pub repeat: bool,
 }
 
@@ -55,19 +56,21 @@ pub fn encode_frame(
                 continue;
             }
             frame.go_to(row, x, y);
-            let glyph_bytes = frame.draw(row[x], x + 1 == row.len());
             drew = true;
-            x += 1;
-            if options.repeat {
-                let run = row[x..]
-                    .iter()
-                    .enumerate()
-                    .take_while(|&(i, c)| changed(x + i, y) && c.looks_same(row[x - 1]))
-                    .count();
-                if run * glyph_bytes > repeat_len(run) {
-                    frame.repeat(run, x + run == row.len());
-                    x += run;
-                }
+            let run = row[x + 1..]
+                .iter()
+                .enumerate()
+                .take_while(|&(i, c)| changed(x + 1 + i, y) && c.looks_same(row[x]))
+                .count();
+            let solid = row[x].canonical().glyph == ' ';
+            // Only spaces are repeated: tmux 3.3 ignores REP after a non-ASCII character.
+            if options.repeat && solid && run > repeat_len(run) {
+                frame.draw_space(row[x].canonical().bg);
+                frame.repeat(run, x + 1 + run == row.len());
+                x += 1 + run;
+            } else {
+                frame.draw(row[x], x + 1 == row.len());
+                x += 1;
             }
         }
     }
@@ -145,9 +148,22 @@ impl FrameState<'_> {
             .map(|(glyph, _)| glyph.len_utf8())
     }
 
+    /// Draws a space in background `bg`, never the equivalent `█`, so that REP can repeat it.
+    fn draw_space(&mut self, bg: Color) {
+        self.pen.apply(
+            Need {
+                fg: None,
+                bg: Some(bg),
+            },
+            self.out,
+        );
+        self.out.push(b' ');
+        self.advance(1, false);
+    }
+
     /// Draws `cell` at the cursor in whichever equivalent form costs the fewest bytes from the current
-    /// pen; returns the bytes of the glyph drawn.
-    fn draw(&mut self, cell: Cell, last_column: bool) -> usize {
+    /// pen.
+    fn draw(&mut self, cell: Cell, last_column: bool) {
         let cheapest = forms(cell)
             .into_iter()
             .flatten()
@@ -164,7 +180,6 @@ impl FrameState<'_> {
         self.out
             .extend_from_slice(glyph.encode_utf8(&mut utf8).as_bytes());
         self.advance(1, last_column);
-        glyph.len_utf8()
     }
 
     /// Repeats the last glyph `count` more times.
