@@ -57,14 +57,15 @@ pub fn encode_frame(
             }
             frame.go_to(row, x, y);
             drew = true;
-            let run = row[x + 1..]
-                .iter()
-                .enumerate()
-                .take_while(|&(i, c)| changed(x + 1 + i, y) && c.looks_same(row[x]))
-                .count();
-            let solid = row[x].canonical().glyph == ' ';
-            // Only spaces are repeated: tmux 3.3 ignores REP after a non-ASCII character.
-            if options.repeat && solid && run > repeat_len(run) {
+            let run = || {
+                row[x + 1..]
+                    .iter()
+                    .enumerate()
+                    .take_while(|&(i, c)| changed(x + 1 + i, y) && c.looks_same(row[x]))
+                    .count()
+            };
+            let run = if options.repeat { run() } else { 0 };
+            if frame.repeating_is_shorter(row[x], run) {
                 frame.draw_space(row[x].canonical().bg);
                 frame.repeat(run, x + 1 + run == row.len());
                 x += 1 + run;
@@ -148,6 +149,23 @@ impl FrameState<'_> {
             .map(|(glyph, _)| glyph.len_utf8())
     }
 
+    /// Whether `cell` and `run` more like it are shorter as a space and REP than written out. Only
+    /// spaces are repeated: tmux 3.3 ignores REP after a non-ASCII character.
+    fn repeating_is_shorter(&self, cell: Cell, run: usize) -> bool {
+        let canonical = cell.canonical();
+        if canonical.glyph != ' ' || run == 0 {
+            return false;
+        }
+        let space = Need {
+            fg: None,
+            bg: Some(canonical.bg),
+        };
+        let repeated = self.pen.cost(space) + 1 + repeat_len(run);
+        let (glyph, need) = self.cheapest_form(cell);
+        let written = self.pen.cost(need) + (1 + run) * glyph.len_utf8();
+        repeated < written
+    }
+
     /// Draws a space in background `bg`, never the equivalent `█`, so that REP can repeat it.
     fn draw_space(&mut self, bg: Color) {
         self.pen.apply(
@@ -164,22 +182,27 @@ impl FrameState<'_> {
     /// Draws `cell` at the cursor in whichever equivalent form costs the fewest bytes from the current
     /// pen.
     fn draw(&mut self, cell: Cell, last_column: bool) {
-        let cheapest = forms(cell)
-            .into_iter()
-            .flatten()
-            .min_by_key(|(glyph, need)| self.pen.cost(*need) + glyph.len_utf8());
-        let (glyph, need) = cheapest.unwrap_or((
-            cell.glyph,
-            Need {
-                fg: Some(cell.fg),
-                bg: Some(cell.bg),
-            },
-        ));
+        let (glyph, need) = self.cheapest_form(cell);
         self.pen.apply(need, self.out);
         let mut utf8 = [0u8; 4];
         self.out
             .extend_from_slice(glyph.encode_utf8(&mut utf8).as_bytes());
         self.advance(1, last_column);
+    }
+
+    /// The equivalent form of `cell` that costs the fewest bytes from the current pen.
+    fn cheapest_form(&self, cell: Cell) -> (char, Need) {
+        let cheapest = forms(cell)
+            .into_iter()
+            .flatten()
+            .min_by_key(|(glyph, need)| self.pen.cost(*need) + glyph.len_utf8());
+        cheapest.unwrap_or((
+            cell.glyph,
+            Need {
+                fg: Some(cell.fg),
+                bg: Some(cell.bg),
+            },
+        ))
     }
 
     /// Repeats the last glyph `count` more times.
