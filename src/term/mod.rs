@@ -5,6 +5,44 @@
 //! `Widget`) or, faster, by a [`FrameWriter`] that writes only the cells that changed. [`TerminalGuard`]
 //! and [`ShutdownSignals`] get the terminal back to how it was however the workbench ends, and
 //! [`sanitize`] keeps text from files from steering the terminal.
+//!
+//! An event loop using the fast path (the ratatui path is the same with `frame.render_widget(&grid,
+//! area)` in place of the `FrameWriter`):
+//!
+//! ```no_run
+//! use bumpwork::term::*;
+//! use crossterm::event::{self, Event};
+//! use std::time::Duration;
+//!
+//! # fn render_srgb(_w: usize, _h: usize) -> Vec<[u8; 3]> { Vec::new() }
+//! # fn main() -> std::io::Result<()> {
+//! let colors = ColorChoice::Auto.resolve(|name| std::env::var(name).ok());
+//! let options = EncodeOptions::new(colors, GlyphSet::HalfBlock);
+//! let signals = ShutdownSignals::register()?;
+//! let guard = TerminalGuard::enter(false)?; // also installs the restoring panic hook
+//! let mut writer = FrameWriter::new((0, 0));
+//! let (width, height) = options.glyphs.picture_size(80, 24);
+//! loop {
+//!     let pixels = render_srgb(width, height);
+//!     let picture = Picture::new(&pixels, width, height).expect("renderer gives width × height");
+//!     // A failed write (the terminal is gone) is not fatal here: the signal ends the loop.
+//!     let _ = writer.draw(&mut std::io::stdout(), &encode(&picture, options));
+//!     if let Some(signal) = signals.received() {
+//!         drop(guard);
+//!         std::process::exit(signal.exit_code());
+//!     }
+//!     if event::poll(Duration::from_millis(50))? {
+//!         match event::read()? {
+//!             Event::Key(key) if is_ctrl_c(&key) => break,
+//!             Event::Resize(..) => writer.invalidate(), // and clear the screen
+//!             _ => {}
+//!         }
+//!     }
+//! }
+//! drop(guard);
+//! # Ok(())
+//! # }
+//! ```
 
 mod ansi_writer;
 mod cell;
