@@ -310,3 +310,28 @@ fn grid_size_rounds_partial_cells_up() {
     }
     assert!(Picture::new(&pixels, 5, 6).is_err());
 }
+
+#[test]
+fn sextant_glyphs_take_one_cell_each_in_ratatui() {
+    let mut grid = CellGrid::new(6, 1);
+    for x in 0..6 {
+        let glyph = GlyphSet::Sextant.glyph(1 + 10 * x as u8);
+        grid.set(
+            x,
+            0,
+            Cell {
+                glyph,
+                fg: Color::Indexed(1),
+                bg: Color::Indexed(4),
+            },
+        );
+    }
+    let drawn = draw_with_ratatui(&grid);
+    for (x, (symbol, _, _)) in drawn[0].iter().enumerate() {
+        assert_eq!(
+            symbol.chars().next(),
+            Some(grid.get(x, 0).glyph),
+            "cell {x}"
+        );
+    }
+}
