@@ -9,6 +9,7 @@ pub mod raster;
 pub mod scene;
 pub mod shade;
 pub mod surface;
+pub mod term;
 pub mod texture;
 
 pub use error::Error;

@@ -1,0 +1,140 @@
+//! Colour mode detection, the `--colors` choice, sanitising untrusted text and the terminal restore
+//! sequences, all without a real terminal.
+
+use std::collections::HashMap;
+
+use bumpwork::term::{
+    ColorChoice, ColorMode, TerminalModes, detect_color_mode, sanitize, write_enter_sequence,
+    write_restore_sequence,
+};
+
+fn detect(vars: &[(&str, &str)]) -> ColorMode {
+    let env: HashMap<String, String> = vars
+        .iter()
+        .map(|(k, v)| (k.to_string(), v.to_string()))
+        .collect();
+    detect_color_mode(|name| env.get(name).cloned())
+}
+
+#[test]
+fn colour_mode_follows_the_environment() {
+    assert_eq!(
+        detect(&[("COLORTERM", "truecolor"), ("TERM", "xterm-256color")]),
+        ColorMode::TrueColor
+    );
+    assert_eq!(
+        detect(&[("COLORTERM", "24bit"), ("TERM", "xterm")]),
+        ColorMode::TrueColor
+    );
+    assert_eq!(detect(&[("TERM", "tmux-256color")]), ColorMode::Ansi256);
+    assert_eq!(
+        detect(&[("TERM", "screen-256color"), ("COLORTERM", "")]),
+        ColorMode::Ansi256
+    );
+    assert_eq!(detect(&[("TERM", "xterm")]), ColorMode::Ansi16);
+    assert_eq!(detect(&[("TERM", "linux")]), ColorMode::Ansi16);
+    assert_eq!(detect(&[]), ColorMode::Ansi16);
+    assert_eq!(detect(&[("TERM", "dumb")]), ColorMode::Monochrome);
+}
+
+#[test]
+fn no_color_wins_over_detection_but_not_over_an_explicit_choice() {
+    let env = [
+        ("NO_COLOR", "1"),
+        ("COLORTERM", "truecolor"),
+        ("TERM", "xterm-256color"),
+    ];
+    assert_eq!(detect(&env), ColorMode::Monochrome);
+    // An empty NO_COLOR does not count (no-color.org).
+    assert_eq!(
+        detect(&[("NO_COLOR", ""), ("COLORTERM", "truecolor")]),
+        ColorMode::TrueColor
+    );
+    let lookup = |name: &str| {
+        env.iter()
+            .find(|(k, _)| *k == name)
+            .map(|(_, v)| v.to_string())
+    };
+    let explicit: ColorChoice = "256".parse().unwrap();
+    assert_eq!(explicit.resolve(lookup), ColorMode::Ansi256);
+    assert_eq!(ColorChoice::Auto.resolve(lookup), ColorMode::Monochrome);
+}
+
+#[test]
+fn colors_argument_parses() {
+    let parse = |s: &str| s.parse::<ColorChoice>();
+    assert_eq!(
+        parse("truecolor"),
+        Ok(ColorChoice::Fixed(ColorMode::TrueColor))
+    );
+    assert_eq!(parse("256"), Ok(ColorChoice::Fixed(ColorMode::Ansi256)));
+    assert_eq!(parse("16"), Ok(ColorChoice::Fixed(ColorMode::Ansi16)));
+    assert_eq!(parse("none"), Ok(ColorChoice::Fixed(ColorMode::Monochrome)));
+    assert_eq!(parse("AUTO"), Ok(ColorChoice::Auto));
+    let error = parse("8").unwrap_err().to_string();
+    assert!(
+        error.contains("\"8\"") && error.contains("truecolor"),
+        "{error}"
+    );
+}
+
+#[test]
+fn sanitize_escapes_everything_that_steers_a_terminal() {
+    assert!(matches!(
+        sanitize("plain name.bump"),
+        std::borrow::Cow::Borrowed(_)
+    ));
+    assert_eq!(sanitize("évolution ▀ ok"), "évolution ▀ ok");
+    assert_eq!(sanitize("a\x1b[31mred\x1b[0m"), "a\\e[31mred\\e[0m");
+    assert_eq!(sanitize("ding\x07"), "ding\\x07");
+    assert_eq!(sanitize("line\nnext\r\tx"), "line\\nnext\\r\\tx");
+    assert_eq!(sanitize("\x1b]0;title\x07"), "\\e]0;title\\x07");
+    assert_eq!(sanitize("c1 \u{9b}2J csi"), "c1 \\u{9b}2J csi");
+    assert_eq!(sanitize("del\x7f nul\0"), "del\\x7f nul\\x00");
+    assert_eq!(sanitize("evil\u{202e}txt.exe"), "evil\\u{202e}txt.exe");
+    for text in ["\x1b[2J\x1b[H", "x\u{85}y", "\u{1b}P q\u{1b}\\"] {
+        assert!(!sanitize(text).chars().any(|c| c.is_control()), "{text:?}");
+    }
+}
+
+#[test]
+fn restore_sequence_leaves_the_alternate_screen_and_shows_the_cursor() {
+    let mut out = Vec::new();
+    write_restore_sequence(&mut out, TerminalModes::ALL).unwrap();
+    let text = String::from_utf8(out).unwrap();
+    assert!(
+        text.contains("\x1b[?1049l"),
+        "leave alternate screen: {text:?}"
+    );
+    assert!(text.contains("\x1b[?25h"), "show cursor: {text:?}");
+    assert!(text.contains("\x1b[?1000l"), "mouse capture off: {text:?}");
+    assert!(
+        text.starts_with("\x1b[?2026l"),
+        "end any open synchronized update first: {text:?}"
+    );
+    // Leaving the alternate screen comes last, so nothing else lands on the user's screen.
+    assert!(text.ends_with("\x1b[?1049l"), "{text:?}");
+}
+
+#[test]
+fn restore_undoes_only_what_was_entered() {
+    let mut out = Vec::new();
+    write_restore_sequence(
+        &mut out,
+        TerminalModes::ALTERNATE_SCREEN | TerminalModes::HIDDEN_CURSOR,
+    )
+    .unwrap();
+    let text = String::from_utf8(out).unwrap();
+    assert!(!text.contains("\x1b[?1000l"), "{text:?}");
+    let mut enter = Vec::new();
+    write_enter_sequence(
+        &mut enter,
+        TerminalModes::ALTERNATE_SCREEN | TerminalModes::HIDDEN_CURSOR,
+    )
+    .unwrap();
+    let enter = String::from_utf8(enter).unwrap();
+    assert!(
+        enter.contains("\x1b[?1049h") && enter.contains("\x1b[?25l"),
+        "{enter:?}"
+    );
+}
