@@ -1,1 +1,23 @@
-//! Image textures (issue 4): to be written.
+//! Image textures: loading (with limits), linear texels, mip chains, samplers,
+//! wrap modes, images as bump maps, and the mappings from surfaces to texture space.
+//!
+//! Conventions: texture coordinates `(s, t)` in `[0, 1)` span the image, `s` across
+//! from the left edge, `t` down from the TOP row (as images are stored).
+
+mod colour;
+mod encoding;
+mod error;
+mod load;
+mod mip;
+mod raster;
+mod sampler;
+mod wrap;
+
+pub use colour::{Texel, Texture};
+pub use encoding::{Encoding, linear_to_srgb, srgb_to_linear};
+pub use error::{PrintableName, Reason, TextureError};
+pub use load::{ImageInfo, Limits, LoadedImage, check_image, decode_image, load_image};
+pub use mip::{Blend, MipChain};
+pub use raster::Raster;
+pub use sampler::{Filter, Footprint, Sampler};
+pub use wrap::Wrap;
