@@ -7,6 +7,7 @@
 mod colour;
 mod encoding;
 mod error;
+mod height;
 mod load;
 mod mip;
 mod raster;
@@ -16,6 +17,7 @@ mod wrap;
 pub use colour::{Texel, Texture};
 pub use encoding::{Encoding, linear_to_srgb, srgb_to_linear};
 pub use error::{PrintableName, Reason, TextureError};
+pub use height::{HeightMap, HeightSample};
 pub use load::{ImageInfo, Limits, LoadedImage, check_image, decode_image, load_image};
 pub use mip::{Blend, MipChain};
 pub use raster::Raster;
