@@ -242,6 +242,8 @@ fn mentions_early_end(error: &(dyn std::error::Error + 'static)) -> bool {
             "truncated",
             "too short",
             "no more data",
+            "not enough bytes",
+            "not enough data",
         ]
         .iter()
         .any(|phrase| text.contains(phrase))
