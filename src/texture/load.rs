@@ -11,6 +11,7 @@ use image::{DynamicImage, ImageDecoder, ImageError, ImageFormat, ImageReader};
 use super::colour::Texel;
 use super::encoding::Encoding;
 use super::error::{Reason, TextureError};
+use super::plain_pnm;
 use super::raster::Raster;
 
 /// Bounds on what a file may make us allocate. All are checked from the header.
@@ -136,7 +137,8 @@ fn decode(bytes: &[u8], name: &Path, limits: &Limits) -> Result<(ImageInfo, Dyna
         return Err(Reason::Truncated);
     }
     let format = guess_format(bytes, name)?;
-    let mut reader = ImageReader::new(Cursor::new(bytes));
+    let bytes = plain_pnm::strip_comments(bytes);
+    let mut reader = ImageReader::new(Cursor::new(&bytes[..]));
     reader.set_format(format);
     reader.limits(decoder_limits(limits));
     let decoder = reader.into_decoder().map_err(classify)?;
@@ -154,12 +156,23 @@ fn decode(bytes: &[u8], name: &Path, limits: &Limits) -> Result<(ImageInfo, Dyna
     Ok((info, image))
 }
 
-/// The content decides (a misnamed PNG still loads); the extension is the fallback,
-/// needed for TGA, which has no signature.
+/// The content decides (a misnamed PNG still loads). TGA has no signature, so only
+/// its extension can name it; a known extension on unrecognised content is corrupt.
 fn guess_format(bytes: &[u8], name: &Path) -> Result<ImageFormat, Reason> {
-    image::guess_format(bytes)
-        .or_else(|_| ImageFormat::from_path(name))
-        .map_err(|_| Reason::Unsupported(describe_signature(bytes)))
+    if let Ok(format) = image::guess_format(bytes) {
+        return Ok(format);
+    }
+    let signature = describe_signature(bytes);
+    match ImageFormat::from_path(name) {
+        Ok(ImageFormat::Tga) => Ok(ImageFormat::Tga),
+        Ok(
+            format @ (ImageFormat::Png | ImageFormat::Jpeg | ImageFormat::Pnm | ImageFormat::Bmp),
+        ) => Err(Reason::Corrupt(format!(
+            "not a valid {} file: {signature}",
+            format_name(format)
+        ))),
+        _ => Err(Reason::Unsupported(signature)),
+    }
 }
 
 fn describe_signature(bytes: &[u8]) -> String {

@@ -10,6 +10,7 @@ mod error;
 mod height;
 mod load;
 mod mip;
+mod plain_pnm;
 mod raster;
 mod sampler;
 mod wrap;
