@@ -9,6 +9,7 @@ mod encoding;
 mod error;
 mod height;
 mod load;
+mod mapping;
 mod mip;
 mod plain_pnm;
 mod raster;
@@ -20,6 +21,10 @@ pub use encoding::{Encoding, linear_to_srgb, srgb_to_linear};
 pub use error::{PrintableName, Reason, TextureError};
 pub use height::{HeightMap, HeightSample};
 pub use load::{ImageInfo, Limits, LoadedImage, check_image, decode_image, load_image};
+pub use mapping::{
+    Cylindrical, Mapped, Mapping, Planar, PlanarLayout, Scroll, Spherical, SurfacePoint, SurfaceUv,
+    TextureMapping, TriangleMap,
+};
 pub use mip::{Blend, MipChain};
 pub use raster::Raster;
 pub use sampler::{Filter, Footprint, Sampler};
