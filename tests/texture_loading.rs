@@ -182,3 +182,17 @@ fn configured_limits_reject_a_file_the_defaults_accept() {
     let error = load_image(&path, &small_memory, Encoding::Linear).unwrap_err();
     assert!(matches!(error.reason, Reason::Oversized { .. }), "{error}");
 }
+
+#[test]
+fn an_endless_device_is_cut_off_at_the_byte_limit() {
+    let zero = Path::new("/dev/zero");
+    if !zero.exists() {
+        return; // not a Unix system: nothing to check
+    }
+    let limits = Limits {
+        max_bytes: 1 << 20,
+        ..Limits::default()
+    };
+    let error = load_image(zero, &limits, Encoding::Srgb).unwrap_err();
+    assert!(matches!(error.reason, Reason::Oversized { .. }), "{error}");
+}

@@ -1,7 +1,7 @@
 //! Reading image files into linear texels, with size limits checked from the header
 //! before anything large is allocated.
 
-use std::io::{self, Cursor};
+use std::io::{self, Cursor, Read};
 use std::panic::{self, AssertUnwindSafe};
 use std::path::Path;
 
@@ -39,8 +39,10 @@ pub struct ImageInfo {
     pub width: u32,
     pub height: u32,
     pub format: &'static str,
-    /// 1 grey, 2 grey+alpha, 3 RGB, 4 RGBA (palette images report what they expand to).
+    /// As decoded: 1 grey, 2 grey+alpha, 3 RGB, 4 RGBA (palette images report what
+    /// they expand to).
     pub channels: u8,
+    /// As decoded: 8 or 16 (1-, 2- and 4-bit files expand to 8).
     pub bits_per_channel: u8,
 }
 
@@ -108,21 +110,23 @@ pub fn decode_image(
     Ok(LoadedImage { info, texels })
 }
 
+/// Reads at most `max_bytes` (+1 to notice more): the size in the metadata is not
+/// trusted, since devices and pipes report 0 and would otherwise be read forever.
 fn read_file(path: &Path, limits: &Limits) -> Result<Vec<u8>, Reason> {
-    let metadata = std::fs::metadata(path).map_err(io_reason)?;
-    if metadata.is_dir() {
+    let file = std::fs::File::open(path).map_err(io_reason)?;
+    if file.metadata().map_err(io_reason)?.is_dir() {
         return Err(Reason::Unreadable("it is a directory".into()));
     }
-    if metadata.len() > limits.max_bytes {
+    let mut bytes = Vec::new();
+    file.take(limits.max_bytes.saturating_add(1))
+        .read_to_end(&mut bytes)
+        .map_err(io_reason)?;
+    if bytes.len() as u64 > limits.max_bytes {
         return Err(Reason::Oversized {
-            detail: format!(
-                "the file is {} bytes, over the {} byte limit",
-                metadata.len(),
-                limits.max_bytes
-            ),
+            detail: format!("the file is over the {} byte limit", limits.max_bytes),
         });
     }
-    std::fs::read(path).map_err(io_reason)
+    Ok(bytes)
 }
 
 fn io_reason(error: io::Error) -> Reason {
@@ -280,6 +284,7 @@ fn format_name(format: ImageFormat) -> &'static str {
 }
 
 /// Converts to premultiplied linear RGBA (see `Texel`); grey is replicated to RGB.
+/// Every colour file is taken as sRGB: PNG gAMA/iCCP chunks are not applied.
 fn to_linear_texels(image: &DynamicImage, encoding: Encoding) -> Raster<Texel> {
     let (width, height) = (image.width(), image.height());
     let channels = usize::from(image.color().channel_count());

@@ -3,6 +3,15 @@
 //!
 //! Conventions: texture coordinates `(s, t)` in `[0, 1)` span the image, `s` across
 //! from the left edge, `t` down from the TOP row (as images are stored).
+//!
+//! The path of a textured fragment:
+//! 1. [`Texture::load`] / [`HeightMap::load`] (or [`check_image`] to validate only),
+//!    bounded by [`Limits`]; failures are a [`TextureError`] naming the file.
+//! 2. A [`Mapping`] turns a [`SurfacePoint`] into [`Mapped`] `st` and ∂(s,t)/∂(u,v).
+//! 3. [`Mapped::footprint`] chains that with the pixel's ∂(u,v)/∂x, ∂(u,v)/∂y.
+//! 4. [`Texture::sample`] with a [`Sampler`] (filter + per-axis [`Wrap`]) gives a
+//!    linear premultiplied [`Texel`]; [`HeightMap::sample_gradient`] gives the height
+//!    and ∂h/∂s, ∂h/∂t for Blinn's perturbation (chain with the Jacobian for B_u, B_v).
 
 mod colour;
 mod encoding;
