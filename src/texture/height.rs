@@ -11,7 +11,7 @@ use super::load::{Limits, load_image};
 use super::mip::MipChain;
 use super::raster::Raster;
 use super::sampler::Footprint;
-use super::wrap::Wrap;
+use super::wrap::{Wrap, floor};
 
 /// Rec. 709 luma weights, applied to the stored values.
 const LUMA: Vec3 = Vec3::new(0.2126, 0.7152, 0.0722);
@@ -93,7 +93,7 @@ impl HeightMap {
         footprint: Footprint,
     ) -> HeightSample {
         let lod = footprint.level_of_detail(&self.chain);
-        let fine = lod.floor();
+        let fine = floor(lod);
         let blend = lod - fine;
         let level = fine as usize;
         let near = bicubic(self.chain.level(level), st, wrap_s, wrap_t);
@@ -132,7 +132,7 @@ fn bicubic(level: &Raster<f32>, st: Vec2, wrap_s: Wrap, wrap_t: Wrap) -> HeightS
 
 fn cubic_taps(wrap: Wrap, s: f32, n: u32) -> ([u32; 4], f32) {
     let x = wrap.reduce(s) * n as f32 - 0.5;
-    let x0 = x.floor();
+    let x0 = floor(x);
     let i = x0 as i32;
     let taps = [i - 1, i, i + 1, i + 2].map(|k| wrap.index(k, n));
     (taps, x - x0)

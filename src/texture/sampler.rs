@@ -4,7 +4,7 @@ use glam::Vec2;
 
 use super::mip::{Blend, MipChain};
 use super::raster::Raster;
-use super::wrap::Wrap;
+use super::wrap::{Wrap, floor};
 
 /// How texels are combined into one value.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -66,7 +66,7 @@ impl Sampler {
     #[inline]
     pub fn trilinear<T: Blend>(&self, chain: &MipChain<T>, st: Vec2, footprint: Footprint) -> T {
         let lod = footprint.level_of_detail(chain);
-        let fine = lod.floor();
+        let fine = floor(lod);
         let blend = lod - fine;
         let fine = fine as usize;
         let near = self.bilinear(chain.level(fine), st);
@@ -94,7 +94,7 @@ impl Sampler {
 #[inline(always)]
 pub(crate) fn linear_taps(wrap: Wrap, s: f32, n: u32) -> (u32, u32, f32) {
     let x = wrap.reduce(s) * n as f32 - 0.5;
-    let x0 = x.floor();
+    let x0 = floor(x);
     let i0 = x0 as i32;
     (wrap.index(i0, n), wrap.index(i0 + 1, n), x - x0)
 }

@@ -22,8 +22,8 @@ impl Wrap {
             return 0.0;
         }
         match self {
-            Wrap::Repeat => s - s.floor(),
-            Wrap::Mirror => s - 2.0 * (0.5 * s).floor(),
+            Wrap::Repeat => s - floor(s),
+            Wrap::Mirror => s - 2.0 * floor(0.5 * s),
             Wrap::Clamp => s.clamp(-1.0, 2.0),
         }
     }
@@ -50,13 +50,39 @@ impl Wrap {
     /// The texel containing coordinate `s` (`[0, 1)` spans the `n` texels).
     #[inline]
     pub fn texel(self, s: f32, n: u32) -> u32 {
-        self.index((self.reduce(s) * n as f32).floor() as i32, n)
+        self.index(floor(self.reduce(s) * n as f32) as i32, n)
+    }
+}
+
+/// `f32::floor` for finite inputs, without a call: on baseline x86-64 (no SSE4.1
+/// `roundss`) `floor` is a libm call, the largest cost of a nearest sample.
+/// Floats of magnitude 2^23 or more are already integers.
+#[inline(always)]
+pub(crate) fn floor(x: f32) -> f32 {
+    if x.abs() < 8_388_608.0 {
+        let truncated = (x as i32) as f32;
+        if truncated > x {
+            truncated - 1.0
+        } else {
+            truncated
+        }
+    } else {
+        x
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn floor_matches_std_for_finite_values() {
+        for x in [
+            0.0, -0.0, 0.5, -0.5, -1.0, 1.0, 2.5, -2.5, -1e-9, 8388607.5, -8388607.5, 1e20, -1e20,
+        ] {
+            assert_eq!(floor(x), x.floor(), "{x}");
+        }
+    }
 
     #[test]
     fn repeat_is_floored_modulo() {
