@@ -2,7 +2,7 @@
 
 use std::path::Path;
 
-use glam::{Vec2, Vec3};
+use glam::{Mat2, Vec2, Vec3};
 
 use super::colour::Texel;
 use super::encoding::Encoding;
@@ -23,6 +23,15 @@ pub struct HeightSample {
     pub height: f32,
     pub dh_ds: f32,
     pub dh_dt: f32,
+}
+
+impl HeightSample {
+    /// Blinn's `(B_u, B_v)`: the slope along the surface parameters, given the mapping's
+    /// Jacobian ∂(s,t)/∂(u,v) (columns ∂/∂u, ∂/∂v), by the chain rule.
+    pub fn surface_gradient(&self, jacobian: Mat2) -> Vec2 {
+        let slope = Vec2::new(self.dh_ds, self.dh_dt);
+        Vec2::new(slope.dot(jacobian.x_axis), slope.dot(jacobian.y_axis))
+    }
 }
 
 impl std::ops::Add for HeightSample {
@@ -161,6 +170,18 @@ fn catmull_rom_slope(f: f32) -> [f32; 4] {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn surface_gradient_applies_the_chain_rule() {
+        let sample = HeightSample {
+            height: 0.0,
+            dh_ds: 2.0,
+            dh_dt: -1.0,
+        };
+        // s = 3u + v, t = 5v  =>  B_u = 2·3, B_v = 2·1 − 1·5.
+        let jacobian = Mat2::from_cols(Vec2::new(3.0, 0.0), Vec2::new(1.0, 5.0));
+        assert_eq!(sample.surface_gradient(jacobian), Vec2::new(6.0, -3.0));
+    }
 
     #[test]
     fn weights_partition_unity_and_slopes_sum_to_zero() {
