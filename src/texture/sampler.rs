@@ -47,14 +47,14 @@ impl Sampler {
         }
     }
 
-    #[inline]
+    #[inline(always)]
     pub fn nearest<T: Blend>(&self, level: &Raster<T>, st: Vec2) -> T {
         let x = self.wrap_s.texel(st.x, level.width());
         let y = self.wrap_t.texel(st.y, level.height());
         level.at(x, y)
     }
 
-    #[inline]
+    #[inline(always)]
     pub fn bilinear<T: Blend>(&self, level: &Raster<T>, st: Vec2) -> T {
         let (x0, x1, fx) = linear_taps(self.wrap_s, st.x, level.width());
         let (y0, y1, fy) = linear_taps(self.wrap_t, st.y, level.height());

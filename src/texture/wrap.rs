@@ -16,7 +16,7 @@ impl Wrap {
     /// Maps a coordinate to a small range that looks up the same texels, so texel
     /// indices fit an `i32` whatever the input; non-finite coordinates become 0.
     /// Repeat gives `[0, 1]`, Mirror `[0, 2]`, Clamp `[-1, 2]`.
-    #[inline]
+    #[inline(always)]
     pub fn reduce(self, s: f32) -> f32 {
         if !s.is_finite() {
             return 0.0;
@@ -30,7 +30,7 @@ impl Wrap {
 
     /// The texel index `i` lands on in an axis of `n` texels, for `i` from a reduced
     /// coordinate (`-n - 1 ..= 2n`); always `< n`, so lookups never go out of bounds.
-    #[inline]
+    #[inline(always)]
     pub fn index(self, i: i32, n: u32) -> u32 {
         let n = n as i32;
         if (0..n).contains(&i) {
@@ -48,7 +48,7 @@ impl Wrap {
     }
 
     /// The texel containing coordinate `s` (`[0, 1)` spans the `n` texels).
-    #[inline]
+    #[inline(always)]
     pub fn texel(self, s: f32, n: u32) -> u32 {
         self.index(floor(self.reduce(s) * n as f32) as i32, n)
     }
