@@ -316,3 +316,54 @@ fn colour_images_give_height_by_luma() {
         "{g:?}"
     );
 }
+
+#[test]
+fn mip_levels_average_in_linear_light() {
+    let dir = std::env::temp_dir().join(format!("bumpwork-texture-{}-linear", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("checker.pgm");
+    let mut bytes = b"P5 8 8 255\n".to_vec();
+    bytes.extend((0..64).map(|i| if (i % 8 + i / 8) % 2 == 0 { 0u8 } else { 255 }));
+    std::fs::write(&path, bytes).unwrap();
+    let texture = Texture::load(&path, &Limits::default()).unwrap();
+    let coarsest = texture.mip_chain().levels().last().unwrap().at(0, 0);
+    // Half the light of white, which sRGB would store as ~0.735, not as code 128.
+    assert!(
+        close(coarsest, Texel::new(0.5, 0.5, 0.5, 1.0), 1e-6),
+        "{coarsest}"
+    );
+}
+
+#[test]
+fn height_is_interpolated_through_the_texel_centres() {
+    let heights = Raster::from_fn(6, 5, |x, y| ((x * 5 + y * 3) % 7) as f32 / 6.0);
+    let map = HeightMap::from_heights(heights.clone());
+    for (x, y) in [(0, 0), (2, 3), (5, 4)] {
+        let st = Vec2::new((x as f32 + 0.5) / 6.0, (y as f32 + 0.5) / 5.0);
+        let g = map.sample_gradient(st, Wrap::Repeat, Wrap::Repeat, Footprint::POINT);
+        assert!(
+            (g.height - heights.at(x, y)).abs() < 1e-5,
+            "({x},{y}): {g:?}"
+        );
+    }
+}
+
+#[test]
+fn minified_bumps_flatten_instead_of_aliasing() {
+    let checker = Raster::from_fn(64, 64, |x, y| ((x + y) % 2) as f32);
+    let map = HeightMap::from_heights(checker);
+    let st = Vec2::new(0.3, 0.7);
+    let sharp = map.sample_gradient(st, Wrap::Repeat, Wrap::Repeat, Footprint::POINT);
+    let far = map.sample_gradient(
+        st,
+        Wrap::Repeat,
+        Wrap::Repeat,
+        Footprint::new(0.5, 0.0, 0.0, 0.5),
+    );
+    assert!(
+        sharp.dh_ds.abs() > 10.0,
+        "magnified checker must be steep: {sharp:?}"
+    );
+    assert!(far.dh_ds.abs() < 1e-3 && far.dh_dt.abs() < 1e-3, "{far:?}");
+    assert!((far.height - 0.5).abs() < 1e-4, "{far:?}");
+}
