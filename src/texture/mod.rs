@@ -11,7 +11,7 @@
 //! 3. [`Mapped::footprint`] chains that with the pixel's ∂(u,v)/∂x, ∂(u,v)/∂y.
 //! 4. [`Texture::sample`] with a [`Sampler`] (filter + per-axis [`Wrap`]) gives a
 //!    linear premultiplied [`Texel`]; [`HeightMap::sample_gradient`] gives the height
-//!    and ∂h/∂s, ∂h/∂t for Blinn's perturbation (chain with the Jacobian for B_u, B_v).
+//!    and ∂h/∂s, ∂h/∂t, and [`HeightSample::surface_gradient`] Blinn's (B_u, B_v).
 
 mod colour;
 mod encoding;
