@@ -1,0 +1,76 @@
+//! A colour texture: linear texels and their mip chain.
+
+use std::path::Path;
+
+use glam::{Vec2, Vec4};
+
+use super::encoding::Encoding;
+use super::error::TextureError;
+use super::load::{ImageInfo, Limits, load_image};
+use super::mip::MipChain;
+use super::raster::Raster;
+use super::sampler::{Footprint, Sampler};
+
+/// One texel: linear-light RGB with premultiplied alpha, `f32` per channel.
+///
+/// Why this type: shading and filtering add light, so texels are stored already
+/// sRGB-decoded (linear). 8-bit sRGB needs ~12 bits once linear to keep its darks, so
+/// `u8` is out; `u16` would fit but costs a conversion per tap in the hot path, while
+/// `f32` in a `Vec4` makes a bilinear blend three SIMD lerps. Alpha is premultiplied
+/// so averaging (mip levels, bilinear) never bleeds the colour of transparent texels
+/// into their neighbours. The price is 16 bytes per texel, counted by `Limits`.
+pub type Texel = Vec4;
+
+/// A colour image ready for sampling.
+#[derive(Debug, Clone)]
+pub struct Texture {
+    chain: MipChain<Texel>,
+    info: Option<ImageInfo>,
+}
+
+impl Texture {
+    /// Loads a colour image (sRGB-decoded) and builds its mip chain.
+    pub fn load(path: impl AsRef<Path>, limits: &Limits) -> Result<Self, TextureError> {
+        let image = load_image(path.as_ref(), limits, Encoding::Srgb)?;
+        Ok(Self {
+            chain: MipChain::build(image.texels),
+            info: Some(image.info),
+        })
+    }
+
+    /// A texture from texels already in linear light.
+    pub fn from_raster(texels: Raster<Texel>) -> Self {
+        Self {
+            chain: MipChain::build(texels),
+            info: None,
+        }
+    }
+
+    /// The file's description, if it came from a file.
+    pub fn info(&self) -> Option<&ImageInfo> {
+        self.info.as_ref()
+    }
+
+    pub fn width(&self) -> u32 {
+        self.chain.base().width()
+    }
+
+    pub fn height(&self) -> u32 {
+        self.chain.base().height()
+    }
+
+    pub fn mip_chain(&self) -> &MipChain<Texel> {
+        &self.chain
+    }
+
+    /// The filtered colour at `st` (`[0,1)²` spans the image, t = 0 at the top row).
+    #[inline]
+    pub fn sample(&self, sampler: &Sampler, st: Vec2, footprint: Footprint) -> Texel {
+        sampler.sample(&self.chain, st, footprint)
+    }
+
+    /// The mip level `footprint` selects, in `[0, levels − 1]`, never NaN.
+    pub fn level_of_detail(&self, footprint: Footprint) -> f32 {
+        footprint.level_of_detail(&self.chain)
+    }
+}

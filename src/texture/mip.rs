@@ -1,0 +1,135 @@
+//! The mip chain: each level the box-filtered half of the one before, down to 1×1.
+
+use std::ops::{Add, Mul};
+
+use super::raster::Raster;
+
+/// What can be averaged: linear texels (`Vec4`) and heights (`f32`).
+pub trait Blend: Copy + Default + Add<Output = Self> + Mul<f32, Output = Self> {}
+impl<T: Copy + Default + Add<Output = T> + Mul<f32, Output = T>> Blend for T {}
+
+/// Levels from full size (0) to 1×1. Sides halve rounding down, never below 1, so
+/// non-power-of-two and 1×N images work; odd sides use exact fractional box weights,
+/// which keeps every level's average equal to the image's.
+#[derive(Debug, Clone)]
+pub struct MipChain<T> {
+    levels: Vec<Raster<T>>,
+}
+
+impl<T: Blend> MipChain<T> {
+    pub fn build(base: Raster<T>) -> Self {
+        let mut levels = vec![base];
+        while let Some(next) = levels.last().and_then(downsample) {
+            levels.push(next);
+        }
+        Self { levels }
+    }
+
+    pub fn levels(&self) -> &[Raster<T>] {
+        &self.levels
+    }
+
+    pub fn base(&self) -> &Raster<T> {
+        &self.levels[0]
+    }
+
+    /// `level` is clamped to the chain.
+    #[inline]
+    pub fn level(&self, level: usize) -> &Raster<T> {
+        &self.levels[level.min(self.levels.len() - 1)]
+    }
+
+    pub fn coarsest_level(&self) -> usize {
+        self.levels.len() - 1
+    }
+}
+
+/// The next level, or `None` once the raster is 1×1.
+fn downsample<T: Blend>(src: &Raster<T>) -> Option<Raster<T>> {
+    if src.width() == 1 && src.height() == 1 {
+        return None;
+    }
+    let (w, h) = (half(src.width()), half(src.height()));
+    let columns = box_taps(src.width(), w);
+    let rows = box_taps(src.height(), h);
+    Some(Raster::from_fn(w, h, |x, y| {
+        let mut sum = T::default();
+        for &(j, wy) in &rows[y as usize] {
+            for &(i, wx) in &columns[x as usize] {
+                sum = sum + src.at(i, j) * (wx * wy);
+            }
+        }
+        sum
+    }))
+}
+
+fn half(side: u32) -> u32 {
+    (side / 2).max(1)
+}
+
+/// For each destination texel, the source texels it covers and their weights:
+/// destination `x` spans source `[x·r, (x+1)·r)` with `r = src / dst`.
+fn box_taps(src: u32, dst: u32) -> Vec<Vec<(u32, f32)>> {
+    let ratio = f64::from(src) / f64::from(dst);
+    (0..dst)
+        .map(|x| {
+            let (start, end) = (f64::from(x) * ratio, f64::from(x + 1) * ratio);
+            let first = start.floor() as u32;
+            let last = (end.ceil() as u32).min(src);
+            (first..last)
+                .map(|i| {
+                    let overlap = end.min(f64::from(i + 1)) - start.max(f64::from(i));
+                    (i, (overlap / ratio) as f32)
+                })
+                .filter(|&(_, w)| w > 0.0)
+                .collect()
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn mean(raster: &Raster<f32>) -> f32 {
+        raster.texels().iter().sum::<f32>() / raster.texels().len() as f32
+    }
+
+    #[test]
+    fn odd_sizes_keep_the_average_and_end_at_one_texel() {
+        let base = Raster::from_fn(7, 3, |x, y| (x * 3 + y * y) as f32);
+        let chain = MipChain::build(base.clone());
+        let sizes: Vec<_> = chain
+            .levels()
+            .iter()
+            .map(|l| (l.width(), l.height()))
+            .collect();
+        assert_eq!(sizes, [(7, 3), (3, 1), (1, 1)]);
+        for level in chain.levels() {
+            assert!((mean(level) - mean(&base)).abs() < 1e-4);
+        }
+    }
+
+    #[test]
+    fn one_by_n_and_one_by_one() {
+        let chain = MipChain::build(Raster::from_fn(1, 5, |_, y| y as f32));
+        assert_eq!(chain.levels().len(), 3);
+        assert_eq!(chain.level(99).texels(), &[2.0]);
+        assert_eq!(
+            MipChain::build(Raster::from_fn(1, 1, |_, _| 4.0))
+                .levels()
+                .len(),
+            1
+        );
+    }
+
+    #[test]
+    fn weights_sum_to_one() {
+        for (src, dst) in [(2, 1), (3, 1), (9, 4), (1, 1)] {
+            for taps in box_taps(src, dst) {
+                let total: f32 = taps.iter().map(|t| t.1).sum();
+                assert!((total - 1.0).abs() < 1e-6, "{src}->{dst}: {taps:?}");
+            }
+        }
+    }
+}
