@@ -6,11 +6,11 @@
 
 use bumpwork::measure::Timing;
 use bumpwork::raster::{
-    Camera, Fragment, FragmentShader, Framebuffer, Interpolation, LitShader, PreparedScene,
+    Camera, Fragment, FrameObject, Framebuffer, Interpolation, PerFragment, PreparedScene,
     RenderTarget, Viewport, frame_objects, render_into, screen_triangles,
 };
 use bumpwork::scene::{Light, Material, Object, Scene};
-use bumpwork::shade::FrameLights;
+use bumpwork::shade::LitShader;
 use bumpwork::surface::{Sphere, Surface, Tessellation};
 use glam::{DVec3, Vec3};
 
@@ -50,15 +50,6 @@ fn sphere_scene() -> Scene {
     }
 }
 
-/// Coverage and visibility only: isolates the rasterizer from the cost of lighting.
-struct FlatShader;
-
-impl FragmentShader for FlatShader {
-    fn shade(&self, _: &Fragment) -> Vec3 {
-        Vec3::ONE
-    }
-}
-
 fn main() {
     let scene = sphere_scene();
     let camera = scene.camera.clone();
@@ -71,9 +62,7 @@ fn main() {
         },
         interpolation: Interpolation::PerspectiveCorrect,
     };
-    let lit = LitShader {
-        lights: FrameLights::new(prepared.scene.ambient, &prepared.scene.lights, camera.eye),
-    };
+    let lit = LitShader::new(&prepared.scene, &camera);
     let mut framebuffer = Framebuffer::new(1920, 1080, Vec3::ZERO);
     let one_thread = rayon::ThreadPoolBuilder::new()
         .num_threads(1)
@@ -93,7 +82,13 @@ fn main() {
     });
     let flat = one_thread.install(|| {
         Timing::measure(3, RUNS, || {
-            render_into(&prepared, &target, &FlatShader, &mut framebuffer);
+            // Coverage and visibility only: isolates the rasterizer from the cost of lighting.
+            render_into(
+                &prepared,
+                &target,
+                &PerFragment(|_: &FrameObject, _: &Fragment| Vec3::ONE),
+                &mut framebuffer,
+            );
         })
     });
     println!(

@@ -96,3 +96,66 @@ fn affine_uv_fails_the_same_check() {
     eprintln!("affine: max (u,v) error {error:.1}");
     assert!(error > 100.0 * TOLERANCE, "affine error only {error}");
 }
+
+#[test]
+fn screen_derivatives_of_uv_match_neighbouring_pixels() {
+    use bumpwork::raster::{
+        Fragment, FrameObject, PerFragment, PreparedScene, RenderTarget, render_with,
+    };
+    use bumpwork::surface::Tessellation;
+    let viewport = Viewport {
+        width: 320,
+        height: 200,
+    };
+    let (scene, _) = grazing_plane_scene();
+    let cam = scene.camera.clone();
+    let prepared = PreparedScene::new(scene, Tessellation { density: 1 });
+    let target = RenderTarget {
+        camera: &cam,
+        viewport,
+        interpolation: Interpolation::PerspectiveCorrect,
+    };
+    let shader =
+        PerFragment(|_: &FrameObject, f: &Fragment| Vec3::new(f.uv.x, f.duv_dx.x, f.duv_dy.y));
+    let fb = render_with(&prepared, &target, &shader).0;
+    let shader_v = PerFragment(|_: &FrameObject, f: &Fragment| Vec3::new(f.uv.y, 0.0, 0.0));
+    let fb_v = render_with(&prepared, &target, &shader_v).0;
+    let at = |x: u32, y: u32| (y * viewport.width + x) as usize;
+    let mut checked = 0;
+    for y in 1..viewport.height - 1 {
+        for x in 1..viewport.width - 1 {
+            let neighbours = [
+                at(x - 1, y),
+                at(x + 1, y),
+                at(x, y - 1),
+                at(x, y + 1),
+                at(x, y),
+            ];
+            if neighbours.iter().any(|&i| fb.depth[i].is_infinite()) {
+                continue;
+            }
+            let du_dx = (fb.color[at(x + 1, y)].x - fb.color[at(x - 1, y)].x) / 2.0;
+            let v = |x, y| fb_v.color[at(x, y)].x;
+            let (forward, backward) = (v(x, y + 1) - v(x, y), v(x, y) - v(x, y - 1));
+            let dv_dy = (forward + backward) / 2.0;
+            // Near the horizon v curves too fast between rows for a difference to be a reference.
+            if (forward - backward).abs() > 0.05 * dv_dy.abs() {
+                continue;
+            }
+            let c = fb.color[at(x, y)];
+            // u is linear along rows of a ground plane seen upright.
+            assert!(
+                (c.y - du_dx).abs() <= 1e-3 * du_dx.abs().max(1.0),
+                "du/dx {} vs {du_dx} at ({x}, {y})",
+                c.y
+            );
+            assert!(
+                (c.z - dv_dy).abs() <= 0.02 * dv_dy.abs().max(1e-2),
+                "dv/dy {} vs {dv_dy} at ({x}, {y})",
+                c.z
+            );
+            checked += 1;
+        }
+    }
+    assert!(checked > 20_000, "{checked}");
+}

@@ -9,18 +9,21 @@
 mod bin;
 mod camera;
 mod clip;
+mod fragment;
 mod framebuffer;
 mod pipeline;
 mod scan;
 mod setup;
+mod tile;
 
 pub use bin::{TILE_SIZE, TileBins};
 pub use camera::Camera;
 pub use clip::{ClipVertex, clip_triangle};
+pub use fragment::{Fragment, FragmentShader, FrameObject, PerFragment};
 pub use framebuffer::{Framebuffer, linear_to_srgb8};
 pub use pipeline::{
-    Fragment, FragmentShader, FrameObject, FrameStats, Interpolation, LitShader, PreparedObject,
-    PreparedScene, RenderTarget, frame_objects, render, render_into, render_with, screen_triangles,
+    FrameStats, Interpolation, PreparedObject, PreparedScene, RenderTarget, frame_objects, render,
+    render_into, render_with, screen_triangles,
 };
 pub use scan::{PixelRect, scan_triangle};
 pub use setup::{SUBPIXEL_BITS, ScreenTriangle, TrianglePlanes, Viewport};

@@ -1,13 +1,14 @@
 use super::bin::{TILE_SIZE, TileBins};
 use super::camera::Camera;
 use super::clip::{ClipVertex, clip_triangle};
+use super::fragment::{FragmentShader, FrameObject};
 use super::framebuffer::Framebuffer;
-use super::scan::{PixelRect, scan_triangle};
 use super::setup::{ScreenTriangle, TrianglePlanes, Viewport};
+use super::tile::{StripOutput, TileBuffers, TileFrame};
 use crate::scene::{Material, Scene};
-use crate::shade::{FrameLights, blinn_phong};
+use crate::shade::LitShader;
 use crate::surface::{Mesh, Surface, Tessellation};
-use glam::{Mat4, Vec2, Vec3, Vec4};
+use glam::{Mat4, Vec3, Vec4};
 use rayon::prelude::*;
 
 /// A scene's objects tessellated once, reused for every frame until the scene or density changes.
@@ -69,52 +70,9 @@ pub enum Interpolation {
     Affine,
 }
 
-/// Per-object state for one frame, in camera-relative space.
-pub struct FrameObject<'a> {
-    pub prepared: &'a PreparedObject,
-    /// The surface's anchor relative to the eye, subtracted in f64 before narrowing to f32.
-    pub origin: Vec3,
-}
-
-/// What the shading stage knows about a visible pixel.
-pub struct Fragment<'a> {
-    pub object: &'a FrameObject<'a>,
-    pub object_index: u32,
-    pub uv: Vec2,
-    /// Distance along the view direction.
-    pub depth: f32,
-}
-
-/// The per-fragment program. Generic, so each shader's loop is compiled for it.
-pub trait FragmentShader: Sync {
-    fn shade(&self, fragment: &Fragment) -> Vec3;
-}
-
-/// The default program: the surface's exact frame at (u,v), lit by Blinn-Phong.
-pub struct LitShader {
-    pub lights: FrameLights,
-}
-
-impl FragmentShader for LitShader {
-    #[inline]
-    fn shade(&self, fragment: &Fragment) -> Vec3 {
-        let object = fragment.object;
-        let frame = object.prepared.surface.frame(fragment.uv.x, fragment.uv.y);
-        blinn_phong(
-            &self.lights,
-            &object.prepared.material,
-            object.origin + frame.p,
-            frame.n,
-        )
-    }
-}
-
 /// Renders a lit frame on the current rayon pool.
 pub fn render(prepared: &PreparedScene, target: &RenderTarget) -> (Framebuffer, FrameStats) {
-    let scene = &prepared.scene;
-    let shader = LitShader {
-        lights: FrameLights::new(scene.ambient, &scene.lights, target.camera.eye),
-    };
+    let shader = LitShader::new(&prepared.scene, target.camera);
     render_with(prepared, target, &shader)
 }
 
@@ -164,7 +122,11 @@ pub fn render_into(
     let objects = frame_objects(prepared, target.camera);
     let triangles = screen_triangles(&objects, target);
     let bins = TileBins::new(viewport, &triangles);
-    let perspective = target.interpolation == Interpolation::PerspectiveCorrect;
+    let frame = TileFrame {
+        objects: &objects,
+        shader,
+        perspective: target.interpolation == Interpolation::PerspectiveCorrect,
+    };
     let background = prepared.scene.background;
     framebuffer.resize(viewport.width, viewport.height);
     let strip = (TILE_SIZE * viewport.width) as usize;
@@ -175,6 +137,7 @@ pub fn render_into(
         .enumerate()
         .map(|(ty, (color, depth))| {
             let mut tile = TileBuffers::default();
+            let mut scratch = shader.scratch();
             let mut shaded = 0;
             for tx in 0..bins.tiles_x {
                 let rect = TileBins::tile_rect(viewport, tx, ty as u32);
@@ -191,7 +154,7 @@ pub fn render_into(
                     continue;
                 }
                 tile.resolve_visibility(&triangles, bin, &rect);
-                shaded += tile.shade(&triangles, &objects, shader, perspective, &rect, out);
+                shaded += tile.shade(&triangles, &frame, &mut scratch, &rect, out);
             }
             shaded
         })
@@ -249,107 +212,4 @@ fn object_triangles(
             })
         })
         .collect()
-}
-
-const NO_TRIANGLE: u32 = u32::MAX;
-const TILE_PIXELS: usize = (TILE_SIZE * TILE_SIZE) as usize;
-
-/// A tile's visibility: the nearest triangle per pixel, by interpolated 1/w (greater is nearer,
-/// and f32 keeps its precision best near 0, i.e. far away: the "reversed-z" trick).
-struct TileBuffers {
-    inv_w: Vec<f32>,
-    triangle: Vec<u32>,
-}
-
-impl Default for TileBuffers {
-    fn default() -> Self {
-        TileBuffers {
-            inv_w: vec![0.0; TILE_PIXELS],
-            triangle: vec![NO_TRIANGLE; TILE_PIXELS],
-        }
-    }
-}
-
-/// The rows of the framebuffer one tile row writes to.
-struct StripOutput<'a> {
-    color: &'a mut [Vec3],
-    depth: &'a mut [f32],
-    width: u32,
-    first_row: u32,
-    background: Vec3,
-}
-
-impl StripOutput<'_> {
-    fn fill_background(self, rect: &PixelRect) {
-        for y in rect.y0..=rect.y1 {
-            let row = ((y - self.first_row) * self.width) as usize;
-            let span = row + rect.x0 as usize..=row + rect.x1 as usize;
-            self.color[span.clone()].fill(self.background);
-            self.depth[span].fill(f32::INFINITY);
-        }
-    }
-}
-
-impl TileBuffers {
-    fn resolve_visibility(&mut self, triangles: &[ScreenTriangle], bin: &[u32], rect: &PixelRect) {
-        self.inv_w.fill(0.0);
-        self.triangle.fill(NO_TRIANGLE);
-        for &index in bin {
-            let t = &triangles[index as usize];
-            let (inv_w, triangle) = (&mut self.inv_w, &mut self.triangle);
-            scan_triangle(t, rect, |x, y| {
-                let depth = t.inv_w.at(pixel_offset(t, x, y));
-                let slot = ((y - rect.y0) * TILE_SIZE + (x - rect.x0)) as usize;
-                // Strictly nearer wins, so the first of two equal depths stays: deterministic.
-                if depth > inv_w[slot] {
-                    inv_w[slot] = depth;
-                    triangle[slot] = index;
-                }
-            });
-        }
-    }
-
-    fn shade(
-        &self,
-        triangles: &[ScreenTriangle],
-        objects: &[FrameObject],
-        shader: &impl FragmentShader,
-        perspective: bool,
-        rect: &PixelRect,
-        out: StripOutput,
-    ) -> usize {
-        let mut shaded = 0;
-        for y in rect.y0..=rect.y1 {
-            for x in rect.x0..=rect.x1 {
-                let slot = ((y - rect.y0) * TILE_SIZE + (x - rect.x0)) as usize;
-                let index = self.triangle[slot];
-                let pixel = ((y - out.first_row) * out.width + x) as usize;
-                if index == NO_TRIANGLE {
-                    out.color[pixel] = out.background;
-                    out.depth[pixel] = f32::INFINITY;
-                    continue;
-                }
-                let t = &triangles[index as usize];
-                let offset = pixel_offset(t, x, y);
-                let w = 1.0 / t.inv_w.at(offset);
-                let uv_plane = Vec2::new(t.u_over_w.at(offset), t.v_over_w.at(offset));
-                let fragment = Fragment {
-                    object: &objects[t.object as usize],
-                    object_index: t.object,
-                    uv: if perspective { uv_plane * w } else { uv_plane },
-                    depth: w,
-                };
-                out.color[pixel] = shader.shade(&fragment);
-                out.depth[pixel] = w;
-                shaded += 1;
-            }
-        }
-        shaded
-    }
-}
-
-/// The pixel centre relative to the triangle's attribute origin.
-#[inline]
-fn pixel_offset(t: &ScreenTriangle, x: u32, y: u32) -> Vec2 {
-    Vec2::new(x as f32 + 0.5, y as f32 + 0.5) - t.origin
 }

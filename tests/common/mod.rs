@@ -2,7 +2,7 @@
 #![allow(dead_code)]
 
 use bumpwork::raster::{
-    Camera, ClipVertex, Fragment, FragmentShader, Framebuffer, Interpolation, PixelRect,
+    Camera, ClipVertex, Fragment, FrameObject, Framebuffer, Interpolation, PerFragment, PixelRect,
     PreparedScene, RenderTarget, ScreenTriangle, TrianglePlanes, Viewport, render_with,
     scan_triangle,
 };
@@ -44,12 +44,8 @@ pub fn coverage(viewport: Viewport, triangles: &[ScreenTriangle]) -> Vec<u32> {
 }
 
 /// Writes each fragment's (u, v, object) into the colour channels.
-pub struct UvShader;
-
-impl FragmentShader for UvShader {
-    fn shade(&self, fragment: &Fragment) -> Vec3 {
-        Vec3::new(fragment.uv.x, fragment.uv.y, fragment.object_index as f32)
-    }
+pub fn uv_shader() -> PerFragment<impl Fn(&FrameObject, &Fragment) -> Vec3 + Sync> {
+    PerFragment(|_: &FrameObject, f: &Fragment| Vec3::new(f.uv.x, f.uv.y, f.object as f32))
 }
 
 pub fn render_uv(
@@ -65,7 +61,7 @@ pub fn render_uv(
         viewport,
         interpolation,
     };
-    render_with(&prepared, &target, &UvShader).0
+    render_with(&prepared, &target, &uv_shader()).0
 }
 
 /// A small deterministic generator, so failures reproduce.

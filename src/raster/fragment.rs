@@ -1,0 +1,58 @@
+use super::pipeline::PreparedObject;
+use glam::{Vec2, Vec3};
+
+/// Per-object state for one frame, in camera-relative space.
+pub struct FrameObject<'a> {
+    pub prepared: &'a PreparedObject,
+    /// The surface's anchor relative to the eye, subtracted in f64 before narrowing to f32.
+    pub origin: Vec3,
+}
+
+/// What the shading stage knows about a visible pixel: plain data, so a tile's fragments can be
+/// shaded as one batch.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Fragment {
+    /// Index into the frame's objects.
+    pub object: u32,
+    pub uv: Vec2,
+    /// Screen-space derivatives of (u,v) per pixel, from the same interpolants (for mip levels).
+    pub duv_dx: Vec2,
+    pub duv_dy: Vec2,
+    /// Distance along the view direction.
+    pub depth: f32,
+    /// The pixel, in the full image.
+    pub x: u32,
+    pub y: u32,
+}
+
+/// The per-fragment program, run on batches of fragments (a tile's visible pixels, any objects).
+/// Generic, so each program's loop is compiled for it; `Scratch` is per-thread working memory.
+pub trait FragmentShader: Sync {
+    type Scratch;
+
+    fn scratch(&self) -> Self::Scratch;
+
+    /// Writes one linear RGB colour per fragment into `out` (same length as `fragments`).
+    fn shade(
+        &self,
+        objects: &[FrameObject],
+        fragments: &[Fragment],
+        scratch: &mut Self::Scratch,
+        out: &mut [Vec3],
+    );
+}
+
+/// A shader from a function of one fragment, for programs that need no batching.
+pub struct PerFragment<F>(pub F);
+
+impl<F: Fn(&FrameObject, &Fragment) -> Vec3 + Sync> FragmentShader for PerFragment<F> {
+    type Scratch = ();
+
+    fn scratch(&self) {}
+
+    fn shade(&self, objects: &[FrameObject], fragments: &[Fragment], _: &mut (), out: &mut [Vec3]) {
+        for (fragment, out) in fragments.iter().zip(out) {
+            *out = (self.0)(&objects[fragment.object as usize], fragment);
+        }
+    }
+}
