@@ -1,0 +1,23 @@
+//! One file per subcommand; `main.rs` only parses and dispatches.
+
+pub mod render;
+
+/// Largest output side accepted; 16384² linear-light RGB is 3 GiB, the most an export should take.
+pub const MAX_SIDE: u32 = 16384;
+
+pub fn parse_size(text: &str) -> Result<(u32, u32), String> {
+    let expected = || {
+        format!("expected WIDTHxHEIGHT with each side 1..={MAX_SIDE}, like 1920x1080; got '{text}'")
+    };
+    let (w, h) = text.split_once(['x', 'X']).ok_or_else(expected)?;
+    let side = |s: &str| {
+        s.trim()
+            .parse::<u32>()
+            .ok()
+            .filter(|n| (1..=MAX_SIDE).contains(n))
+    };
+    match (side(w), side(h)) {
+        (Some(w), Some(h)) => Ok((w, h)),
+        _ => Err(expected()),
+    }
+}
