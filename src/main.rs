@@ -22,6 +22,8 @@ struct Cli {
 enum Command {
     /// Render a built-in scene or a scene file to a PNG still.
     Render(commands::render::RenderArgs),
+    /// Open the terminal workbench on scenes (default: every built-in scene).
+    View(commands::view::ViewArgs),
 }
 
 fn main() -> ExitCode {
@@ -48,10 +50,7 @@ fn main() -> ExitCode {
 fn run(cli: Cli) -> Result<(), Error> {
     match cli.command {
         Some(Command::Render(args)) => commands::render::run(args),
-        None => {
-            use clap::CommandFactory;
-            let _ = Cli::command().print_help();
-            Ok(())
-        }
+        Some(Command::View(args)) => commands::view::run(args),
+        None => commands::view::run(Default::default()),
     }
 }

@@ -1,6 +1,7 @@
 //! One file per subcommand; `main.rs` only parses and dispatches.
 
 pub mod render;
+pub mod view;
 
 /// Largest output side accepted; 16384² linear-light RGB is 3 GiB, the most an export should take.
 pub const MAX_SIDE: u32 = 16384;

@@ -1,0 +1,61 @@
+//! `bumpwork view` (and `bumpwork` alone): the terminal workbench.
+
+use bumpwork::Error;
+use bumpwork::term::{ColorChoice, GlyphSet};
+use bumpwork::tui::WorkbenchOptions;
+
+#[derive(clap::Args, Default)]
+pub struct ViewArgs {
+    /// Built-in scene names or scene files; none opens the gallery of every built-in scene.
+    scenes: Vec<String>,
+    /// Colours: truecolor, 256, 16, none or auto (from COLORTERM, TERM and NO_COLOR).
+    #[arg(long, default_value = "auto", value_parser = parse_colors)]
+    colors: Option<ColorChoice>,
+    /// Cell glyphs: half (works everywhere), quadrant or sextant (needs a font with them).
+    #[arg(long, default_value = "half", value_parser = parse_glyphs)]
+    glyphs: Option<GlyphSet>,
+    /// Animation frame rate cap.
+    #[arg(long, default_value_t = 30, value_parser = clap::value_parser!(u32).range(1..=240))]
+    fps: u32,
+    /// Leave the mouse to the terminal (text selection) instead of orbiting with it.
+    #[arg(long)]
+    no_mouse: bool,
+    /// Size of PNGs the export key writes, WIDTHxHEIGHT.
+    #[arg(long, default_value = "1920x1080", value_parser = super::parse_size)]
+    export_size: Option<(u32, u32)>,
+}
+
+pub fn run(args: ViewArgs) -> Result<(), Error> {
+    let defaults = WorkbenchOptions::default();
+    let options = WorkbenchOptions {
+        scenes: if args.scenes.is_empty() {
+            defaults.scenes
+        } else {
+            args.scenes
+        },
+        colors: args.colors.unwrap_or_default(),
+        glyphs: args.glyphs.unwrap_or_default(),
+        fps: if args.fps == 0 {
+            defaults.fps
+        } else {
+            args.fps
+        },
+        mouse: !args.no_mouse,
+        export_size: args.export_size.unwrap_or(defaults.export_size),
+    };
+    bumpwork::tui::run(&options)
+}
+
+fn parse_colors(text: &str) -> Result<ColorChoice, String> {
+    text.parse()
+        .map_err(|e: bumpwork::term::UnknownColorMode| e.to_string())
+}
+
+fn parse_glyphs(text: &str) -> Result<GlyphSet, String> {
+    match text {
+        "half" => Ok(GlyphSet::HalfBlock),
+        "quadrant" => Ok(GlyphSet::Quadrant),
+        "sextant" => Ok(GlyphSet::Sextant),
+        _ => Err(format!("expected half, quadrant or sextant; got '{text}'")),
+    }
+}

@@ -1,0 +1,40 @@
+//! Everything the user can ask of the workbench, independent of which key or mouse gesture asked.
+
+/// One user request; the key map and the mouse both produce these, and the app applies them.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Action {
+    Quit,
+    ToggleHelp,
+    /// Closes the help if open, else quits.
+    Back,
+    NextScene,
+    PreviousScene,
+    /// Degrees of yaw and pitch.
+    Orbit(f64, f64),
+    /// Fractions of the orbit distance, right and up.
+    Pan(f64, f64),
+    /// Distance factor: below 1 moves closer.
+    Zoom(f64),
+    ResetCamera,
+    /// Degrees of azimuth and elevation.
+    MoveLight(f64, f64),
+    NextViewMode,
+    PreviousViewMode,
+    NextQuality,
+    NextGlyphs,
+    NextColors,
+    NextPattern,
+    PreviousPattern,
+    NextTexture,
+    PreviousTexture,
+    /// Bump strength factor.
+    ScaleBump(f32),
+    InvertBump,
+    /// Select the next (+1) or previous (−1) pattern parameter.
+    SelectParam(i32),
+    /// Steps of one fiftieth of the selected parameter's range.
+    AdjustParam(f32),
+    TogglePause,
+    StepClock,
+    Export,
+}

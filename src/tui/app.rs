@@ -1,0 +1,222 @@
+//! The workbench's state and how each action changes it. Drawing reads this state; nothing here
+//! touches the terminal. Changes mark what must be redrawn, so an idle screen costs nothing.
+
+use super::action::Action;
+use super::clock::Clock;
+use super::export::export_view;
+use super::light::move_lights;
+use super::options::WorkbenchOptions;
+use super::orbit::Orbit;
+use super::quality::Quality;
+use super::view_mode::ViewMode;
+use crate::Error;
+use crate::raster::{Camera, FrameStats, PreparedScene};
+use crate::scene::Scene;
+use crate::surface::Tessellation;
+use crate::term::{ColorMode, GlyphSet};
+use std::path::PathBuf;
+use std::time::Duration;
+
+pub struct App {
+    pub scenes: Vec<String>,
+    pub scene_index: usize,
+    pub prepared: PreparedScene,
+    pub orbit: Orbit,
+    pub view_mode: ViewMode,
+    pub quality: Quality,
+    pub glyphs: GlyphSet,
+    pub colors: ColorMode,
+    pub clock: Clock,
+    pub help: bool,
+    pub quit: bool,
+    pub message: Message,
+    pub report: FrameReport,
+    pub export_size: (u32, u32),
+    pub export_dir: PathBuf,
+    pub dirty: Dirty,
+}
+
+/// The reload state or the last error, shown in the status line.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub enum Message {
+    #[default]
+    None,
+    Info(String),
+    Error(String),
+}
+
+/// What the last frame cost.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct FrameReport {
+    pub render_time: Duration,
+    pub stats: FrameStats,
+    pub bytes: usize,
+}
+
+/// What must be redrawn: the picture (re-render) or only the text around it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Dirty {
+    pub picture: bool,
+    pub text: bool,
+}
+
+impl Dirty {
+    const ALL: Dirty = Dirty {
+        picture: true,
+        text: true,
+    };
+}
+
+impl App {
+    /// Loads the first scene; every named scene is checked first, so a typo fails before the
+    /// terminal is taken over.
+    pub fn new(options: &WorkbenchOptions, colors: ColorMode) -> Result<App, Error> {
+        if options.scenes.is_empty() {
+            return Err(Error::InvalidArgument("no scene to show".into()));
+        }
+        let mut first = None;
+        for name in &options.scenes {
+            let scene = crate::scene::resolve(name)?;
+            first.get_or_insert(scene);
+        }
+        let scene = first.expect("at least one scene");
+        let quality = Quality::default();
+        let orbit = Orbit::from_camera(&scene.camera);
+        Ok(App {
+            scenes: options.scenes.clone(),
+            scene_index: 0,
+            prepared: prepare(scene, quality),
+            orbit,
+            view_mode: ViewMode::default(),
+            quality,
+            glyphs: options.glyphs,
+            colors,
+            clock: Clock::new(options.fps),
+            help: false,
+            quit: false,
+            message: Message::None,
+            report: FrameReport::default(),
+            export_size: options.export_size,
+            export_dir: PathBuf::from("."),
+            dirty: Dirty::ALL,
+        })
+    }
+
+    pub fn camera(&self) -> Camera {
+        self.orbit.camera()
+    }
+
+    pub fn scene(&self) -> &Scene {
+        &self.prepared.scene
+    }
+
+    /// Whether the picture changes with time, so frames must keep coming while the clock runs.
+    pub fn animates(&self) -> bool {
+        false
+    }
+
+    pub fn apply(&mut self, action: Action) {
+        self.dirty.text = true;
+        match action {
+            Action::Quit => self.quit = true,
+            Action::ToggleHelp => self.help = !self.help,
+            Action::Back if self.help => self.help = false,
+            Action::Back => self.quit = true,
+            Action::NextScene => self.switch_scene(1),
+            Action::PreviousScene => self.switch_scene(-1),
+            Action::Export => self.export(),
+            _ => self.apply_to_picture(action),
+        }
+    }
+
+    /// Actions that change what the picture shows.
+    fn apply_to_picture(&mut self, action: Action) {
+        self.dirty.picture = true;
+        match action {
+            Action::Orbit(yaw, pitch) => self.orbit.rotate(yaw, pitch),
+            Action::Pan(right, up) => self.orbit.pan(right, up),
+            Action::Zoom(factor) => self.orbit.zoom(factor),
+            Action::ResetCamera => self.orbit = Orbit::from_camera(&self.scene().camera),
+            Action::MoveLight(azimuth, elevation) => {
+                let center = self.orbit.target;
+                move_lights(&mut self.prepared.scene.lights, center, azimuth, elevation);
+            }
+            Action::NextViewMode => self.view_mode = self.view_mode.cycled(1),
+            Action::PreviousViewMode => self.view_mode = self.view_mode.cycled(-1),
+            Action::NextQuality => {
+                self.quality = self.quality.next();
+                self.reprepare();
+            }
+            Action::NextGlyphs => self.glyphs = next_glyphs(self.glyphs),
+            Action::NextColors => self.colors = next_colors(self.colors),
+            Action::TogglePause => self.clock.toggle(),
+            Action::StepClock => self.clock.step(),
+            _ => self.apply_to_material(action),
+        }
+    }
+
+    fn apply_to_material(&mut self, _action: Action) {
+        self.message = Message::Info("this scene has no bump pattern".into());
+    }
+
+    pub fn switch_scene(&mut self, step: i32) {
+        let count = self.scenes.len() as i32;
+        let index = (self.scene_index as i32 + step).rem_euclid(count) as usize;
+        match crate::scene::resolve(&self.scenes[index]) {
+            Ok(scene) => {
+                self.scene_index = index;
+                self.orbit = Orbit::from_camera(&scene.camera);
+                self.prepared = prepare(scene, self.quality);
+                self.message = Message::None;
+                self.dirty = Dirty::ALL;
+            }
+            Err(e) => self.message = Message::Error(e.to_string()),
+        }
+    }
+
+    fn reprepare(&mut self) {
+        let scene = self.prepared.scene.clone();
+        self.prepared = prepare(scene, self.quality);
+    }
+
+    fn export(&mut self) {
+        self.message = match export_view(self, self.export_size, &self.export_dir) {
+            Ok(path) => Message::Info(format!("exported {}", path.display())),
+            Err(e) => Message::Error(e.to_string()),
+        };
+    }
+
+    /// Marks everything for redrawing, as after a resize.
+    pub fn invalidate(&mut self) {
+        self.dirty = Dirty::ALL;
+    }
+
+    pub fn mark_drawn(&mut self) {
+        self.dirty = Dirty {
+            picture: false,
+            text: false,
+        };
+    }
+}
+
+fn prepare(scene: Scene, quality: Quality) -> PreparedScene {
+    let density = quality.tessellation_density();
+    PreparedScene::new(scene, Tessellation { density })
+}
+
+fn next_glyphs(glyphs: GlyphSet) -> GlyphSet {
+    match glyphs {
+        GlyphSet::HalfBlock => GlyphSet::Quadrant,
+        GlyphSet::Quadrant => GlyphSet::Sextant,
+        GlyphSet::Sextant => GlyphSet::HalfBlock,
+    }
+}
+
+fn next_colors(colors: ColorMode) -> ColorMode {
+    match colors {
+        ColorMode::TrueColor => ColorMode::Ansi256,
+        ColorMode::Ansi256 => ColorMode::Ansi16,
+        ColorMode::Ansi16 => ColorMode::Monochrome,
+        ColorMode::Monochrome => ColorMode::TrueColor,
+    }
+}

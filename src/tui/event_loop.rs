@@ -1,0 +1,92 @@
+//! The event loop: draw what changed, wait for input or the next animation frame, repeat; and
+//! give the terminal back however it ends.
+
+use super::app::App;
+use super::input::{Input, InputState};
+use super::options::WorkbenchOptions;
+use super::screen::Screen;
+use crate::Error;
+use crate::term::{ShutdownSignals, TerminalGuard};
+use crossterm::event;
+use std::io;
+use std::path::Path;
+use std::time::{Duration, Instant};
+
+/// Longest wait for input, so shutdown signals are noticed promptly.
+const SIGNAL_POLL: Duration = Duration::from_millis(100);
+
+/// Runs the workbench until the user quits. A shutdown signal restores the terminal and exits
+/// the process with 128 + the signal number.
+pub fn run(options: &WorkbenchOptions) -> Result<(), Error> {
+    let colors = options.colors.resolve(|name| std::env::var(name).ok());
+    let mut app = App::new(options, colors)?;
+    let signals = ShutdownSignals::register().map_err(terminal_error)?;
+    let guard = TerminalGuard::enter(options.mouse).map_err(terminal_error)?;
+    let result = event_loop(&mut app, &signals);
+    drop(guard);
+    if let Some(signal) = signals.received() {
+        std::process::exit(signal.exit_code());
+    }
+    result.map_err(terminal_error)
+}
+
+fn event_loop(app: &mut App, signals: &ShutdownSignals) -> io::Result<()> {
+    let (cols, rows) = crossterm::terminal::size()?;
+    let mut screen = Screen::new(cols, rows);
+    let mut input = InputState::default();
+    let mut stdout = io::stdout().lock();
+    let mut last_frame = Instant::now();
+    while !app.quit && signals.received().is_none() {
+        if app.animates()
+            && app.clock.is_running()
+            && last_frame.elapsed() >= app.clock.frame_interval()
+        {
+            app.dirty.picture = true;
+        }
+        if app.dirty.picture {
+            last_frame = Instant::now();
+        }
+        // A failed write means the terminal is gone; the hang-up signal ends the loop.
+        let _ = screen.draw(app, &mut stdout);
+        if event::poll(wait_time(app, last_frame))? {
+            handle_pending_events(app, &mut screen, &mut input)?;
+        }
+    }
+    Ok(())
+}
+
+/// Until the next animation frame is due, or the signal poll interval.
+fn wait_time(app: &App, last_frame: Instant) -> Duration {
+    if app.animates() && app.clock.is_running() {
+        let due = app
+            .clock
+            .frame_interval()
+            .saturating_sub(last_frame.elapsed());
+        due.min(SIGNAL_POLL)
+    } else {
+        SIGNAL_POLL
+    }
+}
+
+/// Applies every event already waiting, so a burst of key repeats costs one frame, not many.
+fn handle_pending_events(
+    app: &mut App,
+    screen: &mut Screen,
+    input: &mut InputState,
+) -> io::Result<()> {
+    loop {
+        match input.translate(event::read()?) {
+            Input::Action(action) => app.apply(action),
+            Input::Resize(cols, rows) => screen.resize(cols, rows, app),
+            Input::Redraw => screen.invalidate(app),
+            Input::Nothing => {}
+        }
+        if app.quit || !event::poll(Duration::ZERO)? {
+            return Ok(());
+        }
+    }
+}
+
+fn terminal_error(error: io::Error) -> Error {
+    Error::write(Path::new("the terminal"), error)
+}

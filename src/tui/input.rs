@@ -1,0 +1,66 @@
+//! Terminal events to actions: keys through the key map, mouse drags and the wheel directly.
+
+use super::action::Action;
+use super::keymap::action_for;
+use crossterm::event::{Event, MouseButton, MouseEvent, MouseEventKind};
+
+/// Degrees of orbit per cell dragged: cells are twice as tall as wide, so rows turn twice as far.
+const DRAG_DEGREES_PER_COLUMN: f64 = 2.0;
+const DRAG_DEGREES_PER_ROW: f64 = 4.0;
+const WHEEL_ZOOM: f64 = 1.1;
+
+/// What an event asks for.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Input {
+    Action(Action),
+    Resize(u16, u16),
+    /// The terminal may have drawn over us (focus regained): draw everything again.
+    Redraw,
+    Nothing,
+}
+
+/// Remembers where a mouse drag was, to turn the next position into an orbit step.
+#[derive(Debug, Default)]
+pub struct InputState {
+    drag_from: Option<(u16, u16)>,
+}
+
+impl InputState {
+    pub fn translate(&mut self, event: Event) -> Input {
+        match event {
+            Event::Key(key) => action_for(&key).map_or(Input::Nothing, Input::Action),
+            Event::Resize(cols, rows) => Input::Resize(cols, rows),
+            Event::Mouse(mouse) => self.mouse(mouse),
+            Event::FocusGained => Input::Redraw,
+            _ => Input::Nothing,
+        }
+    }
+
+    fn mouse(&mut self, mouse: MouseEvent) -> Input {
+        let at = (mouse.column, mouse.row);
+        match mouse.kind {
+            MouseEventKind::Down(MouseButton::Left) => {
+                self.drag_from = Some(at);
+                Input::Nothing
+            }
+            MouseEventKind::Drag(MouseButton::Left) => {
+                let Some(from) = self.drag_from.replace(at) else {
+                    return Input::Nothing;
+                };
+                let columns = at.0 as f64 - from.0 as f64;
+                let rows = at.1 as f64 - from.1 as f64;
+                Input::Action(Action::Orbit(
+                    -columns * DRAG_DEGREES_PER_COLUMN,
+                    rows * DRAG_DEGREES_PER_ROW,
+                ))
+            }
+            MouseEventKind::Up(_) => {
+                self.drag_from = None;
+                Input::Nothing
+            }
+            MouseEventKind::ScrollUp => Input::Action(Action::Zoom(1.0 / WHEEL_ZOOM)),
+            MouseEventKind::ScrollDown => Input::Action(Action::Zoom(WHEEL_ZOOM)),
+            _ => Input::Nothing,
+        }
+    }
+}

@@ -1,0 +1,245 @@
+//! Keys to actions: one table, read both by the input handler and by the help overlay, so the
+//! help always lists exactly the keys that work.
+
+use super::action::Action;
+use crossterm::event::{KeyCode, KeyEvent, KeyEventKind, KeyModifiers};
+
+/// One binding: what the help shows, the keys that trigger it, and the action.
+pub struct Binding {
+    pub keys: &'static str,
+    pub description: &'static str,
+    pub codes: &'static [KeyCode],
+    pub action: Action,
+}
+
+const ORBIT_STEP: f64 = 10.0;
+const PAN_STEP: f64 = 0.05;
+const ZOOM_STEP: f64 = 1.15;
+const LIGHT_STEP: f64 = 15.0;
+
+use KeyCode::{BackTab, Char, Down, Esc, F, Home, Left, Right, Tab, Up};
+
+pub const BINDINGS: &[Binding] = &[
+    bind("Tab", "next scene", &[Tab], Action::NextScene),
+    bind("S-Tab", "previous scene", &[BackTab], Action::PreviousScene),
+    bind(
+        "← h",
+        "orbit left",
+        &[Left, Char('h')],
+        Action::Orbit(-ORBIT_STEP, 0.0),
+    ),
+    bind(
+        "→ l",
+        "orbit right",
+        &[Right, Char('l')],
+        Action::Orbit(ORBIT_STEP, 0.0),
+    ),
+    bind(
+        "↑ k",
+        "orbit up",
+        &[Up, Char('k')],
+        Action::Orbit(0.0, ORBIT_STEP),
+    ),
+    bind(
+        "↓ j",
+        "orbit down",
+        &[Down, Char('j')],
+        Action::Orbit(0.0, -ORBIT_STEP),
+    ),
+    bind(
+        "H L",
+        "pan left / right",
+        &[Char('H')],
+        Action::Pan(-PAN_STEP, 0.0),
+    ),
+    bind("", "", &[Char('L')], Action::Pan(PAN_STEP, 0.0)),
+    bind(
+        "K J",
+        "pan up / down",
+        &[Char('K')],
+        Action::Pan(0.0, PAN_STEP),
+    ),
+    bind("", "", &[Char('J')], Action::Pan(0.0, -PAN_STEP)),
+    bind(
+        "+ -",
+        "zoom in / out (wheel)",
+        &[Char('+'), Char('=')],
+        Action::Zoom(1.0 / ZOOM_STEP),
+    ),
+    bind("", "", &[Char('-'), Char('_')], Action::Zoom(ZOOM_STEP)),
+    bind(
+        "0 Home",
+        "reset camera",
+        &[Char('0'), Home],
+        Action::ResetCamera,
+    ),
+    bind(
+        "a d",
+        "light left / right",
+        &[Char('a')],
+        Action::MoveLight(-LIGHT_STEP, 0.0),
+    ),
+    bind("", "", &[Char('d')], Action::MoveLight(LIGHT_STEP, 0.0)),
+    bind(
+        "r f",
+        "light up / down",
+        &[Char('r')],
+        Action::MoveLight(0.0, LIGHT_STEP),
+    ),
+    bind("", "", &[Char('f')], Action::MoveLight(0.0, -LIGHT_STEP)),
+    bind(
+        "v V",
+        "next / previous view mode",
+        &[Char('v')],
+        Action::NextViewMode,
+    ),
+    bind("", "", &[Char('V')], Action::PreviousViewMode),
+    bind(
+        "p P",
+        "next / previous pattern",
+        &[Char('p')],
+        Action::NextPattern,
+    ),
+    bind("", "", &[Char('P')], Action::PreviousPattern),
+    bind(
+        "t T",
+        "next / previous texture",
+        &[Char('t')],
+        Action::NextTexture,
+    ),
+    bind("", "", &[Char('T')], Action::PreviousTexture),
+    bind(
+        "b B",
+        "bump stronger / weaker",
+        &[Char('b')],
+        Action::ScaleBump(1.25),
+    ),
+    bind("", "", &[Char('B')], Action::ScaleBump(0.8)),
+    bind("i", "invert bump", &[Char('i')], Action::InvertBump),
+    bind(
+        "[ ]",
+        "previous / next parameter",
+        &[Char('[')],
+        Action::SelectParam(-1),
+    ),
+    bind("", "", &[Char(']')], Action::SelectParam(1)),
+    bind(
+        ", .",
+        "parameter down / up",
+        &[Char(',')],
+        Action::AdjustParam(-1.0),
+    ),
+    bind("", "", &[Char('.')], Action::AdjustParam(1.0)),
+    bind(
+        "< >",
+        "parameter down / up ×10",
+        &[Char('<')],
+        Action::AdjustParam(-10.0),
+    ),
+    bind("", "", &[Char('>')], Action::AdjustParam(10.0)),
+    bind(
+        "Space",
+        "pause / run animation",
+        &[Char(' ')],
+        Action::TogglePause,
+    ),
+    bind(
+        "n",
+        "step animation one frame",
+        &[Char('n')],
+        Action::StepClock,
+    ),
+    bind(
+        "Q",
+        "next quality preset",
+        &[Char('Q')],
+        Action::NextQuality,
+    ),
+    bind(
+        "g",
+        "glyphs: half / quadrant / sextant",
+        &[Char('g')],
+        Action::NextGlyphs,
+    ),
+    bind(
+        "c",
+        "colours: true / 256 / 16 / none",
+        &[Char('c')],
+        Action::NextColors,
+    ),
+    bind("e", "export view to PNG", &[Char('e')], Action::Export),
+    bind("? F1", "this help", &[Char('?'), F(1)], Action::ToggleHelp),
+    bind("Esc", "close help, else quit", &[Esc], Action::Back),
+    bind("q C-c", "quit", &[Char('q')], Action::Quit),
+];
+
+const fn bind(
+    keys: &'static str,
+    description: &'static str,
+    codes: &'static [KeyCode],
+    action: Action,
+) -> Binding {
+    Binding {
+        keys,
+        description,
+        codes,
+        action,
+    }
+}
+
+/// The action for a key press (repeats count; releases do not).
+pub fn action_for(key: &KeyEvent) -> Option<Action> {
+    if key.kind == KeyEventKind::Release {
+        return None;
+    }
+    if crate::term::is_ctrl_c(key) {
+        return Some(Action::Quit);
+    }
+    if key
+        .modifiers
+        .intersects(KeyModifiers::CONTROL | KeyModifiers::ALT)
+    {
+        return None;
+    }
+    BINDINGS
+        .iter()
+        .find(|b| b.codes.contains(&key.code))
+        .map(|b| b.action)
+}
+
+/// The bindings the help lists: those with a label (the unlabeled ones share the line above).
+pub fn help_lines() -> impl Iterator<Item = &'static Binding> {
+    BINDINGS.iter().filter(|b| !b.keys.is_empty())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn press(code: KeyCode) -> Option<Action> {
+        action_for(&KeyEvent::new(code, KeyModifiers::NONE))
+    }
+
+    #[test]
+    fn tab_is_next_scene_and_q_quits() {
+        assert_eq!(press(Tab), Some(Action::NextScene));
+        assert_eq!(press(Char('q')), Some(Action::Quit));
+        let ctrl_c = KeyEvent::new(Char('c'), KeyModifiers::CONTROL);
+        assert_eq!(action_for(&ctrl_c), Some(Action::Quit));
+    }
+
+    #[test]
+    fn no_key_is_bound_twice() {
+        let mut seen = std::collections::HashSet::new();
+        for code in BINDINGS.iter().flat_map(|b| b.codes) {
+            assert!(seen.insert(*code), "{code:?} bound twice");
+        }
+    }
+
+    #[test]
+    fn shift_letters_arrive_as_capitals() {
+        // Terminals send Shift+l as 'L' with the SHIFT modifier: it must still match.
+        let key = KeyEvent::new(Char('L'), KeyModifiers::SHIFT);
+        assert_eq!(action_for(&key), Some(Action::Pan(PAN_STEP, 0.0)));
+    }
+}

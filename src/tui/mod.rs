@@ -1,0 +1,35 @@
+//! The terminal workbench: a live view of a scene that the keyboard (and mouse) orbits, relights,
+//! re-patterns and exports.
+//!
+//! State ([`App`]) is changed only by [`Action`]s, which keys ([`keymap`]) and mouse gestures
+//! produce; the [`Screen`] draws only what the state marks dirty, as one synchronized update of
+//! the changed cells, so an idle workbench writes nothing.
+
+mod action;
+mod app;
+mod clock;
+mod event_loop;
+mod export;
+mod help;
+mod input;
+pub mod keymap;
+mod light;
+mod options;
+mod orbit;
+mod quality;
+mod render;
+mod resample;
+mod screen;
+mod status;
+mod view_mode;
+mod wireframe;
+
+pub use action::Action;
+pub use app::{App, Dirty, FrameReport, Message};
+pub use event_loop::run;
+pub use options::WorkbenchOptions;
+pub use orbit::Orbit;
+pub use quality::Quality;
+pub use render::{View, render_cells, render_frame};
+pub use screen::{Layout, Screen};
+pub use view_mode::ViewMode;

@@ -1,0 +1,32 @@
+//! How the workbench was asked to start.
+
+use crate::term::{ColorChoice, GlyphSet};
+
+#[derive(Clone, Debug)]
+pub struct WorkbenchOptions {
+    /// Built-in scene names or scene files; `Tab` moves through them.
+    pub scenes: Vec<String>,
+    pub colors: ColorChoice,
+    pub glyphs: GlyphSet,
+    /// Animation frame rate cap.
+    pub fps: u32,
+    pub mouse: bool,
+    /// Pixel size of exported PNGs.
+    pub export_size: (u32, u32),
+}
+
+impl Default for WorkbenchOptions {
+    fn default() -> Self {
+        WorkbenchOptions {
+            scenes: crate::scene::PRESET_NAMES
+                .iter()
+                .map(|s| s.to_string())
+                .collect(),
+            colors: ColorChoice::Auto,
+            glyphs: GlyphSet::HalfBlock,
+            fps: 30,
+            mouse: true,
+            export_size: (1920, 1080),
+        }
+    }
+}

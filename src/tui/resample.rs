@@ -1,0 +1,83 @@
+//! Linear-light framebuffer → sRGB picture of another size, by area averaging: the renderer works
+//! in square pixels, while quadrant and sextant cells have tall sub-pixels, and fine quality
+//! supersamples.
+
+use crate::raster::{Framebuffer, linear_to_srgb8};
+use glam::Vec3;
+
+/// The framebuffer averaged down (or up) to `width` × `height` sRGB pixels.
+pub fn resample_to_srgb(framebuffer: &Framebuffer, width: usize, height: usize) -> Vec<[u8; 3]> {
+    let (src_w, src_h) = (framebuffer.width as usize, framebuffer.height as usize);
+    if (src_w, src_h) == (width, height) {
+        return framebuffer.to_srgb8();
+    }
+    let columns = area_weights(src_w, width);
+    let rows = area_weights(src_h, height);
+    let mut horizontal = vec![Vec3::ZERO; width * src_h];
+    for y in 0..src_h {
+        let source = &framebuffer.color[y * src_w..(y + 1) * src_w];
+        for (x, weights) in columns.iter().enumerate() {
+            horizontal[y * width + x] = weights.iter().map(|&(i, w)| source[i] * w).sum();
+        }
+    }
+    let mut out = Vec::with_capacity(width * height);
+    for weights in &rows {
+        for x in 0..width {
+            let c: Vec3 = weights
+                .iter()
+                .map(|&(j, w)| horizontal[j * width + x] * w)
+                .sum();
+            out.push(c.to_array().map(linear_to_srgb8));
+        }
+    }
+    out
+}
+
+/// For each destination index, the source indices it covers and their weights (summing to 1).
+fn area_weights(source: usize, destination: usize) -> Vec<Vec<(usize, f32)>> {
+    if source == 0 {
+        return vec![Vec::new(); destination];
+    }
+    let scale = source as f64 / destination as f64;
+    (0..destination)
+        .map(|d| {
+            let (start, end) = (d as f64 * scale, (d + 1) as f64 * scale);
+            let first = start.floor() as usize;
+            let last = (end.ceil() as usize).clamp(first + 1, source);
+            (first..last)
+                .map(|s| {
+                    let overlap = (end.min(s as f64 + 1.0) - start.max(s as f64)).max(0.0);
+                    (s, (overlap / scale) as f32)
+                })
+                .filter(|&(_, w)| w > 0.0)
+                .collect()
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn weights_cover_each_destination_exactly_once() {
+        for (source, destination) in [(4, 3), (4, 2), (3, 3), (7, 5), (2, 5)] {
+            for weights in area_weights(source, destination) {
+                let sum: f32 = weights.iter().map(|&(_, w)| w).sum();
+                assert!(
+                    (sum - 1.0).abs() < 1e-5,
+                    "{source}->{destination}: {weights:?}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn averaging_two_rows_mixes_in_linear_light() {
+        let mut fb = Framebuffer::new(1, 2, Vec3::ZERO);
+        fb.color[0] = Vec3::ONE;
+        let out = resample_to_srgb(&fb, 1, 1);
+        // Half of linear white is sRGB 188, not 128.
+        assert_eq!(out, vec![[188, 188, 188]]);
+    }
+}

@@ -1,0 +1,214 @@
+//! The whole terminal screen as one cell grid: the picture, the status line below it and the help
+//! over it, drawn by the term layer's diffing writer so each frame is one synchronized update
+//! with only the changed cells.
+
+use super::app::App;
+use super::help::draw_help;
+use super::render::{View, empty_framebuffer, render_cells};
+use super::status::status_line;
+use crate::raster::Framebuffer;
+use crate::term::{CellGrid, Color, ColorMode, EncodeOptions, FrameWriter};
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::style::Style;
+use ratatui::widgets::Widget;
+use std::io::{self, Write};
+use std::time::Instant;
+
+/// Where things go on a screen of a given size.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Layout {
+    pub cols: u16,
+    pub rows: u16,
+    /// Rows of picture, from the top.
+    pub picture_rows: u16,
+    /// The status line's row, if there is room for one.
+    pub status_row: Option<u16>,
+}
+
+impl Layout {
+    /// The picture takes all but the last row, which is the status line; a one-row screen shows
+    /// only the status line, an empty one nothing.
+    pub fn new(cols: u16, rows: u16) -> Layout {
+        let status_row = (cols > 0 && rows > 0).then(|| rows - 1);
+        Layout {
+            cols,
+            rows,
+            picture_rows: rows.saturating_sub(1),
+            status_row,
+        }
+    }
+}
+
+pub struct Screen {
+    layout: Layout,
+    writer: FrameWriter,
+    picture: CellGrid,
+    framebuffer: Framebuffer,
+}
+
+impl Screen {
+    pub fn new(cols: u16, rows: u16) -> Screen {
+        Screen {
+            layout: Layout::new(cols, rows),
+            writer: FrameWriter::new((0, 0)),
+            picture: CellGrid::new(0, 0),
+            framebuffer: empty_framebuffer(),
+        }
+    }
+
+    pub fn layout(&self) -> Layout {
+        self.layout
+    }
+
+    /// A new terminal size: everything is drawn again in full.
+    pub fn resize(&mut self, cols: u16, rows: u16, app: &mut App) {
+        self.layout = Layout::new(cols, rows);
+        self.writer.invalidate();
+        app.invalidate();
+    }
+
+    /// Forgets what the terminal shows, so the next frame is drawn in full.
+    pub fn invalidate(&mut self, app: &mut App) {
+        self.writer.invalidate();
+        app.invalidate();
+    }
+
+    /// Draws what `app` marked as changed; returns the bytes written (0 when nothing changed).
+    pub fn draw(&mut self, app: &mut App, out: &mut impl Write) -> io::Result<usize> {
+        if !(app.dirty.picture || app.dirty.text) {
+            return Ok(0);
+        }
+        let start = Instant::now();
+        if app.dirty.picture {
+            self.render_picture(app);
+        }
+        let grid = self.compose(app);
+        let result = self.writer.draw(out, &grid);
+        if app.dirty.picture {
+            app.report.render_time = start.elapsed();
+        }
+        app.mark_drawn();
+        let bytes = result?;
+        if bytes > 0 {
+            app.report.bytes = bytes;
+        }
+        Ok(bytes)
+    }
+
+    fn render_picture(&mut self, app: &mut App) {
+        let size = (self.layout.cols as usize, self.layout.picture_rows as usize);
+        let options = EncodeOptions::new(app.colors, app.glyphs);
+        let supersampling = app.quality.supersampling();
+        let (picture, stats) = render_cells(
+            &View::of(app),
+            size,
+            options,
+            supersampling,
+            &mut self.framebuffer,
+        );
+        self.picture = picture;
+        app.report.stats = stats;
+    }
+
+    /// The screen: picture, then the status line and the help drawn over it with ratatui.
+    pub fn compose(&self, app: &App) -> CellGrid {
+        let Layout { cols, rows, .. } = self.layout;
+        let area = Rect::new(0, 0, cols, rows);
+        let mut buffer = Buffer::empty(area);
+        (&self.picture).render(area, &mut buffer);
+        let style = text_style(app.colors);
+        if let Some(row) = self.layout.status_row {
+            let line = status_line(app, cols as usize);
+            buffer.set_stringn(
+                0,
+                row,
+                format!("{line:<width$}", width = cols as usize),
+                cols as usize,
+                style,
+            );
+        }
+        if app.help {
+            let picture = Rect::new(0, 0, cols, self.layout.picture_rows);
+            draw_help(picture, style, &mut buffer);
+        }
+        to_cells(&buffer)
+    }
+}
+
+/// Light text on dark grey, in colours every mode has; none at all without colour.
+fn text_style(colors: ColorMode) -> Style {
+    use ratatui::style::Color::Indexed;
+    match colors {
+        ColorMode::TrueColor | ColorMode::Ansi256 => Style::new().fg(Indexed(255)).bg(Indexed(236)),
+        ColorMode::Ansi16 => Style::new().fg(Indexed(15)).bg(Indexed(8)),
+        ColorMode::Monochrome => Style::new(),
+    }
+}
+
+fn to_cells(buffer: &Buffer) -> CellGrid {
+    let area = buffer.area;
+    let mut grid = CellGrid::new(area.width as usize, area.height as usize);
+    for y in 0..area.height {
+        for x in 0..area.width {
+            let cell = &buffer[(x, y)];
+            grid.set(
+                x as usize,
+                y as usize,
+                crate::term::Cell {
+                    glyph: cell.symbol().chars().next().unwrap_or(' '),
+                    fg: to_color(cell.fg),
+                    bg: to_color(cell.bg),
+                },
+            );
+        }
+    }
+    grid
+}
+
+fn to_color(color: ratatui::style::Color) -> Color {
+    use ratatui::style::Color as R;
+    match color {
+        R::Rgb(r, g, b) => Color::Rgb(r, g, b),
+        R::Indexed(i) => Color::Indexed(i),
+        R::Reset => Color::Default,
+        named => Color::Indexed(named_index(named)),
+    }
+}
+
+fn named_index(color: ratatui::style::Color) -> u8 {
+    use ratatui::style::Color as R;
+    const NAMED: [ratatui::style::Color; 16] = [
+        R::Black,
+        R::Red,
+        R::Green,
+        R::Yellow,
+        R::Blue,
+        R::Magenta,
+        R::Cyan,
+        R::Gray,
+        R::DarkGray,
+        R::LightRed,
+        R::LightGreen,
+        R::LightYellow,
+        R::LightBlue,
+        R::LightMagenta,
+        R::LightCyan,
+        R::White,
+    ];
+    NAMED.iter().position(|&c| c == color).unwrap_or(7) as u8
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tiny_screens_keep_the_status_line_first() {
+        assert_eq!(Layout::new(80, 24).picture_rows, 23);
+        assert_eq!(Layout::new(1, 1).status_row, Some(0));
+        assert_eq!(Layout::new(1, 1).picture_rows, 0);
+        assert_eq!(Layout::new(5, 0).status_row, None);
+        assert_eq!(Layout::new(0, 5).status_row, None);
+    }
+}

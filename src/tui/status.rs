@@ -1,0 +1,137 @@
+//! The status line: what is shown and what it cost, shortened to fit by dropping the least
+//! important parts first.
+
+use super::app::{App, Message};
+use crate::term::{ColorMode, GlyphSet, sanitize};
+
+const SEPARATOR: &str = " │ ";
+
+/// One part of the status line; lower `rank` survives longer when the line is short.
+struct Segment {
+    rank: u8,
+    text: String,
+}
+
+/// The status line for `app`, at most `width` characters.
+pub fn status_line(app: &App, width: usize) -> String {
+    let mut segments = segments(app);
+    loop {
+        let line = join(&segments);
+        if line.chars().count() <= width || segments.len() <= 1 {
+            return truncate(&line, width);
+        }
+        let least = segments.iter().map(|s| s.rank).max().unwrap_or(0);
+        let position = segments.iter().rposition(|s| s.rank == least).unwrap_or(0);
+        segments.remove(position);
+    }
+}
+
+fn segments(app: &App) -> Vec<Segment> {
+    let report = &app.report;
+    let mut list = vec![
+        segment(
+            0,
+            format!(
+                "{}/{} {}",
+                app.scene_index + 1,
+                app.scenes.len(),
+                sanitize(&app.scene().name)
+            ),
+        ),
+        segment(
+            3,
+            format!(
+                "{} {} {} {}",
+                app.view_mode.name(),
+                app.quality.name(),
+                glyphs_name(app.glyphs),
+                colors_name(app.colors)
+            ),
+        ),
+        segment(
+            2,
+            format!("{:.1} ms", report.render_time.as_secs_f64() * 1e3),
+        ),
+        segment(
+            4,
+            format!(
+                "{} tri {} frag",
+                si(report.stats.triangles),
+                si(report.stats.fragments)
+            ),
+        ),
+        segment(4, format!("{} B", si(report.bytes))),
+    ];
+    if !app.clock.is_running() {
+        list.push(segment(3, format!("paused t={:.2}s", app.clock.time())));
+    }
+    match &app.message {
+        Message::None => list.push(segment(5, "? help".into())),
+        Message::Info(text) => list.push(segment(1, first_line(text))),
+        Message::Error(text) => list.push(segment(1, format!("error: {}", first_line(text)))),
+    }
+    list
+}
+
+fn segment(rank: u8, text: String) -> Segment {
+    Segment { rank, text }
+}
+
+fn join(segments: &[Segment]) -> String {
+    let texts: Vec<&str> = segments.iter().map(|s| s.text.as_str()).collect();
+    texts.join(SEPARATOR)
+}
+
+/// Messages may carry a caret diagram below the line:column; the status line has room for one.
+fn first_line(text: &str) -> String {
+    sanitize(text.lines().next().unwrap_or("")).into_owned()
+}
+
+fn truncate(line: &str, width: usize) -> String {
+    if line.chars().count() <= width {
+        return line.to_string();
+    }
+    match width {
+        0 => String::new(),
+        _ => line.chars().take(width - 1).chain(['…']).collect(),
+    }
+}
+
+/// 1234 → "1.2k", 1234567 → "1.2M".
+fn si(n: usize) -> String {
+    match n {
+        0..1_000 => n.to_string(),
+        1_000..1_000_000 => format!("{:.1}k", n as f64 / 1e3),
+        _ => format!("{:.1}M", n as f64 / 1e6),
+    }
+}
+
+fn glyphs_name(glyphs: GlyphSet) -> &'static str {
+    match glyphs {
+        GlyphSet::HalfBlock => "half",
+        GlyphSet::Quadrant => "quad",
+        GlyphSet::Sextant => "sextant",
+    }
+}
+
+pub fn colors_name(colors: ColorMode) -> &'static str {
+    match colors {
+        ColorMode::TrueColor => "truecolor",
+        ColorMode::Ansi256 => "256",
+        ColorMode::Ansi16 => "16",
+        ColorMode::Monochrome => "mono",
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn truncates_with_an_ellipsis_and_never_exceeds_the_width() {
+        assert_eq!(truncate("abcdef", 4), "abc…");
+        assert_eq!(truncate("abc", 0), "");
+        assert_eq!(truncate("abc", 1), "…");
+        assert_eq!(si(22_876), "22.9k");
+    }
+}
