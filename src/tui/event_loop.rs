@@ -34,7 +34,6 @@ fn event_loop(app: &mut App, signals: &ShutdownSignals) -> io::Result<()> {
     let (cols, rows) = crossterm::terminal::size()?;
     let mut screen = Screen::new(cols, rows);
     let mut input = InputState::default();
-    let mut stdout = io::stdout().lock();
     let mut last_frame = Instant::now();
     while !app.quit && signals.received().is_none() {
         if app.animates()
@@ -46,8 +45,10 @@ fn event_loop(app: &mut App, signals: &ShutdownSignals) -> io::Result<()> {
         if app.dirty.picture {
             last_frame = Instant::now();
         }
-        // A failed write means the terminal is gone; the hang-up signal ends the loop.
-        let _ = screen.draw(app, &mut stdout);
+        // Locked per frame, never across the wait: the signal watchdog needs stdout to restore
+        // the terminal when this loop is stuck in a poll on a hung-up tty. A failed write means
+        // the terminal is gone; the hang-up signal ends the loop.
+        let _ = screen.draw(app, &mut io::stdout().lock());
         if event::poll(wait_time(app, last_frame))? {
             handle_pending_events(app, &mut screen, &mut input)?;
         }

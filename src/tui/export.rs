@@ -14,7 +14,7 @@ pub fn export_view(app: &App, size: (u32, u32), dir: &Path) -> Result<PathBuf, E
     let stem = format!("bumpwork-{}-{}", slug(&app.scene().name), view.mode.name());
     let path = unique_path(dir, &stem);
     crate::export::write_png(&framebuffer, &path)?;
-    Ok(std::path::absolute(&path).unwrap_or(path))
+    Ok(path)
 }
 
 /// `dir/stem-SECONDS.png`, or with `-2`, `-3`… added if that exists: never overwrites a file.

@@ -12,15 +12,19 @@ struct Segment {
     text: String,
 }
 
+/// Segments of this rank or better are truncated rather than dropped: the scene, and the message
+/// that says what just happened or went wrong.
+const KEPT_RANK: u8 = 1;
+
 /// The status line for `app`, at most `width` characters.
 pub fn status_line(app: &App, width: usize) -> String {
     let mut segments = segments(app);
     loop {
         let line = join(&segments);
-        if line.chars().count() <= width || segments.len() <= 1 {
+        let least = segments.iter().map(|s| s.rank).max().unwrap_or(0);
+        if line.chars().count() <= width || least <= KEPT_RANK {
             return truncate(&line, width);
         }
-        let least = segments.iter().map(|s| s.rank).max().unwrap_or(0);
         let position = segments.iter().rposition(|s| s.rank == least).unwrap_or(0);
         segments.remove(position);
     }
@@ -67,8 +71,8 @@ fn segments(app: &App) -> Vec<Segment> {
     }
     match &app.message {
         Message::None => list.push(segment(5, "? help".into())),
-        Message::Info(text) => list.push(segment(1, first_line(text))),
-        Message::Error(text) => list.push(segment(1, format!("error: {}", first_line(text)))),
+        Message::Info(text) => list.insert(1, segment(1, first_line(text))),
+        Message::Error(text) => list.insert(1, segment(1, format!("error: {}", first_line(text)))),
     }
     list
 }

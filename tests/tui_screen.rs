@@ -1,0 +1,97 @@
+//! The workbench's screen without a terminal: frames are drawn only when something changed, tiny
+//! and empty screens do not panic, and the export key writes a PNG.
+
+use bumpwork::term::{ColorChoice, ColorMode, SYNC_BEGIN, SYNC_END};
+use bumpwork::tui::{Action, App, Message, Screen, WorkbenchOptions};
+
+fn app() -> App {
+    let options = WorkbenchOptions {
+        scenes: vec!["plane-dimples".into(), "sphere-on-plane-dimples".into()],
+        colors: ColorChoice::Fixed(ColorMode::TrueColor),
+        ..WorkbenchOptions::default()
+    };
+    App::new(&options, ColorMode::TrueColor).unwrap()
+}
+
+fn draw(screen: &mut Screen, app: &mut App) -> Vec<u8> {
+    let mut out = Vec::new();
+    screen.draw(app, &mut out).unwrap();
+    out
+}
+
+#[test]
+fn an_idle_screen_writes_nothing_and_each_frame_is_one_synchronized_update() {
+    let mut app = app();
+    let mut screen = Screen::new(60, 20);
+    let first = draw(&mut screen, &mut app);
+    assert!(first.starts_with(SYNC_BEGIN) && first.ends_with(SYNC_END));
+    assert!(
+        draw(&mut screen, &mut app).is_empty(),
+        "idle frame wrote bytes"
+    );
+    app.apply(Action::Orbit(10.0, 0.0));
+    let orbit = draw(&mut screen, &mut app);
+    assert!(!orbit.is_empty() && orbit.len() < first.len() * 2);
+    assert!(orbit.starts_with(SYNC_BEGIN) && orbit.ends_with(SYNC_END));
+    assert!(draw(&mut screen, &mut app).is_empty());
+}
+
+#[test]
+fn tiny_and_empty_screens_do_not_panic() {
+    let mut app = app();
+    for (cols, rows) in [
+        (0, 0),
+        (1, 0),
+        (0, 1),
+        (1, 1),
+        (2, 1),
+        (1, 2),
+        (3, 3),
+        (7, 2),
+    ] {
+        let mut screen = Screen::new(cols, rows);
+        app.invalidate();
+        let out = draw(&mut screen, &mut app);
+        if cols == 0 || rows == 0 {
+            assert!(out.is_empty());
+        }
+        for action in [Action::NextScene, Action::ToggleHelp, Action::NextViewMode] {
+            app.apply(action);
+            draw(&mut screen, &mut app);
+        }
+        app.apply(Action::ToggleHelp);
+    }
+}
+
+#[test]
+fn every_view_mode_glyph_set_and_colour_mode_draws() {
+    let mut app = app();
+    let mut screen = Screen::new(30, 10);
+    for _ in 0..6 {
+        for _ in 0..3 {
+            for _ in 0..4 {
+                app.apply(Action::NextColors);
+                assert!(!draw(&mut screen, &mut app).is_empty());
+            }
+            app.apply(Action::NextGlyphs);
+        }
+        app.apply(Action::NextViewMode);
+    }
+}
+
+#[test]
+fn the_export_key_writes_a_png_and_names_it() {
+    let mut app = app();
+    let dir = std::env::temp_dir().join(format!("bumpwork-tui-export-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    app.export_dir = dir.clone();
+    app.export_size = (64, 36);
+    app.apply(Action::Export);
+    let Message::Info(text) = &app.message else {
+        panic!("{:?}", app.message);
+    };
+    let path = text.strip_prefix("exported ").unwrap();
+    let png = std::fs::read(path).unwrap();
+    assert_eq!(&png[1..4], b"PNG");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
