@@ -45,6 +45,7 @@ fn sphere_scene() -> Scene {
                 color: Vec3::new(0.8, 0.5, 0.3),
                 specular: 0.4,
                 shininess: 32.0,
+                ..Material::default()
             },
         }],
     }

@@ -78,7 +78,7 @@ impl TileBuffers {
     }
 
     /// Turns the tile's visible pixels into fragments, shades them as one batch and writes the
-    /// tile (background where nothing is visible). Returns the number of fragments shaded.
+    /// tile (background where nothing is visible). Returns the fragments shaded and flattened.
     pub fn shade<S: FragmentShader>(
         &mut self,
         triangles: &[ScreenTriangle],
@@ -86,7 +86,7 @@ impl TileBuffers {
         scratch: &mut S::Scratch,
         rect: &PixelRect,
         out: StripOutput,
-    ) -> usize {
+    ) -> (usize, usize) {
         self.fragments.clear();
         self.pixels.clear();
         for y in rect.y0..=rect.y1 {
@@ -107,16 +107,17 @@ impl TileBuffers {
             }
         }
         self.colors.resize(self.fragments.len(), Vec3::ZERO);
-        frame
-            .shader
-            .shade(frame.objects, &self.fragments, scratch, &mut self.colors);
+        let flattened =
+            frame
+                .shader
+                .shade(frame.objects, &self.fragments, scratch, &mut self.colors);
         for ((&pixel, fragment), &color) in
             self.pixels.iter().zip(&self.fragments).zip(&self.colors)
         {
             out.color[pixel as usize] = color;
             out.depth[pixel as usize] = fragment.depth;
         }
-        self.fragments.len()
+        (self.fragments.len(), flattened)
     }
 }
 
