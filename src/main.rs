@@ -22,6 +22,8 @@ struct Cli {
 enum Command {
     /// Render a built-in scene or a scene file to a PNG still.
     Render(commands::render::RenderArgs),
+    /// Check pattern files, scene files and images without rendering.
+    Check(commands::check::CheckArgs),
 }
 
 fn main() -> ExitCode {
@@ -48,6 +50,7 @@ fn main() -> ExitCode {
 fn run(cli: Cli) -> Result<(), Error> {
     match cli.command {
         Some(Command::Render(args)) => commands::render::run(args),
+        Some(Command::Check(args)) => commands::check::run(args),
         None => {
             use clap::CommandFactory;
             let _ = Cli::command().print_help();

@@ -1,5 +1,6 @@
 //! One file per subcommand; `main.rs` only parses and dispatches.
 
+pub mod check;
 pub mod render;
 
 /// Largest output side accepted; 16384² linear-light RGB is 3 GiB, the most an export should take.

@@ -35,6 +35,9 @@ pub fn bumped_normal(
     form: NormalForm,
 ) -> Vec3 {
     let n = frame.n;
+    if b == 0.0 && bu == 0.0 && bv == 0.0 {
+        return n; // exactly: a bump of strength 0 must not change a single bit
+    }
     let orientation = if frame.pu.cross(frame.pv).dot(n) < 0.0 {
         -1.0
     } else {
