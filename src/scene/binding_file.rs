@@ -38,6 +38,10 @@ pub struct BindingFile {
     /// Image textures only (default trilinear).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub filter: Option<FilterFile>,
+    /// Images: what lies past the image's edges (default: repeat; clamp for spherical and
+    /// cylindrical mappings).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub wrap: Option<WrapFile>,
     /// Pattern parameters by name.
     #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
     pub params: BTreeMap<String, f64>,
@@ -77,6 +81,14 @@ pub enum MappingKind {
 
 #[derive(Clone, Copy, Debug, Serialize, Deserialize, PartialEq)]
 #[serde(rename_all = "kebab-case")]
+pub enum WrapFile {
+    Repeat,
+    Clamp,
+    Mirror,
+}
+
+#[derive(Clone, Copy, Debug, Serialize, Deserialize, PartialEq)]
+#[serde(rename_all = "kebab-case")]
 pub enum FilterFile {
     Nearest,
     Bilinear,
@@ -101,12 +113,13 @@ impl BindingFile {
             (None, Some(name)) => {
                 let map = load_height_map(name, base).map_err(|e| e.to_string())?;
                 let mapping = self.image_mapping(surface)?;
-                let wrap = wrap_for(&mapping);
+                let (wrap_s, wrap_t) = self.wrap_for(&mapping);
                 BumpSource::Image(ImageHeight {
                     name: name.clone(),
                     map: Arc::new(map),
                     mapping,
-                    wrap,
+                    wrap_s,
+                    wrap_t,
                 })
             }
             _ => return Err("a bump needs exactly one of `pattern` and `image`".into()),
@@ -140,8 +153,12 @@ impl BindingFile {
                     FilterFile::Bilinear => Filter::Bilinear,
                     FilterFile::Trilinear => Filter::Trilinear,
                 };
-                let wrap = wrap_for(&mapping);
-                let sampler = Sampler::new(filter, wrap);
+                let (wrap_s, wrap_t) = self.wrap_for(&mapping);
+                let sampler = Sampler {
+                    filter,
+                    wrap_s,
+                    wrap_t,
+                };
                 Ok(Texturing::Image(ImageTexture {
                     name: name.clone(),
                     texture: Arc::new(texture),
@@ -154,11 +171,20 @@ impl BindingFile {
     }
 }
 
-/// Images repeat, except around spheres and cylinders where the poles and ends clamp.
-fn wrap_for(mapping: &Mapping) -> Wrap {
-    match mapping {
-        Mapping::Spherical(_) | Mapping::Cylindrical(_) => Wrap::Clamp,
-        _ => Wrap::Repeat,
+impl BindingFile {
+    /// The wrap along s and t: as asked, else images repeat, except that around spheres and
+    /// cylinders t clamps at the poles and ends (s still wraps across the seam).
+    fn wrap_for(&self, mapping: &Mapping) -> (Wrap, Wrap) {
+        let asked = |w: WrapFile| match w {
+            WrapFile::Repeat => Wrap::Repeat,
+            WrapFile::Clamp => Wrap::Clamp,
+            WrapFile::Mirror => Wrap::Mirror,
+        };
+        match (self.wrap, mapping) {
+            (Some(w), _) => (asked(w), asked(w)),
+            (None, Mapping::Spherical(_) | Mapping::Cylindrical(_)) => (Wrap::Repeat, Wrap::Clamp),
+            (None, _) => (Wrap::Repeat, Wrap::Repeat),
+        }
     }
 }
 

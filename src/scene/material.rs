@@ -84,12 +84,15 @@ pub struct ImageHeight {
     pub name: String,
     pub map: Arc<HeightMap>,
     pub mapping: Mapping,
-    pub wrap: Wrap,
+    pub wrap_s: Wrap,
+    pub wrap_t: Wrap,
 }
 
 impl PartialEq for ImageHeight {
     fn eq(&self, other: &Self) -> bool {
-        self.name == other.name && self.mapping == other.mapping && self.wrap == other.wrap
+        self.name == other.name
+            && self.mapping == other.mapping
+            && (self.wrap_s, self.wrap_t) == (other.wrap_s, other.wrap_t)
     }
 }
 

@@ -5,7 +5,7 @@ mod file;
 mod material;
 mod presets;
 
-pub use binding_file::{BindingFile, FilterFile, MappingKind};
+pub use binding_file::{BindingFile, FilterFile, MappingKind, WrapFile};
 pub use file::{MAX_SCENE_FILE_BYTES, SceneFile, load_scene_file, parse_scene};
 pub use material::{
     Bump, BumpSource, ImageHeight, ImageTexture, Material, PatternBinding, Placement, Texturing,

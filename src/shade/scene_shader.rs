@@ -201,9 +201,10 @@ impl LitShader {
                         .mapping
                         .map(&self.surface_point(&scratch.frames[k], fragment));
                     let footprint = mapped.footprint(fragment.duv_dx, fragment.duv_dy);
-                    let sample = image
-                        .map
-                        .sample_gradient(mapped.st, image.wrap, image.wrap, footprint);
+                    let sample =
+                        image
+                            .map
+                            .sample_gradient(mapped.st, image.wrap_s, image.wrap_t, footprint);
                     scratch.heights[k] = sample.height;
                     scratch.gradients[k] = sample.surface_gradient(mapped.jacobian);
                 }
