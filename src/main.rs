@@ -22,6 +22,8 @@ struct Cli {
 enum Command {
     /// Render a built-in scene or a scene file to a PNG still.
     Render(commands::render::RenderArgs),
+    /// Check pattern files, scene files and images without rendering.
+    Check(commands::check::CheckArgs),
     /// Open the terminal workbench on scenes (default: every built-in scene).
     View(commands::view::ViewArgs),
 }
@@ -50,6 +52,7 @@ fn main() -> ExitCode {
 fn run(cli: Cli) -> Result<(), Error> {
     match cli.command {
         Some(Command::Render(args)) => commands::render::run(args),
+        Some(Command::Check(args)) => commands::check::run(args),
         Some(Command::View(args)) => commands::view::run(args),
         None => commands::view::run(Default::default()),
     }

@@ -196,3 +196,50 @@ fn an_unwritable_destination_is_a_user_error_and_leaves_nothing() {
     assert_user_error(&output, "cannot write");
     assert!(!out.exists());
 }
+
+#[test]
+fn check_accepts_good_files_and_reports_each_bad_one() {
+    let dir = temp_dir("check");
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let good = [
+        root.join("patterns/dimples.pat"),
+        root.join("textures/brick.png"),
+        root.join("scenes/sphere-on-plane.toml"),
+    ];
+    let args: Vec<&str> = std::iter::once("check")
+        .chain(good.iter().map(|p| p.to_str().unwrap()))
+        .collect();
+    let output = bumpwork(&args);
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert_eq!(
+        String::from_utf8_lossy(&output.stdout)
+            .matches(": ok: ")
+            .count(),
+        3
+    );
+
+    let pattern = dir.join("bad.pat");
+    std::fs::write(
+        &pattern,
+        "param period = 30 in 5..100\nheight = sin(u / period) + wobble(v)\n",
+    )
+    .unwrap();
+    let image = dir.join("bad.png");
+    std::fs::write(&image, b"\x89PNG\r\n\x1a\nthis is not a png").unwrap();
+    let other = dir.join("notes.txt");
+    std::fs::write(&other, "hello").unwrap();
+    let output = bumpwork(&[
+        "check",
+        pattern.to_str().unwrap(),
+        image.to_str().unwrap(),
+        other.to_str().unwrap(),
+    ]);
+    assert_user_error(&output, "3 of 3 files failed");
+    let message = stderr(&output);
+    assert!(
+        message.contains("bad.pat:2:28") && message.contains("wobble") && message.contains('^'),
+        "{message}"
+    );
+    assert!(message.contains("bad.png"), "{message}");
+    assert!(message.contains("notes.txt: not a pattern"), "{message}");
+}

@@ -28,6 +28,7 @@ fn scene_of(camera: Camera, surface: Surface) -> Scene {
                 color: Vec3::ONE,
                 specular: 0.0,
                 shininess: 1.0,
+                ..Material::default()
             },
         }],
     }

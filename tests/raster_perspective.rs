@@ -34,6 +34,7 @@ fn grazing_plane_scene() -> (Scene, Plane) {
                 color: Vec3::ONE,
                 specular: 0.0,
                 shininess: 1.0,
+                ..Material::default()
             },
         }],
     };

@@ -154,6 +154,7 @@ fn tessellated_sphere_front_faces_cover_its_silhouette_once() {
                 color: Vec3::ONE,
                 specular: 0.0,
                 shininess: 1.0,
+                ..Material::default()
             },
         }],
     };

@@ -95,3 +95,29 @@ fn the_export_key_writes_a_png_and_names_it() {
     assert_eq!(&png[1..4], b"PNG");
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn material_keys_edit_the_bump_and_redraw() {
+    use bumpwork::scene::BumpSource;
+    let mut app = app();
+    let mut screen = Screen::new(60, 20);
+    draw(&mut screen, &mut app);
+    let params = |app: &App| match &app.material().unwrap().bump.as_ref().unwrap().source {
+        BumpSource::Pattern(binding) => (binding.name.clone(), binding.params.clone()),
+        BumpSource::Image(_) => panic!("the preset's bump is a pattern"),
+    };
+    let (name, before) = params(&app);
+    app.apply(Action::AdjustParam(10.0));
+    assert_ne!(params(&app).1, before, "parameter unchanged");
+    assert!(!draw(&mut screen, &mut app).is_empty());
+    app.apply(Action::NextPattern);
+    assert_ne!(params(&app).0, name);
+    assert!(!draw(&mut screen, &mut app).is_empty());
+    let strength = |app: &App| app.material().unwrap().bump.as_ref().unwrap().scale();
+    let s = strength(&app);
+    app.apply(Action::InvertBump);
+    assert_eq!(strength(&app), -s);
+    app.apply(Action::ScaleBump(2.0));
+    assert_eq!(strength(&app), -2.0 * s);
+    assert!(!draw(&mut screen, &mut app).is_empty());
+}

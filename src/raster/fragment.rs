@@ -33,13 +33,14 @@ pub trait FragmentShader: Sync {
     fn scratch(&self) -> Self::Scratch;
 
     /// Writes one linear RGB colour per fragment into `out` (same length as `fragments`).
+    /// Returns how many fragments were drawn flat because a pattern gave no finite value there.
     fn shade(
         &self,
         objects: &[FrameObject],
         fragments: &[Fragment],
         scratch: &mut Self::Scratch,
         out: &mut [Vec3],
-    );
+    ) -> usize;
 }
 
 /// A shader from a function of one fragment, for programs that need no batching.
@@ -50,9 +51,16 @@ impl<F: Fn(&FrameObject, &Fragment) -> Vec3 + Sync> FragmentShader for PerFragme
 
     fn scratch(&self) {}
 
-    fn shade(&self, objects: &[FrameObject], fragments: &[Fragment], _: &mut (), out: &mut [Vec3]) {
+    fn shade(
+        &self,
+        objects: &[FrameObject],
+        fragments: &[Fragment],
+        _: &mut (),
+        out: &mut [Vec3],
+    ) -> usize {
         for (fragment, out) in fragments.iter().zip(out) {
             *out = (self.0)(&objects[fragment.object as usize], fragment);
         }
+        0
     }
 }

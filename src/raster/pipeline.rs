@@ -30,7 +30,7 @@ impl PreparedScene {
             .par_iter()
             .map(|o| PreparedObject {
                 surface: o.surface.clone(),
-                material: o.material,
+                material: o.material.clone(),
                 mesh: o.surface.tessellate(tessellation),
             })
             .collect();
@@ -51,6 +51,8 @@ pub struct FrameStats {
     pub rasterized_triangles: usize,
     /// Pixels shaded (each visible pixel exactly once).
     pub fragments: usize,
+    /// Fragments drawn flat because a pattern gave no finite value there (division by zero…).
+    pub flattened: usize,
 }
 
 /// Where a frame goes and how it is seen.
@@ -130,7 +132,7 @@ pub fn render_into(
     let background = prepared.scene.background;
     framebuffer.resize(viewport.width, viewport.height);
     let strip = (TILE_SIZE * viewport.width) as usize;
-    let fragments: usize = framebuffer
+    let (fragments, flattened) = framebuffer
         .color
         .par_chunks_mut(strip)
         .zip(framebuffer.depth.par_chunks_mut(strip))
@@ -138,7 +140,7 @@ pub fn render_into(
         .map(|(ty, (color, depth))| {
             let mut tile = TileBuffers::default();
             let mut scratch = shader.scratch();
-            let mut shaded = 0;
+            let mut counts = (0, 0);
             for tx in 0..bins.tiles_x {
                 let rect = TileBins::tile_rect(viewport, tx, ty as u32);
                 let bin = &bins.bins[(ty as u32 * bins.tiles_x + tx) as usize];
@@ -154,15 +156,17 @@ pub fn render_into(
                     continue;
                 }
                 tile.resolve_visibility(&triangles, bin, &rect);
-                shaded += tile.shade(&triangles, &frame, &mut scratch, &rect, out);
+                let (shaded, flattened) = tile.shade(&triangles, &frame, &mut scratch, &rect, out);
+                counts = (counts.0 + shaded, counts.1 + flattened);
             }
-            shaded
+            counts
         })
-        .sum();
+        .reduce(|| (0, 0), |a, b| (a.0 + b.0, a.1 + b.1));
     FrameStats {
         triangles: prepared.triangle_count(),
         rasterized_triangles: triangles.len(),
         fragments,
+        flattened,
     }
 }
 

@@ -47,9 +47,19 @@ impl StripOutput<'_> {
         for y in rect.y0..=rect.y1 {
             let row = ((y - self.first_row) * self.width) as usize;
             let span = row + rect.x0 as usize..=row + rect.x1 as usize;
-            self.color[span.clone()].fill(self.background);
+            fill_colour(&mut self.color[span.clone()], self.background);
             self.depth[span].fill(f32::INFINITY);
         }
+    }
+}
+
+/// Most of a frame is background: a grey one is written as plain f32s, which compiles to wide
+/// stores instead of one 12-byte store per pixel.
+fn fill_colour(pixels: &mut [Vec3], colour: Vec3) {
+    if colour.x == colour.y && colour.y == colour.z {
+        bytemuck::cast_slice_mut::<Vec3, f32>(pixels).fill(colour.x);
+    } else {
+        pixels.fill(colour);
     }
 }
 
@@ -78,7 +88,7 @@ impl TileBuffers {
     }
 
     /// Turns the tile's visible pixels into fragments, shades them as one batch and writes the
-    /// tile (background where nothing is visible). Returns the number of fragments shaded.
+    /// tile (background where nothing is visible). Returns the fragments shaded and flattened.
     pub fn shade<S: FragmentShader>(
         &mut self,
         triangles: &[ScreenTriangle],
@@ -86,7 +96,7 @@ impl TileBuffers {
         scratch: &mut S::Scratch,
         rect: &PixelRect,
         out: StripOutput,
-    ) -> usize {
+    ) -> (usize, usize) {
         self.fragments.clear();
         self.pixels.clear();
         for y in rect.y0..=rect.y1 {
@@ -107,16 +117,17 @@ impl TileBuffers {
             }
         }
         self.colors.resize(self.fragments.len(), Vec3::ZERO);
-        frame
-            .shader
-            .shade(frame.objects, &self.fragments, scratch, &mut self.colors);
+        let flattened =
+            frame
+                .shader
+                .shade(frame.objects, &self.fragments, scratch, &mut self.colors);
         for ((&pixel, fragment), &color) in
             self.pixels.iter().zip(&self.fragments).zip(&self.colors)
         {
             out.color[pixel as usize] = color;
             out.depth[pixel as usize] = fragment.depth;
         }
-        self.fragments.len()
+        (self.fragments.len(), flattened)
     }
 }
 

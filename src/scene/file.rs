@@ -2,6 +2,7 @@
 //! own line and column. Built-in presets are written in the same types, so any preset can be
 //! printed as a file and edited.
 
+use super::binding_file::BindingFile;
 use super::{Light, Material, Object, Scene};
 use crate::Error;
 use crate::raster::Camera;
@@ -67,6 +68,10 @@ pub struct ObjectFile {
     pub surface: SurfaceFile,
     #[serde(default)]
     pub material: MaterialFile,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub texture: Option<BindingFile>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub bump: Option<BindingFile>,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -225,9 +230,10 @@ pub fn parse_scene(text: &str, origin: &str) -> Result<Scene, Error> {
     let fallback_name = Path::new(origin)
         .file_stem()
         .map_or("scene".into(), |s| s.to_string_lossy());
-    file.to_scene(&fallback_name).map_err(|message| {
+    let base = Path::new(origin).parent().unwrap_or(Path::new("."));
+    file.to_scene(&fallback_name, base).map_err(|message| {
         Error::Diagnostic(format!(
-            "{}: error: {message}",
+            "{}: {message}",
             crate::diagnostic::sanitize(origin)
         ))
     })
@@ -244,14 +250,15 @@ impl SceneFile {
         toml::to_string(self).expect("scene files hold only TOML-representable values")
     }
 
-    /// The checked scene, or a message naming the object that cannot be built.
-    pub fn to_scene(&self, fallback_name: &str) -> Result<Scene, String> {
+    /// The checked scene, or a message naming the object that cannot be built. Pattern and image
+    /// paths are relative to `base` (the scene file's directory).
+    pub fn to_scene(&self, fallback_name: &str, base: &Path) -> Result<Scene, String> {
         let objects = self
             .objects
             .iter()
             .enumerate()
             .map(|(i, o)| {
-                o.to_object()
+                o.to_object(base)
                     .map_err(|e| format!("object {} ({}): {e}", i + 1, o.surface.kind()))
             })
             .collect::<Result<Vec<_>, _>>()?;
@@ -312,13 +319,26 @@ impl LightFile {
 }
 
 impl ObjectFile {
-    fn to_object(&self) -> Result<Object, String> {
+    fn to_object(&self, base: &Path) -> Result<Object, String> {
+        let surface = self.surface.to_surface()?;
+        let texture = self
+            .texture
+            .as_ref()
+            .map(|t| t.load_texture(&surface, base))
+            .transpose()?;
+        let bump = self
+            .bump
+            .as_ref()
+            .map(|b| b.load_bump(&surface, base))
+            .transpose()?;
         Ok(Object {
-            surface: self.surface.to_surface()?,
+            surface,
             material: Material {
                 color: self.material.color.0,
                 specular: self.material.specular.0,
                 shininess: self.material.shininess.0,
+                texture,
+                bump,
             },
         })
     }

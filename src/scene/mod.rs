@@ -1,9 +1,15 @@
 //! What is drawn: surfaces with materials, lights and a camera, from a TOML file or a preset.
 
+mod binding_file;
 mod file;
+mod material;
 mod presets;
 
+pub use binding_file::{BindingFile, FilterFile, MappingKind, WrapFile};
 pub use file::{MAX_SCENE_FILE_BYTES, SceneFile, load_scene_file, parse_scene};
+pub use material::{
+    Bump, BumpSource, ImageHeight, ImageTexture, Material, PatternBinding, Placement, Texturing,
+};
 pub use presets::{PRESET_NAMES, preset, preset_file};
 
 use crate::raster::Camera;
@@ -25,14 +31,6 @@ pub struct Scene {
 pub struct Object {
     pub surface: Surface,
     pub material: Material,
-}
-
-/// Blinn-Phong material: diffuse colour (linear RGB), white specular weight and exponent.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Material {
-    pub color: Vec3,
-    pub specular: f32,
-    pub shininess: f32,
 }
 
 /// Lights have no distance fall-off, like the seed's ray tracer.

@@ -2,6 +2,7 @@
 //! Geometry uses the seed's units: a 400-wide plane, a "big sphere" of radius 280.
 
 use super::Scene;
+use super::binding_file::{BindingFile, MappingKind};
 use super::file::*;
 use glam::{DVec3, Vec3};
 
@@ -56,42 +57,133 @@ pub fn preset_file(name: &str) -> Option<SceneFile> {
     if !PRESET_NAMES.contains(&name) {
         return None;
     }
-    let mut file = if name.starts_with("sphere-on-plane-") {
-        sphere_on_plane()
-    } else if name.starts_with("wave-") {
-        wave()
-    } else if name.starts_with("parabola-") {
-        parabola()
-    } else if name.starts_with("big-sphere-") {
-        big_sphere()
-    } else if name.starts_with("cone-") {
-        cone()
-    } else if name == "sphere-image-bump" || name == "textured-sphere" {
-        single_sphere()
-    } else if name == "textured-spheres" {
-        spheres_on_floor()
-    } else if name == "planes-stripes-checks-image" {
-        room_corner()
-    } else if name == "two-planes-textured" {
-        two_planes()
-    } else if name == "image-to-triangle" {
-        triangle()
-    } else if matches!(
-        name,
-        "plane-stripes" | "plane-checks" | "plane-stripes-and-checks"
-    ) {
-        floor_plane()
-    } else {
-        facing_plane()
-    };
+    let mut file = geometry(name);
+    dress(name, &mut file.objects);
     file.name = Some(name.to_string());
     Some(file)
+}
+
+/// The scene's surfaces, camera and lights.
+fn geometry(name: &str) -> SceneFile {
+    match name {
+        _ if name.starts_with("sphere-on-plane-") => sphere_on_plane(),
+        _ if name.starts_with("wave-") => wave(),
+        _ if name.starts_with("parabola-") => parabola(),
+        _ if name.starts_with("big-sphere-") => big_sphere(),
+        _ if name.starts_with("cone-") => cone(),
+        "sphere-image-bump" | "textured-sphere" => single_sphere(),
+        "textured-spheres" => spheres_on_floor(),
+        "planes-stripes-checks-image" => room_corner(),
+        "two-planes-textured" | "plane-stripes-and-checks" => two_planes(),
+        "image-to-triangle" => triangle(),
+        "plane-stripes" | "plane-checks" => floor_plane(),
+        _ => facing_plane(),
+    }
+}
+
+/// The bump patterns and textures of each figure.
+fn dress(name: &str, objects: &mut [ObjectFile]) {
+    let bump_pattern = BUMP_PATTERNS
+        .iter()
+        .find(|p| name.ends_with(&format!("-{p}")));
+    if let Some(pattern) = bump_pattern {
+        // The seed's dimples are its own slope code; every surface of the figure gets the pattern.
+        let file = if *pattern == "dimples" {
+            "dimples-seed"
+        } else {
+            pattern
+        };
+        for object in objects.iter_mut() {
+            object.bump = Some(pattern_binding(file));
+        }
+        return;
+    }
+    let textures: &[Option<BindingFile>] = match name {
+        "plane-image-bump" => return objects[0].bump = Some(image_bump("brick", 40.0, None)),
+        "sphere-image-bump" => {
+            return objects[0].bump =
+                Some(image_bump("gravel", 25.0, Some(MappingKind::Spherical)));
+        }
+        "plane-stripes" => &[Some(pattern_binding("stripes"))],
+        "plane-checks" => &[Some(pattern_binding("checks"))],
+        "plane-stripes-and-checks" => &[
+            Some(pattern_binding("checks")),
+            Some(pattern_binding("stripes")),
+        ],
+        "planes-stripes-checks-image" => &[
+            Some(pattern_binding("stripes")),
+            Some(pattern_binding("checks")),
+            Some(image_texture("chelsea", None)),
+        ],
+        "image-scroll" => &[Some(BindingFile {
+            scroll: Some([Finite(0.1), Finite(0.0)]),
+            ..image_texture("coffee", None)
+        })],
+        "two-planes-textured" => &[
+            Some(BindingFile {
+                scale: Some([Positive(200.0), Positive(200.0)]),
+                ..image_texture("chelsea", None)
+            }),
+            Some(image_texture("coffee", None)),
+        ],
+        "image-to-triangle" => &[Some(image_texture("chelsea", Some(MappingKind::Triangle)))],
+        "textured-sphere" => &[Some(image_texture("chelsea", Some(MappingKind::Spherical)))],
+        "textured-spheres" => &[
+            None,
+            Some(image_texture("chelsea", Some(MappingKind::Spherical))),
+            Some(image_texture("coffee", Some(MappingKind::Spherical))),
+            Some(image_texture("gravel", Some(MappingKind::Spherical))),
+        ],
+        _ => &[],
+    };
+    for (object, texture) in objects.iter_mut().zip(textures) {
+        object.texture = texture.clone();
+    }
+}
+
+/// The lecture's bump patterns, named as in the scene names.
+const BUMP_PATTERNS: &[&str] = &[
+    "spheres",
+    "horizontal-wave",
+    "vertical-wave",
+    "ripples",
+    "ripple",
+    "mesh",
+    "waffle",
+    "dots-and-dimples",
+    "dimples",
+    "squares",
+];
+
+fn pattern_binding(pattern: &str) -> BindingFile {
+    BindingFile {
+        pattern: Some(pattern.to_string()),
+        ..BindingFile::default()
+    }
+}
+
+fn image_texture(image: &str, mapping: Option<MappingKind>) -> BindingFile {
+    BindingFile {
+        image: Some(image.to_string()),
+        mapping,
+        ..BindingFile::default()
+    }
+}
+
+fn image_bump(image: &str, strength: f32, mapping: Option<MappingKind>) -> BindingFile {
+    BindingFile {
+        strength: Some(Finite(strength)),
+        ..image_texture(image, mapping)
+    }
 }
 
 /// The built-in scene of that name, ready to render.
 pub fn preset(name: &str) -> Option<Scene> {
     let file = preset_file(name)?;
-    Some(file.to_scene(name).expect("built-in scenes are valid"))
+    Some(
+        file.to_scene(name, std::path::Path::new("."))
+            .expect("built-in scenes are valid"),
+    )
 }
 
 /// The preset name nearest to a mistyped one, if any is close.
@@ -166,7 +258,12 @@ fn scene(camera: CameraFile, lights: Vec<LightFile>, objects: Vec<ObjectFile>) -
 }
 
 fn object(surface: SurfaceFile, material: MaterialFile) -> ObjectFile {
-    ObjectFile { surface, material }
+    ObjectFile {
+        surface,
+        material,
+        texture: None,
+        bump: None,
+    }
 }
 
 /// An axis-aligned rectangle: `normal` and `u_axis` are world axes.

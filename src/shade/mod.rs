@@ -1,7 +1,13 @@
-//! Per-fragment shading: the surface's exact frame at the fragment's (u,v), then lighting.
+//! Per-fragment shading: the surface's exact frame at the fragment's (u,v), the texture, the
+//! bump-perturbed normal, then lighting.
 
+mod bump;
 mod lighting;
-mod lit;
+mod pattern_batch;
+mod scene_shader;
+mod view_mode;
 
-pub use lighting::{FrameLights, blinn_phong};
-pub use lit::LitShader;
+pub use bump::{NormalForm, bumped_normal};
+pub use lighting::{FrameLights, blinn_phong, facing_sign};
+pub use scene_shader::{LitShader, ShadeScratch};
+pub use view_mode::ViewMode;

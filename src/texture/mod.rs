@@ -13,6 +13,7 @@
 //!    linear premultiplied [`Texel`]; [`HeightMap::sample_gradient`] gives the height
 //!    and ∂h/∂s, ∂h/∂t, and [`HeightSample::surface_gradient`] Blinn's (B_u, B_v).
 
+mod builtin;
 mod colour;
 mod encoding;
 mod error;
@@ -25,6 +26,7 @@ mod raster;
 mod sampler;
 mod wrap;
 
+pub use builtin::{BUILTIN_IMAGES, load_height_map, load_texture};
 pub use colour::{Texel, Texture};
 pub use encoding::{Encoding, linear_to_srgb, srgb_to_linear};
 pub use error::{PrintableName, Reason, TextureError};

@@ -23,6 +23,8 @@ pub enum Action {
     NextQuality,
     NextGlyphs,
     NextColors,
+    /// The object whose material the pattern, texture and bump keys edit.
+    NextObject,
     NextPattern,
     PreviousPattern,
     NextTexture,

@@ -5,13 +5,14 @@ use super::action::Action;
 use super::clock::Clock;
 use super::export::export_view;
 use super::light::move_lights;
+use super::material_controls as controls;
 use super::options::WorkbenchOptions;
 use super::orbit::Orbit;
 use super::quality::Quality;
 use super::view_mode::ViewMode;
 use crate::Error;
 use crate::raster::{Camera, FrameStats, PreparedScene};
-use crate::scene::Scene;
+use crate::scene::{Material, Scene};
 use crate::surface::Tessellation;
 use crate::term::{ColorMode, GlyphSet};
 use std::path::PathBuf;
@@ -22,6 +23,9 @@ pub struct App {
     pub scene_index: usize,
     pub prepared: PreparedScene,
     pub orbit: Orbit,
+    /// The object the material keys edit, and its selected bump parameter.
+    pub object: usize,
+    pub param: usize,
     pub view_mode: ViewMode,
     pub quality: Quality,
     pub glyphs: GlyphSet,
@@ -85,6 +89,8 @@ impl App {
         Ok(App {
             scenes: options.scenes.clone(),
             scene_index: 0,
+            object: first_bumped_object(&scene),
+            param: 0,
             prepared: prepare(scene, quality),
             orbit,
             view_mode: ViewMode::default(),
@@ -112,7 +118,15 @@ impl App {
 
     /// Whether the picture changes with time, so frames must keep coming while the clock runs.
     pub fn animates(&self) -> bool {
-        false
+        self.prepared
+            .objects
+            .iter()
+            .any(|o| controls::animates(&o.material))
+    }
+
+    /// The material the material keys edit.
+    pub fn material(&self) -> Option<&Material> {
+        self.prepared.objects.get(self.object).map(|o| &o.material)
     }
 
     pub fn apply(&mut self, action: Action) {
@@ -155,8 +169,72 @@ impl App {
         }
     }
 
-    fn apply_to_material(&mut self, _action: Action) {
-        self.message = Message::Info("this scene has no bump pattern".into());
+    fn apply_to_material(&mut self, action: Action) {
+        if self.prepared.objects.is_empty() {
+            self.message = Message::Info("this scene has no objects".into());
+            return;
+        }
+        let param = self.param;
+        let done = match action {
+            Action::NextObject => {
+                self.object = (self.object + 1) % self.prepared.objects.len();
+                self.param = 0;
+                true
+            }
+            Action::NextPattern => {
+                self.edit_material(|m| !controls::cycle_bump_pattern(m, 1).is_empty())
+            }
+            Action::PreviousPattern => {
+                self.edit_material(|m| !controls::cycle_bump_pattern(m, -1).is_empty())
+            }
+            Action::NextTexture => {
+                self.edit_material(|m| !controls::cycle_texture_pattern(m, 1).is_empty())
+            }
+            Action::PreviousTexture => {
+                self.edit_material(|m| !controls::cycle_texture_pattern(m, -1).is_empty())
+            }
+            Action::ScaleBump(factor) => self.edit_material(|m| controls::scale_bump(m, factor)),
+            Action::InvertBump => self.edit_material(controls::invert_bump),
+            Action::SelectParam(step) => self.select_param(step),
+            Action::AdjustParam(steps) => {
+                self.edit_material(|m| controls::adjust_param(m, param, steps))
+            }
+            _ => true,
+        };
+        if matches!(action, Action::NextPattern | Action::PreviousPattern) {
+            self.param = 0;
+        }
+        self.message = match done {
+            true => Message::None,
+            false => Message::Info("this object has no bump pattern (p adds one)".into()),
+        };
+    }
+
+    /// Applies `edit` to the current object's material, both as rendered and as kept in the scene
+    /// (which a quality change re-prepares from). Returns what `edit` returned.
+    fn edit_material(&mut self, edit: impl Fn(&mut Material) -> bool) -> bool {
+        let index = self.object;
+        let rendered = self
+            .prepared
+            .objects
+            .get_mut(index)
+            .is_some_and(|o| edit(&mut o.material));
+        if let Some(object) = self.prepared.scene.objects.get_mut(index) {
+            edit(&mut object.material);
+        }
+        rendered
+    }
+
+    fn select_param(&mut self, step: i32) -> bool {
+        let count = self
+            .material()
+            .and_then(controls::bump_pattern)
+            .map_or(0, |b| b.params.len());
+        if count == 0 {
+            return false;
+        }
+        self.param = (self.param as i32 + step).rem_euclid(count as i32) as usize;
+        true
     }
 
     pub fn switch_scene(&mut self, step: i32) {
@@ -165,6 +243,8 @@ impl App {
         match crate::scene::resolve(&self.scenes[index]) {
             Ok(scene) => {
                 self.scene_index = index;
+                self.object = first_bumped_object(&scene);
+                self.param = 0;
                 self.orbit = Orbit::from_camera(&scene.camera);
                 self.prepared = prepare(scene, self.quality);
                 self.message = Message::None;
@@ -202,6 +282,15 @@ impl App {
 fn prepare(scene: Scene, quality: Quality) -> PreparedScene {
     let density = quality.tessellation_density();
     PreparedScene::new(scene, Tessellation { density })
+}
+
+/// The first object with a bump map, else the first: what the material keys start on.
+fn first_bumped_object(scene: &Scene) -> usize {
+    scene
+        .objects
+        .iter()
+        .position(|o| o.material.bump.is_some())
+        .unwrap_or(0)
 }
 
 fn next_glyphs(glyphs: GlyphSet) -> GlyphSet {

@@ -95,6 +95,12 @@ pub const BINDINGS: &[Binding] = &[
     ),
     bind("", "", &[Char('V')], Action::PreviousViewMode),
     bind(
+        "o",
+        "next object (the one p t b i [ ] , . edit)",
+        &[Char('o')],
+        Action::NextObject,
+    ),
+    bind(
         "p P",
         "next / previous pattern",
         &[Char('p')],

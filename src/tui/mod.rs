@@ -14,6 +14,7 @@ mod help;
 mod input;
 pub mod keymap;
 mod light;
+mod material_controls;
 mod options;
 mod orbit;
 mod quality;

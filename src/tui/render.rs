@@ -15,6 +15,8 @@ pub struct View<'a> {
     pub prepared: &'a PreparedScene,
     pub camera: Camera,
     pub mode: ViewMode,
+    /// Scene time in seconds, for animated patterns and scrolling images.
+    pub time: f64,
 }
 
 impl<'a> View<'a> {
@@ -23,6 +25,7 @@ impl<'a> View<'a> {
             prepared: &app.prepared,
             camera: app.camera(),
             mode: app.view_mode,
+            time: app.clock.time(),
         }
     }
 }
@@ -39,7 +42,7 @@ pub fn render_frame(
         viewport: Viewport { width, height },
         interpolation: Interpolation::PerspectiveCorrect,
     };
-    let stats = render_view_mode(view.mode, view.prepared, &target, framebuffer);
+    let stats = render_view_mode(view.mode, view.time, view.prepared, &target, framebuffer);
     if view.mode == ViewMode::Wireframe {
         draw_wireframe(view.prepared, &target, framebuffer);
     }

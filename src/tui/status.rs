@@ -2,6 +2,7 @@
 //! important parts first.
 
 use super::app::{App, Message};
+use crate::scene::{BumpSource, Material, Texturing};
 use crate::term::{ColorMode, GlyphSet, sanitize};
 
 const SEPARATOR: &str = " │ ";
@@ -42,11 +43,12 @@ fn segments(app: &App) -> Vec<Segment> {
                 sanitize(&app.scene().name)
             ),
         ),
+        segment(1, app.view_mode.name().into()),
+        segment(1, material_text(app)),
         segment(
             3,
             format!(
-                "{} {} {} {}",
-                app.view_mode.name(),
+                "{} {} {}",
                 app.quality.name(),
                 glyphs_name(app.glyphs),
                 colors_name(app.colors)
@@ -71,10 +73,56 @@ fn segments(app: &App) -> Vec<Segment> {
     }
     match &app.message {
         Message::None => list.push(segment(5, "? help".into())),
-        Message::Info(text) => list.insert(1, segment(1, first_line(text))),
-        Message::Error(text) => list.insert(1, segment(1, format!("error: {}", first_line(text)))),
+        Message::Info(text) => list.insert(2, segment(1, first_line(text))),
+        Message::Error(text) => list.insert(2, segment(1, format!("error: {}", first_line(text)))),
     }
     list
+}
+
+/// The edited object's bump (pattern, strength, parameters with the selected one bracketed) and
+/// texture.
+fn material_text(app: &App) -> String {
+    let Some(material) = app.material() else {
+        return "no objects".into();
+    };
+    let mut text = format!("obj {} {}", app.object + 1, bump_text(material, app.param));
+    if let Some(texture) = &material.texture {
+        let name = match texture {
+            Texturing::Pattern(b) => &b.name,
+            Texturing::Image(i) => &i.name,
+        };
+        text += &format!(" tex {}", sanitize(name));
+    }
+    text
+}
+
+fn bump_text(material: &Material, selected: usize) -> String {
+    let Some(bump) = &material.bump else {
+        return "no bump".into();
+    };
+    let sign = if bump.invert { "-" } else { "" };
+    match &bump.source {
+        BumpSource::Image(image) => {
+            format!("{} ×{sign}{:.2}", sanitize(&image.name), bump.strength)
+        }
+        BumpSource::Pattern(binding) => {
+            let mut text = format!("{} ×{sign}{:.2}", sanitize(&binding.name), bump.strength);
+            for (i, (param, value)) in binding
+                .pattern
+                .params()
+                .iter()
+                .zip(&binding.params)
+                .enumerate()
+            {
+                let name = sanitize(&param.name);
+                text += &match i == selected {
+                    true => format!(" {name}=[{value:.3}]"),
+                    false => format!(" {name}={value:.3}"),
+                };
+            }
+            text
+        }
+    }
 }
 
 fn segment(rank: u8, text: String) -> Segment {

@@ -1,0 +1,67 @@
+//! `bumpwork check FILE…`: validates pattern files, scene files and images exactly as the
+//! renderer would load them, without rendering. One line per good file on stdout; each bad file's
+//! message on stderr; exit status 1 if any file is bad.
+
+use bumpwork::Error;
+use bumpwork::diagnostic::sanitize;
+use std::path::{Path, PathBuf};
+
+#[derive(clap::Args)]
+pub struct CheckArgs {
+    /// Pattern files (.pat), scene files (.toml) or images (.png, .jpg, .ppm, .pgm, .bmp, .tga).
+    #[arg(required = true)]
+    files: Vec<PathBuf>,
+}
+
+const IMAGE_EXTENSIONS: &[&str] = &[
+    "png", "jpg", "jpeg", "ppm", "pgm", "pbm", "pnm", "bmp", "tga",
+];
+
+pub fn run(args: CheckArgs) -> Result<(), Error> {
+    let mut bad = 0;
+    for path in &args.files {
+        match check(path) {
+            Ok(summary) => println!("{}: ok: {summary}", sanitize(&path.display().to_string())),
+            Err(message) => {
+                eprintln!("{message}");
+                bad += 1;
+            }
+        }
+    }
+    match bad {
+        0 => Ok(()),
+        n => Err(Error::InvalidArgument(format!(
+            "{n} of {} files failed the check",
+            args.files.len()
+        ))),
+    }
+}
+
+fn check(path: &Path) -> Result<String, String> {
+    let extension = path
+        .extension()
+        .map(|e| e.to_string_lossy().to_ascii_lowercase());
+    match extension.as_deref() {
+        Some("pat") => bumpwork::pattern::check_file(path)
+            .map(|s| s.to_string())
+            .map_err(|e| e.to_string()),
+        Some("toml") => bumpwork::scene::load_scene_file(path)
+            .map(|scene| {
+                format!(
+                    "scene '{}', {} objects, {} lights",
+                    sanitize(&scene.name),
+                    scene.objects.len(),
+                    scene.lights.len()
+                )
+            })
+            .map_err(|e| e.to_string()),
+        Some(ext) if IMAGE_EXTENSIONS.contains(&ext) => bumpwork::texture::check_image(path)
+            .map(|info| info.to_string())
+            .map_err(|e| e.to_string()),
+        _ => Err(format!(
+            "{}: not a pattern (.pat), scene (.toml) or image ({}) file",
+            sanitize(&path.display().to_string()),
+            IMAGE_EXTENSIONS.join(", ")
+        )),
+    }
+}
