@@ -141,7 +141,10 @@ fn the_workbench_runs_in_a_real_terminal_and_gives_it_back() {
     session.wait_for("the height view", status_contains("│ height │"));
 
     session.send("p");
-    session.wait_for("the next bump pattern", status_contains(" dimples ×1.00 period="));
+    session.wait_for(
+        "the next bump pattern",
+        status_contains(" dimples ×1.00 period="),
+    );
 
     session.send("e");
     session.wait_for("the export to finish", status_contains("exported"));

@@ -121,3 +121,51 @@ fn material_keys_edit_the_bump_and_redraw() {
     assert_eq!(strength(&app), -2.0 * s);
     assert!(!draw(&mut screen, &mut app).is_empty());
 }
+
+#[test]
+fn an_edited_pattern_file_reloads_and_a_broken_one_keeps_the_view_and_shows_where() {
+    let dir = std::env::temp_dir().join(format!("bumpwork-tui-reload-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("live.pat");
+    std::fs::write(
+        &path,
+        "param period = 20 in 2..100\nheight = sin(u / period)\n",
+    )
+    .unwrap();
+    let options = WorkbenchOptions {
+        scenes: vec![path.to_str().unwrap().into()],
+        ..WorkbenchOptions::default()
+    };
+    let mut app = App::new(&options, ColorMode::Ansi256).unwrap();
+    let mut screen = Screen::new(40, 12);
+    draw(&mut screen, &mut app);
+    app.reload_if_changed();
+    assert_eq!(app.message, Message::None, "unchanged file reloaded");
+
+    let touch = |text: &str, seconds: u64| {
+        std::fs::write(&path, text).unwrap();
+        let later = std::time::SystemTime::now() + std::time::Duration::from_secs(seconds);
+        std::fs::File::options()
+            .write(true)
+            .open(&path)
+            .unwrap()
+            .set_modified(later)
+            .unwrap();
+    };
+    touch("height = u + )\n", 10);
+    app.reload_if_changed();
+    let Message::Error(error) = &app.message else {
+        panic!("{:?}", app.message);
+    };
+    assert!(error.contains("live.pat:1:"), "{error}");
+    assert!(
+        !draw(&mut screen, &mut app).is_empty(),
+        "the error is shown"
+    );
+
+    touch("height = cos(v / 7)\n", 20);
+    app.reload_if_changed();
+    assert_eq!(app.message, Message::Info("reloaded".into()));
+    assert!(!draw(&mut screen, &mut app).is_empty());
+    std::fs::remove_dir_all(&dir).unwrap();
+}

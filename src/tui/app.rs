@@ -9,6 +9,7 @@ use super::material_controls as controls;
 use super::options::WorkbenchOptions;
 use super::orbit::Orbit;
 use super::quality::Quality;
+use super::source::modified;
 use super::view_mode::ViewMode;
 use crate::Error;
 use crate::raster::{Camera, FrameStats, PreparedScene};
@@ -16,7 +17,7 @@ use crate::scene::{Material, Scene};
 use crate::surface::Tessellation;
 use crate::term::{ColorMode, GlyphSet};
 use std::path::PathBuf;
-use std::time::Duration;
+use std::time::{Duration, SystemTime};
 
 pub struct App {
     pub scenes: Vec<String>,
@@ -38,6 +39,8 @@ pub struct App {
     pub export_size: (u32, u32),
     pub export_dir: PathBuf,
     pub dirty: Dirty,
+    /// The current source file's modification time when it was last loaded (None: not a file).
+    loaded_modified: Option<SystemTime>,
 }
 
 /// The reload state or the last error, shown in the status line.
@@ -80,7 +83,7 @@ impl App {
         }
         let mut first = None;
         for name in &options.scenes {
-            let scene = crate::scene::resolve(name)?;
+            let scene = super::source::load_source(name)?;
             first.get_or_insert(scene);
         }
         let scene = first.expect("at least one scene");
@@ -105,6 +108,7 @@ impl App {
             export_size: options.export_size,
             export_dir: PathBuf::from("."),
             dirty: Dirty::ALL,
+            loaded_modified: modified(&options.scenes[0]),
         })
     }
 
@@ -240,15 +244,39 @@ impl App {
     pub fn switch_scene(&mut self, step: i32) {
         let count = self.scenes.len() as i32;
         let index = (self.scene_index as i32 + step).rem_euclid(count) as usize;
-        match crate::scene::resolve(&self.scenes[index]) {
+        match super::source::load_source(&self.scenes[index]) {
             Ok(scene) => {
                 self.scene_index = index;
+                self.loaded_modified = modified(&self.scenes[index]);
                 self.object = first_bumped_object(&scene);
                 self.param = 0;
                 self.orbit = Orbit::from_camera(&scene.camera);
                 self.prepared = prepare(scene, self.quality);
                 self.message = Message::None;
                 self.dirty = Dirty::ALL;
+            }
+            Err(e) => self.message = Message::Error(e.to_string()),
+        }
+    }
+
+    /// Reloads the current scene or pattern file if it changed on disk, keeping the camera, view
+    /// and selection; a file that fails keeps the last good view and shows the error.
+    pub fn reload_if_changed(&mut self) {
+        let name = &self.scenes[self.scene_index];
+        let now = modified(name);
+        if now.is_none() || now == self.loaded_modified {
+            return;
+        }
+        self.loaded_modified = now;
+        self.dirty.text = true;
+        match super::source::load_source(name) {
+            Ok(scene) => {
+                self.prepared = prepare(scene, self.quality);
+                self.object = self
+                    .object
+                    .min(self.prepared.objects.len().saturating_sub(1));
+                self.message = Message::Info("reloaded".into());
+                self.dirty.picture = true;
             }
             Err(e) => self.message = Message::Error(e.to_string()),
         }

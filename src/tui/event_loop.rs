@@ -36,6 +36,7 @@ fn event_loop(app: &mut App, signals: &ShutdownSignals) -> io::Result<()> {
     let mut input = InputState::default();
     let mut last_frame = Instant::now();
     while !app.quit && signals.received().is_none() {
+        app.reload_if_changed();
         if app.animates()
             && app.clock.is_running()
             && last_frame.elapsed() >= app.clock.frame_interval()

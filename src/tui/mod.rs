@@ -21,6 +21,7 @@ mod quality;
 mod render;
 mod resample;
 mod screen;
+mod source;
 mod status;
 mod view_mode;
 mod wireframe;

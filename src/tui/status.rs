@@ -74,7 +74,8 @@ fn segments(app: &App) -> Vec<Segment> {
     match &app.message {
         Message::None => list.push(segment(5, "? help".into())),
         Message::Info(text) => list.insert(2, segment(1, first_line(text))),
-        Message::Error(text) => list.insert(2, segment(1, format!("error: {}", first_line(text)))),
+        // An error matters more than anything else on a short line: it goes first.
+        Message::Error(text) => list.insert(0, segment(0, format!("error: {}", first_line(text)))),
     }
     list
 }

@@ -1,0 +1,70 @@
+//! Where a workbench scene comes from: a built-in name, a scene file, or a pattern file shown on
+//! the sphere-on-plane scene; and whether its file changed since it was loaded (hot reload).
+
+use crate::Error;
+use crate::pattern::{OutputKind, Pattern};
+use crate::scene::{BumpSource, PatternBinding, Scene, Texturing};
+use std::path::Path;
+use std::time::SystemTime;
+
+/// The scene a pattern file is shown on: both a plane and a sphere, the pattern on each.
+const PATTERN_STAGE: &str = "sphere-on-plane-dimples";
+
+/// Loads the scene `name` names: a `.pat` file goes on the stage scene, anything else is a
+/// built-in scene or a scene file.
+pub fn load_source(name: &str) -> Result<Scene, Error> {
+    if !name.ends_with(".pat") {
+        return crate::scene::resolve(name);
+    }
+    let pattern = Pattern::load(Path::new(name)).map_err(|e| Error::Diagnostic(e.to_string()))?;
+    let mut scene = crate::scene::resolve(PATTERN_STAGE)?;
+    let file_name = Path::new(name).file_name().map(|n| n.to_string_lossy());
+    scene.name = file_name.map_or_else(|| name.to_string(), |n| n.into_owned());
+    for object in &mut scene.objects {
+        let binding = PatternBinding {
+            name: name.to_string(),
+            params: pattern.params().iter().map(|p| p.default).collect(),
+            pattern: pattern.clone(),
+            placement: Default::default(),
+        };
+        match (pattern.output(), &mut object.material.bump) {
+            (OutputKind::Color, _) => object.material.texture = Some(Texturing::Pattern(binding)),
+            (_, Some(bump)) => bump.source = BumpSource::Pattern(binding),
+            (_, None) => {}
+        }
+    }
+    Ok(scene)
+}
+
+/// The modification time of the source's file, if it is a file.
+pub fn modified(name: &str) -> Option<SystemTime> {
+    std::fs::metadata(name).ok()?.modified().ok()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_pattern_file_is_shown_on_every_bumped_object_and_errors_name_the_place() {
+        let dir = std::env::temp_dir().join(format!("bumpwork-source-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let good = dir.join("bumps.pat");
+        std::fs::write(
+            &good,
+            "param period = 20 in 2..100\nheight = sin(u / period)\n",
+        )
+        .unwrap();
+        let scene = load_source(good.to_str().unwrap()).unwrap();
+        let bumped = scene
+            .objects
+            .iter()
+            .filter_map(|o| o.material.bump.as_ref());
+        assert!(bumped.count() > 0);
+        let bad = dir.join("bad.pat");
+        std::fs::write(&bad, "height = u + )\n").unwrap();
+        let message = load_source(bad.to_str().unwrap()).unwrap_err().to_string();
+        assert!(message.contains("bad.pat:1:"), "{message}");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}
