@@ -75,7 +75,7 @@ fn segments(app: &App) -> Vec<Segment> {
         Message::None => list.push(segment(5, "? help".into())),
         Message::Info(text) => list.insert(2, segment(1, first_line(text))),
         // An error matters more than anything else on a short line: it goes first.
-        Message::Error(text) => list.insert(0, segment(0, format!("error: {}", first_line(text)))),
+        Message::Error(text) => list.insert(0, segment(0, error_text(text))),
     }
     list
 }
@@ -133,6 +133,16 @@ fn segment(rank: u8, text: String) -> Segment {
 fn join(segments: &[Segment]) -> String {
     let texts: Vec<&str> = segments.iter().map(|s| s.text.as_str()).collect();
     texts.join(SEPARATOR)
+}
+
+/// Diagnostics already say `error:` after their file:line:column; other errors get the word.
+fn error_text(text: &str) -> String {
+    let line = first_line(text);
+    if line.contains("error:") {
+        line
+    } else {
+        format!("error: {line}")
+    }
 }
 
 /// Messages may carry a caret diagram below the line:column; the status line has room for one.
