@@ -115,7 +115,12 @@ fn main() {
             t.runs
         )
     };
-    println!("debounce {} ms, frame {}×{}", DEBOUNCE.as_millis(), VIEWPORT.width, VIEWPORT.height);
+    println!(
+        "debounce {} ms, frame {}×{}",
+        DEBOUNCE.as_millis(),
+        VIEWPORT.width,
+        VIEWPORT.height
+    );
     report("write → reloaded scene", Timing::from_samples(available));
     report("write → frame rendered", Timing::from_samples(shown));
     report("load + render alone", render_only);

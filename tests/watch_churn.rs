@@ -11,7 +11,11 @@ use watch_support::*;
 fn a_hundred_starts_and_drops_leave_no_thread_or_watcher_behind() {
     let dir = TempDir::new("churn");
     fs::write(dir.join("ridges.pat"), pattern_source(1)).unwrap();
-    fs::write(dir.join("scene.toml"), scene_toml("pattern = \"ridges.pat\"")).unwrap();
+    fs::write(
+        dir.join("scene.toml"),
+        scene_toml("pattern = \"ridges.pat\""),
+    )
+    .unwrap();
     let start = || Reloader::start(SceneFileSource::new(dir.join("scene.toml"))).unwrap();
     let (threads, fds) = (thread_count(), open_fd_count());
     for round in 0..100 {

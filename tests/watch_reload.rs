@@ -3,14 +3,18 @@
 
 mod watch_support;
 
+use bumpwork::watch::{Reloader, SceneFileSource};
 use std::fs;
 use std::io::Write;
-use bumpwork::watch::{Reloader, SceneFileSource};
 use watch_support::*;
 
 fn start_with_pattern(dir: &TempDir) -> (Reloader, Shown) {
     fs::write(dir.join("ridges.pat"), pattern_source(1)).unwrap();
-    fs::write(dir.join("scene.toml"), scene_toml("pattern = \"ridges.pat\"")).unwrap();
+    fs::write(
+        dir.join("scene.toml"),
+        scene_toml("pattern = \"ridges.pat\""),
+    )
+    .unwrap();
     let (reloader, first) = Reloader::start(SceneFileSource::new(dir.join("scene.toml"))).unwrap();
     let shown = Shown::new(first);
     assert_eq!(shown.k(), Some(1.0));
@@ -98,10 +102,18 @@ fn a_broken_scene_file_reports_its_line_and_column_and_the_next_good_save_recove
 fn a_first_load_that_fails_is_reported_and_a_good_save_recovers() {
     let dir = TempDir::new("first-fails");
     fs::write(dir.join("ridges.pat"), BROKEN_PATTERN).unwrap();
-    fs::write(dir.join("scene.toml"), scene_toml("pattern = \"ridges.pat\"")).unwrap();
+    fs::write(
+        dir.join("scene.toml"),
+        scene_toml("pattern = \"ridges.pat\""),
+    )
+    .unwrap();
     let (reloader, first) = Reloader::start(SceneFileSource::new(dir.join("scene.toml"))).unwrap();
     let mut shown = Shown::new(first);
-    assert!(shown.error_line().contains("ridges.pat:4:1"), "{}", shown.error_line());
+    assert!(
+        shown.error_line().contains("ridges.pat:4:1"),
+        "{}",
+        shown.error_line()
+    );
     fs::write(dir.join("ridges.pat"), pattern_source(3)).unwrap();
     shown.wait_for_k(&reloader, 3);
 }
@@ -116,28 +128,48 @@ fn a_broken_image_keeps_the_last_good_scene() {
     let mut shown = Shown::new(first);
     assert!(shown.scene.is_some(), "{}", shown.error_line());
     fs::write(&image, "P2\n2 2\n255\n0 2").unwrap();
-    shown.wait_until(&reloader, "the image error", |s| s.error_line().contains("bumps.pgm"));
+    shown.wait_until(&reloader, "the image error", |s| {
+        s.error_line().contains("bumps.pgm")
+    });
     assert!(shown.scene.is_some());
     fs::write(&image, "P2\n3 1\n255\n0 128 255\n").unwrap();
-    shown.wait_until(&reloader, "the good image", |s| s.error.is_none() && s.reloads == 1);
+    shown.wait_until(&reloader, "the good image", |s| {
+        s.error.is_none() && s.reloads == 1
+    });
 }
 
 #[test]
 fn a_live_parameter_value_survives_a_reload_of_its_pattern() {
     let dir = TempDir::new("live-params");
     let pattern = dir.join("ridges.pat");
-    fs::write(&pattern, "param k = 1 in 0..100\nparam gone = 1 in 0..9\nheight = k * gone * u\n").unwrap();
-    fs::write(dir.join("scene.toml"), scene_toml("pattern = \"ridges.pat\"")).unwrap();
+    fs::write(
+        &pattern,
+        "param k = 1 in 0..100\nparam gone = 1 in 0..9\nheight = k * gone * u\n",
+    )
+    .unwrap();
+    fs::write(
+        dir.join("scene.toml"),
+        scene_toml("pattern = \"ridges.pat\""),
+    )
+    .unwrap();
     let (reloader, first) = Reloader::start(SceneFileSource::new(dir.join("scene.toml"))).unwrap();
     let mut shown = Shown::new(first);
     set_bump_params(&mut shown, &[42.0, 5.0]);
-    fs::write(&pattern, "param new = 3 in 0..9\nparam k = 2 in 0..100\nheight = k * new * u\n").unwrap();
+    fs::write(
+        &pattern,
+        "param new = 3 in 0..9\nparam k = 2 in 0..100\nheight = k * new * u\n",
+    )
+    .unwrap();
     shown.wait_until(&reloader, "the new pattern", |s| s.reloads == 1);
     assert_eq!(bump_params(&shown), vec![3.0, 42.0]);
 }
 
 fn bump_binding(shown: &mut Shown) -> &mut bumpwork::scene::PatternBinding {
-    let bump = shown.scene.as_mut().unwrap().objects[0].material.bump.as_mut().unwrap();
+    let bump = shown.scene.as_mut().unwrap().objects[0]
+        .material
+        .bump
+        .as_mut()
+        .unwrap();
     match &mut bump.source {
         bumpwork::scene::BumpSource::Pattern(binding) => binding,
         _ => panic!("a pattern bump"),
@@ -149,9 +181,29 @@ fn set_bump_params(shown: &mut Shown, values: &[f32]) {
 }
 
 fn bump_params(shown: &Shown) -> Vec<f32> {
-    let bump = shown.scene.as_ref().unwrap().objects[0].material.bump.as_ref().unwrap();
+    let bump = shown.scene.as_ref().unwrap().objects[0]
+        .material
+        .bump
+        .as_ref()
+        .unwrap();
     match &bump.source {
         bumpwork::scene::BumpSource::Pattern(binding) => binding.params.clone(),
         _ => panic!("a pattern bump"),
     }
+}
+
+#[test]
+fn a_reload_does_not_schedule_another_by_reading_the_files() {
+    let dir = TempDir::new("quiet");
+    let (reloader, mut shown) = start_with_pattern(&dir);
+    fs::write(dir.join("ridges.pat"), pattern_source(2)).unwrap();
+    shown.wait_for_k(&reloader, 2);
+    // Reads are events too (inotify reports opens); were they not ignored, every reload would
+    // be followed by another batch each debounce period, forever.
+    let window = std::time::Instant::now() + std::time::Duration::from_millis(500);
+    let mut later = 0;
+    while let Some(left) = window.checked_duration_since(std::time::Instant::now()) {
+        later += usize::from(reloader.wait(left).is_some());
+    }
+    assert!(later <= 1, "{later} outcomes after one save");
 }

@@ -15,7 +15,11 @@ fn a_thousand_rapid_saves_end_showing_the_final_file() {
     let dir = TempDir::new("soak");
     let pattern = dir.join("ridges.pat");
     fs::write(&pattern, pattern_source(0)).unwrap();
-    fs::write(dir.join("scene.toml"), scene_toml("pattern = \"ridges.pat\"")).unwrap();
+    fs::write(
+        dir.join("scene.toml"),
+        scene_toml("pattern = \"ridges.pat\""),
+    )
+    .unwrap();
     let (threads, fds) = (thread_count(), open_fd_count());
 
     let (reloader, first) = Reloader::start(SceneFileSource::new(dir.join("scene.toml"))).unwrap();
@@ -34,7 +38,10 @@ fn a_thousand_rapid_saves_end_showing_the_final_file() {
     }
     shown.wait_for_k(&reloader, SAVES);
     // The reloader's thread, the debouncer's and the watcher's event loop.
-    assert!(most_threads <= threads + 3, "{most_threads} threads, from {threads}");
+    assert!(
+        most_threads <= threads + 3,
+        "{most_threads} threads, from {threads}"
+    );
     assert!(shown.reloads < SAVES as usize, "saves were not debounced");
 
     drop(reloader);

@@ -14,7 +14,12 @@ pub fn scene_file_dependencies(path: &Path) -> Result<Vec<PathBuf>, Error> {
     let file: SceneFile = toml::from_str(&text).map_err(|e| {
         let offset = e.span().map_or(0, |s| s.start);
         let origin = path.display().to_string();
-        Error::Diagnostic(crate::diagnostic::render(&origin, &text, offset, e.message()))
+        Error::Diagnostic(crate::diagnostic::render(
+            &origin,
+            &text,
+            offset,
+            e.message(),
+        ))
     })?;
     let base = path.parent().unwrap_or(Path::new("."));
     let mut files = vec![path.to_path_buf()];
@@ -36,10 +41,19 @@ fn binding_files(binding: &BindingFile, base: &Path) -> Vec<PathBuf> {
         .pattern
         .as_deref()
         .filter(|name| crate::pattern::builtin(name).is_none());
-    let image = binding.image.as_deref().filter(|name| !is_builtin_image(name));
-    pattern.into_iter().chain(image).map(|name| base.join(name)).collect()
+    let image = binding
+        .image
+        .as_deref()
+        .filter(|name| !is_builtin_image(name));
+    pattern
+        .into_iter()
+        .chain(image)
+        .map(|name| base.join(name))
+        .collect()
 }
 
 fn is_builtin_image(name: &str) -> bool {
-    crate::texture::BUILTIN_IMAGES.iter().any(|(n, _)| *n == name)
+    crate::texture::BUILTIN_IMAGES
+        .iter()
+        .any(|(n, _)| *n == name)
 }

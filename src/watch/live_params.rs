@@ -30,7 +30,12 @@ fn carry_binding(before: &PatternBinding, shown: &PatternBinding, new: &mut Patt
         return;
     }
     for (slot, param) in new.pattern.params().iter().enumerate() {
-        let Some(old) = before.pattern.params().iter().position(|p| p.name == param.name) else {
+        let Some(old) = before
+            .pattern
+            .params()
+            .iter()
+            .position(|p| p.name == param.name)
+        else {
             continue;
         };
         let (Some(&loaded), Some(&value)) = (before.params.get(old), shown.params.get(old)) else {

@@ -22,6 +22,7 @@
 //! A failed reload leaves the last good scene in place; dropping the [`Reloader`] stops its
 //! thread and its watcher.
 
+mod change_watcher;
 mod error;
 mod live_params;
 mod outcome;

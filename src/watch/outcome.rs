@@ -5,7 +5,7 @@ use crate::scene::Scene;
 #[derive(Debug)]
 pub enum ReloadOutcome {
     /// The files changed and the scene was rebuilt from them.
-    Reloaded(Reload),
+    Reloaded(Box<Reload>),
     /// The files changed but the scene could not be built; the last good scene stays.
     Failed(ReloadError),
     /// Files were touched but every dependency holds the same bytes as before.

@@ -25,7 +25,6 @@ pub struct Reloader {
 impl Reloader {
     /// Starts watching `source`'s files and loads it once (on this thread), returning that
     /// first load's result. Later changes arrive through [`Reloader::poll`].
-    #[allow(clippy::type_complexity)]
     pub fn start(
         source: impl SceneSource,
     ) -> Result<(Reloader, Result<Scene, ReloadError>), WatchError> {

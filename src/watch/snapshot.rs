@@ -9,12 +9,7 @@ pub(crate) struct Snapshot(Vec<(PathBuf, Option<u64>)>);
 
 impl Snapshot {
     pub fn take(files: &[PathBuf]) -> Snapshot {
-        Snapshot(
-            files
-                .iter()
-                .map(|f| (f.clone(), content_hash(f)))
-                .collect(),
-        )
+        Snapshot(files.iter().map(|f| (f.clone(), content_hash(f))).collect())
     }
 }
 

@@ -1,9 +1,9 @@
+use super::change_watcher::ChangeWatcher;
 use super::outcome::{Reload, ReloadError, ReloadOutcome};
 use super::snapshot::Snapshot;
 use super::source::SceneSource;
 use super::watched_dirs::WatchedDirs;
 use crate::scene::Scene;
-use notify::RecommendedWatcher;
 use notify_debouncer_mini::{DebounceEventResult, Debouncer};
 use std::ffi::OsString;
 use std::path::PathBuf;
@@ -30,7 +30,7 @@ impl From<DebounceEventResult> for Message {
 /// content changes.
 pub(crate) struct Worker {
     source: Box<dyn SceneSource>,
-    debouncer: Debouncer<RecommendedWatcher>,
+    debouncer: Debouncer<ChangeWatcher>,
     watched: WatchedDirs,
     files: Vec<PathBuf>,
     snapshot: Snapshot,
@@ -38,7 +38,7 @@ pub(crate) struct Worker {
 }
 
 impl Worker {
-    pub fn new(source: Box<dyn SceneSource>, debouncer: Debouncer<RecommendedWatcher>) -> Self {
+    pub fn new(source: Box<dyn SceneSource>, debouncer: Debouncer<ChangeWatcher>) -> Self {
         Worker {
             source,
             debouncer,
@@ -95,7 +95,7 @@ impl Worker {
         // its own event, triggers one more reload, so the last state on disk always wins.
         self.snapshot = snapshot;
         match self.load() {
-            Ok(reload) => ReloadOutcome::Reloaded(reload),
+            Ok(reload) => ReloadOutcome::Reloaded(Box::new(reload)),
             Err(error) => ReloadOutcome::Failed(error),
         }
     }
