@@ -69,11 +69,13 @@ impl Worker {
         }
     }
 
-    /// Whether any touched path (`None`: unknown) names a dependency. File names are compared,
-    /// not whole paths, so a path spelt differently by the watcher still matches; an unrelated
-    /// file of the same name costs only a hash comparison.
-    fn concerns(&self, touched: &Option<Vec<PathBuf>>) -> bool {
-        let Some(paths) = touched else { return true };
+    /// Whether any touched path names a dependency. File names are compared, not whole paths,
+    /// so a path spelt differently by the watcher still matches; an unrelated file of the same
+    /// name costs only a hash comparison.
+    fn concerns(&self, touched: &Touched) -> bool {
+        let Touched::Paths(paths) = touched else {
+            return true;
+        };
         let names: Vec<OsString> = self
             .files
             .iter()
@@ -112,18 +114,23 @@ impl Worker {
     }
 }
 
+/// What a batch of messages says changed.
+enum Touched {
+    Paths(Vec<PathBuf>),
+    Anything,
+}
+
 /// Waits for a message, then takes every one already queued, so that a reload slower than the
-/// debounce handles the backlog once. `None` means stop; the inner `None` means "anything may
-/// have changed".
-fn next_batch(inbox: &Receiver<Message>) -> Option<Option<Vec<PathBuf>>> {
-    let mut touched = Some(Vec::new());
+/// debounce handles the backlog once. `None` means stop.
+fn next_batch(inbox: &Receiver<Message>) -> Option<Touched> {
+    let mut touched = Touched::Paths(Vec::new());
     let mut message = inbox.recv().ok()?;
     loop {
         match message {
             Message::Stop => return None,
-            Message::Rescan => touched = None,
+            Message::Rescan => touched = Touched::Anything,
             Message::Touched(paths) => {
-                if let Some(all) = &mut touched {
+                if let Touched::Paths(all) = &mut touched {
                     all.extend(paths);
                 }
             }
