@@ -3,7 +3,8 @@
 
 mod watch_support;
 
-use bumpwork::watch::{Reloader, SceneFileSource};
+use bumpwork::scene::parse_scene;
+use bumpwork::watch::{FileSetSource, Reloader, SceneFileSource};
 use std::fs;
 use std::io::Write;
 use watch_support::*;
@@ -206,4 +207,19 @@ fn a_reload_does_not_schedule_another_by_reading_the_files() {
         later += usize::from(reloader.wait(left).is_some());
     }
     assert!(later <= 1, "{later} outcomes after one save");
+}
+
+#[test]
+fn a_bare_pattern_file_on_a_built_in_scene_is_reloaded() {
+    let dir = TempDir::new("bare-pattern");
+    let pattern = dir.join("ridges.pat");
+    fs::write(&pattern, pattern_source(1)).unwrap();
+    let origin = dir.join("default.toml").display().to_string();
+    let build = move || parse_scene(&scene_toml("pattern = \"ridges.pat\""), &origin);
+    let source = FileSetSource::new(vec![pattern.clone()], build);
+    let (reloader, first) = Reloader::start(source).unwrap();
+    let mut shown = Shown::new(first);
+    assert_eq!(shown.k(), Some(1.0));
+    fs::write(&pattern, pattern_source(2)).unwrap();
+    shown.wait_for_k(&reloader, 2);
 }
