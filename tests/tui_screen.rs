@@ -142,20 +142,23 @@ fn an_edited_pattern_file_reloads_and_a_broken_one_keeps_the_view_and_shows_wher
     app.reload_if_changed();
     assert_eq!(app.message, Message::None, "unchanged file reloaded");
 
-    let touch = |text: &str, seconds: u64| {
-        std::fs::write(&path, text).unwrap();
-        let later = std::time::SystemTime::now() + std::time::Duration::from_secs(seconds);
-        std::fs::File::options()
-            .write(true)
-            .open(&path)
-            .unwrap()
-            .set_modified(later)
-            .unwrap();
+    // The watcher reports asynchronously, after its debounce: poll until the message arrives.
+    let wait_for = |app: &mut App, wanted: &dyn Fn(&Message) -> bool| {
+        let start = std::time::Instant::now();
+        while !wanted(&app.message) {
+            assert!(
+                start.elapsed().as_secs() < 60,
+                "no reload: {:?}",
+                app.message
+            );
+            std::thread::sleep(std::time::Duration::from_millis(20));
+            app.reload_if_changed();
+        }
     };
-    touch("height = u + )\n", 10);
-    app.reload_if_changed();
+    std::fs::write(&path, "height = u + )\n").unwrap();
+    wait_for(&mut app, &|m| matches!(m, Message::Error(_)));
     let Message::Error(error) = &app.message else {
-        panic!("{:?}", app.message);
+        unreachable!()
     };
     assert!(error.contains("live.pat:1:"), "{error}");
     assert!(
@@ -163,9 +166,8 @@ fn an_edited_pattern_file_reloads_and_a_broken_one_keeps_the_view_and_shows_wher
         "the error is shown"
     );
 
-    touch("height = cos(v / 7)\n", 20);
-    app.reload_if_changed();
-    assert_eq!(app.message, Message::Info("reloaded".into()));
+    std::fs::write(&path, "height = cos(v / 7)\n").unwrap();
+    wait_for(&mut app, &|m| *m == Message::Info("reloaded".into()));
     assert!(!draw(&mut screen, &mut app).is_empty());
     std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -9,15 +9,16 @@ use super::material_controls as controls;
 use super::options::WorkbenchOptions;
 use super::orbit::Orbit;
 use super::quality::Quality;
-use super::source::modified;
+use super::source::open_source;
 use super::view_mode::ViewMode;
 use crate::Error;
 use crate::raster::{Camera, FrameStats, PreparedScene};
 use crate::scene::{Material, Scene};
 use crate::surface::Tessellation;
 use crate::term::{ColorMode, GlyphSet};
+use crate::watch::{ReloadOutcome, Reloader};
 use std::path::PathBuf;
-use std::time::{Duration, SystemTime};
+use std::time::Duration;
 
 pub struct App {
     pub scenes: Vec<String>,
@@ -39,8 +40,8 @@ pub struct App {
     pub export_size: (u32, u32),
     pub export_dir: PathBuf,
     pub dirty: Dirty,
-    /// The current source file's modification time when it was last loaded (None: not a file).
-    loaded_modified: Option<SystemTime>,
+    /// Watches the current scene's files; None for built-in scenes.
+    reloader: Option<Reloader>,
 }
 
 /// The reload state or the last error, shown in the status line.
@@ -81,12 +82,10 @@ impl App {
         if options.scenes.is_empty() {
             return Err(Error::InvalidArgument("no scene to show".into()));
         }
-        let mut first = None;
-        for name in &options.scenes {
-            let scene = super::source::load_source(name)?;
-            first.get_or_insert(scene);
+        for name in &options.scenes[1..] {
+            super::source::load_source(name)?;
         }
-        let scene = first.expect("at least one scene");
+        let (scene, reloader) = open_source(&options.scenes[0])?;
         let quality = Quality::default();
         let orbit = Orbit::from_camera(&scene.camera);
         Ok(App {
@@ -108,7 +107,7 @@ impl App {
             export_size: options.export_size,
             export_dir: PathBuf::from("."),
             dirty: Dirty::ALL,
-            loaded_modified: modified(&options.scenes[0]),
+            reloader,
         })
     }
 
@@ -244,10 +243,10 @@ impl App {
     pub fn switch_scene(&mut self, step: i32) {
         let count = self.scenes.len() as i32;
         let index = (self.scene_index as i32 + step).rem_euclid(count) as usize;
-        match super::source::load_source(&self.scenes[index]) {
-            Ok(scene) => {
+        match open_source(&self.scenes[index]) {
+            Ok((scene, reloader)) => {
+                self.reloader = reloader;
                 self.scene_index = index;
-                self.loaded_modified = modified(&self.scenes[index]);
                 self.object = first_bumped_object(&scene);
                 self.param = 0;
                 self.orbit = Orbit::from_camera(&scene.camera);
@@ -259,26 +258,30 @@ impl App {
         }
     }
 
-    /// Reloads the current scene or pattern file if it changed on disk, keeping the camera, view
-    /// and selection; a file that fails keeps the last good view and shows the error.
+    /// Takes what the file watcher found: a changed scene replaces the shown one (keeping the
+    /// camera, view, selection and live parameter values); a failed one keeps the last good view
+    /// and shows the error.
     pub fn reload_if_changed(&mut self) {
-        let name = &self.scenes[self.scene_index];
-        let now = modified(name);
-        if now.is_none() || now == self.loaded_modified {
+        let Some(reloader) = &self.reloader else {
             return;
-        }
-        self.loaded_modified = now;
-        self.dirty.text = true;
-        match super::source::load_source(name) {
-            Ok(scene) => {
-                self.prepared = prepare(scene, self.quality);
-                self.object = self
-                    .object
-                    .min(self.prepared.objects.len().saturating_sub(1));
-                self.message = Message::Info("reloaded".into());
-                self.dirty.picture = true;
+        };
+        let outcomes: Vec<ReloadOutcome> = std::iter::from_fn(|| reloader.poll()).collect();
+        for outcome in outcomes {
+            self.dirty.text = true;
+            match outcome {
+                ReloadOutcome::Reloaded(reload) => {
+                    let scene = reload.keep_live_params(&self.prepared.scene);
+                    self.prepared = prepare(scene, self.quality);
+                    let last = self.prepared.objects.len().saturating_sub(1);
+                    self.object = self.object.min(last);
+                    self.message = Message::Info("reloaded".into());
+                    self.dirty.picture = true;
+                }
+                ReloadOutcome::Failed(error) => {
+                    self.message = Message::Error(error.first_line().to_string())
+                }
+                ReloadOutcome::Unchanged => {}
             }
-            Err(e) => self.message = Message::Error(e.to_string()),
         }
     }
 

@@ -1,11 +1,11 @@
 //! Where a workbench scene comes from: a built-in name, a scene file, or a pattern file shown on
-//! the sphere-on-plane scene; and whether its file changed since it was loaded (hot reload).
+//! the sphere-on-plane scene; files come with a hot reloader watching them.
 
 use crate::Error;
 use crate::pattern::{OutputKind, Pattern};
 use crate::scene::{BumpSource, PatternBinding, Scene, Texturing};
-use std::path::Path;
-use std::time::SystemTime;
+use crate::watch::{FileSetSource, Reloader, SceneFileSource};
+use std::path::{Path, PathBuf};
 
 /// The scene a pattern file is shown on: both a plane and a sphere, the pattern on each.
 const PATTERN_STAGE: &str = "sphere-on-plane-dimples";
@@ -36,9 +36,26 @@ pub fn load_source(name: &str) -> Result<Scene, Error> {
     Ok(scene)
 }
 
-/// The modification time of the source's file, if it is a file.
-pub fn modified(name: &str) -> Option<SystemTime> {
-    std::fs::metadata(name).ok()?.modified().ok()
+/// Loads the scene `name` names and, for files, starts watching them (the scene file and every
+/// pattern and image it names, or the pattern file). If watching cannot start, the scene still
+/// opens, without hot reload.
+pub fn open_source(name: &str) -> Result<(Scene, Option<Reloader>), Error> {
+    let started = if name.ends_with(".pat") {
+        let owned = name.to_string();
+        let source = FileSetSource::new(vec![PathBuf::from(name)], move || load_source(&owned));
+        Reloader::start(source)
+    } else if crate::scene::preset(name).is_none() {
+        Reloader::start(SceneFileSource::new(name))
+    } else {
+        return Ok((load_source(name)?, None));
+    };
+    match started {
+        Ok((reloader, first)) => {
+            let scene = first.map_err(|e| Error::Diagnostic(e.message))?;
+            Ok((scene, Some(reloader)))
+        }
+        Err(_) => Ok((load_source(name)?, None)),
+    }
 }
 
 #[cfg(test)]
