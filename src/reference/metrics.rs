@@ -88,7 +88,8 @@ pub fn normal_angle_error(normals: &Framebuffer, reference: &Framebuffer) -> Nor
         .map(|i| angle_degrees(decode_normal(normals.color[i]), decode_normal(reference.color[i])))
         .collect();
     NormalAngles {
-        mean_degrees: angles.iter().sum::<f64>() / angles.len().max(1) as f64,
+        // A fold from +0: an empty sum of f64 is −0.
+        mean_degrees: angles.iter().fold(0.0, |sum, a| sum + a) / angles.len().max(1) as f64,
         max_degrees: angles.iter().copied().fold(0.0, f64::max),
         pixels: angles.len(),
     }
