@@ -32,7 +32,11 @@ struct Measured {
     reference_time: Duration,
 }
 
-fn render_pair(scene: &Scene, density: u32, mode: ViewMode) -> (Framebuffer, Framebuffer, [Duration; 2]) {
+fn render_pair(
+    scene: &Scene,
+    density: u32,
+    mode: ViewMode,
+) -> (Framebuffer, Framebuffer, [Duration; 2]) {
     let prepared = PreparedScene::new(scene.clone(), Tessellation { density });
     let mut shader = LitShader::new(scene, &scene.camera);
     shader.mode = mode;
@@ -95,8 +99,13 @@ fn trivial_scene_at_8k() {
         interpolation: Interpolation::PerspectiveCorrect,
     };
     for (name, render) in [
-        ("raster", &(|| render_with(&prepared, &target, &shader).0) as &dyn Fn() -> Framebuffer),
-        ("reference", &|| render_reference(&prepared, &scene.camera, viewport, &shader).0),
+        (
+            "raster",
+            &(|| render_with(&prepared, &target, &shader).0) as &dyn Fn() -> Framebuffer,
+        ),
+        ("reference", &|| {
+            render_reference(&prepared, &scene.camera, viewport, &shader).0
+        }),
     ] {
         let start = Instant::now();
         let frame = render();
@@ -110,7 +119,12 @@ fn trivial_scene_at_8k() {
 }
 
 fn main() {
-    println!("Raster vs reference at {}x{}, default tessellation ({}):", VIEWPORT.width, VIEWPORT.height, Tessellation::default().density);
+    println!(
+        "Raster vs reference at {}x{}, default tessellation ({}):",
+        VIEWPORT.width,
+        VIEWPORT.height,
+        Tessellation::default().density
+    );
     print_header("preset");
     for name in PRESET_NAMES {
         let scene = preset(name).expect("preset");

@@ -51,6 +51,72 @@ fn planar_scenes_give_the_same_fragments_both_ways() {
             }
         }
         // Pixel centres within 1/256 px of an edge may fall either way: a handful at most.
-        assert!(mismatched <= 4, "{name}: {mismatched} pixels differ in coverage or object");
+        assert!(
+            mismatched <= 4,
+            "{name}: {mismatched} pixels differ in coverage or object"
+        );
+    }
+}
+
+/// Curved presets at the default tessellation: the rasterizer's error against the reference.
+/// Bounds are the measured figures with headroom; each says where the error comes from.
+#[test]
+fn curved_presets_at_the_default_tessellation() {
+    let density = Tessellation::default().density;
+    for (name, min_psnr, max_mean_angle) in [
+        // Sphere chords sag 3e-4 of the radius: silhouettes agree, (u,v) is off by a small
+        // fraction of a dimple, so normals differ by tenths of a degree on average.
+        // Measured at 64×48: 44.2 dB 0.05°, 45.8 dB 0.17°, 56.2 dB 0.22°, 70.9 dB 0.01°.
+        ("sphere-on-plane-dimples", 40.0, 0.2),
+        ("big-sphere-dimples", 42.0, 0.4),
+        ("parabola-dimples", 50.0, 0.5),
+        ("wave-spheres", 60.0, 0.1),
+        // The cone's fans put u off by up to half a cell near the apex (see reference_extremes):
+        // measured 36.0 dB, 2.2°.
+        ("cone-dimples", 32.0, 3.0),
+        // Texture only, no bump: measured 61.2 dB, 0.03°.
+        ("textured-sphere", 55.0, 0.1),
+    ] {
+        let scene = preset(name).unwrap();
+        let e = raster_error(&scene, SMALL, density);
+        eprintln!("{name}: {e:?}");
+        assert!(e.psnr_db >= min_psnr, "{name}: {e:?}");
+        assert!(
+            e.mean_normal_angle_degrees <= max_mean_angle,
+            "{name}: {e:?}"
+        );
+        // Perimeters are under 200 px here and chord sag under 0.05 px: a few edge pixels.
+        assert!(e.silhouette_mismatch <= 8, "{name}: {e:?}");
+    }
+}
+
+#[test]
+fn error_shrinks_with_tessellation() {
+    for name in [
+        "big-sphere-dimples",
+        "cone-dimples",
+        "wave-spheres",
+        "parabola-dimples",
+    ] {
+        let scene = preset(name).unwrap();
+        let errors: Vec<_> = [4, 16, 64]
+            .into_iter()
+            .map(|density| raster_error(&scene, SMALL, density))
+            .collect();
+        eprintln!("{name}: {errors:?}");
+        for pair in errors.windows(2) {
+            let (coarse, fine) = (&pair[0], &pair[1]);
+            // Each step quarters the chord length: error falls, up to noise from pixels whose
+            // dimple edge crosses their centre (0.1 dB, 0.05°, one pixel).
+            assert!(fine.psnr_db >= coarse.psnr_db - 0.1, "{name}: {errors:?}");
+            assert!(
+                fine.mean_normal_angle_degrees <= coarse.mean_normal_angle_degrees + 0.05,
+                "{name}: {errors:?}"
+            );
+            assert!(
+                fine.silhouette_mismatch <= coarse.silhouette_mismatch + 1,
+                "{name}"
+            );
+        }
     }
 }

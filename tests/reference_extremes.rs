@@ -74,7 +74,10 @@ const DIMPLED_SPHERE: &str = "[[object]]\nsurface = { sphere = { center = [0, 0,
 
 #[test]
 fn sphere_pole_seen_from_above() {
-    let s = scene("eye = [0, 400, 0.001]\ntarget = [0, 0, 0]\nfov = 40", DIMPLED_SPHERE);
+    let s = scene(
+        "eye = [0, 400, 0.001]\ntarget = [0, 0, 0]\nfov = 40",
+        DIMPLED_SPHERE,
+    );
     let (silhouette, mean, max) = stable_and_measured(&s, SMALL, "pole");
     // The outline is a circle of ~18 px radius (perimeter ~115 px); chords of a 64-per-half-turn
     // grid sag r·(1 − cos(π/128)) ≈ 3e-4·r, far under a pixel: only centres within that of the
@@ -85,7 +88,10 @@ fn sphere_pole_seen_from_above() {
 
 #[test]
 fn sphere_seam_faces_the_camera() {
-    let s = scene("eye = [0, 30, -400]\ntarget = [0, 0, 0]\nfov = 40", DIMPLED_SPHERE);
+    let s = scene(
+        "eye = [0, 30, -400]\ntarget = [0, 0, 0]\nfov = 40",
+        DIMPLED_SPHERE,
+    );
     let (silhouette, mean, _) = stable_and_measured(&s, SMALL, "seam");
     assert!(silhouette <= 6, "{silhouette}");
     assert!(mean <= MEAN_ANGLE_BOUND, "{mean}");
@@ -138,7 +144,10 @@ fn camera_on_a_plane_and_inside_a_sphere() {
     let (silhouette, _, _) = stable_and_measured(&on, SMALL, "on plane");
     // Edge-on: at most one row of pixels may see the plane either way.
     assert!(silhouette <= SMALL.width as usize, "{silhouette}");
-    let inside = scene("eye = [10, 20, 30]\ntarget = [100, 0, 0]\nfov = 70", DIMPLED_SPHERE);
+    let inside = scene(
+        "eye = [10, 20, 30]\ntarget = [100, 0, 0]\nfov = 70",
+        DIMPLED_SPHERE,
+    );
     let (silhouette, mean, _) = stable_and_measured(&inside, SMALL, "inside sphere");
     assert_eq!(silhouette, 0, "every ray from inside hits the sphere");
     assert!(mean <= MEAN_ANGLE_BOUND, "{mean}");
@@ -210,18 +219,26 @@ fn one_pixel_and_very_wide_outputs() {
 fn bump_strength_zero_and_a_million() {
     for strength in [0.0, 1e6] {
         let objects = DIMPLED_SPHERE.replace("strength = 1", &format!("strength = {strength}"));
-        let s = scene("eye = [0, 100, 400]\ntarget = [0, 0, 0]\nfov = 40", &objects);
+        let s = scene(
+            "eye = [0, 100, 400]\ntarget = [0, 0, 0]\nfov = 40",
+            &objects,
+        );
         let (silhouette, _, _) = stable_and_measured(&s, SMALL, &format!("strength {strength}"));
         assert!(silhouette <= 6);
     }
 }
 
 fn png(width: u32, height: u32) -> Vec<u8> {
-    let pixels: Vec<u8> = (0..width * height * 3).map(|i| (i * 37 % 256) as u8).collect();
+    let pixels: Vec<u8> = (0..width * height * 3)
+        .map(|i| (i * 37 % 256) as u8)
+        .collect();
     let mut bytes = Vec::new();
     image::RgbImage::from_raw(width, height, pixels)
         .unwrap()
-        .write_to(&mut std::io::Cursor::new(&mut bytes), image::ImageFormat::Png)
+        .write_to(
+            &mut std::io::Cursor::new(&mut bytes),
+            image::ImageFormat::Png,
+        )
         .unwrap();
     bytes
 }
@@ -251,7 +268,12 @@ fn patterns_giving_nan_and_infinity() {
     ];
     let objects = "[[object]]\nsurface = { sphere = { center = [0, 0, 0], radius = 100 } }\n\
         texture = { pattern = \"inf.pat\" }\nbump = { pattern = \"nan.pat\", strength = 1 }\n";
-    let s = scene_in_dir("nan", "eye = [0, 0, 400]\ntarget = [0, 0, 0]\nfov = 40", objects, files);
+    let s = scene_in_dir(
+        "nan",
+        "eye = [0, 0, 400]\ntarget = [0, 0, 0]\nfov = 40",
+        objects,
+        files,
+    );
     stable_and_measured(&s, SMALL, "NaN patterns");
 }
 

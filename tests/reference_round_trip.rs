@@ -75,7 +75,11 @@ fn surfaces() -> Vec<(&'static str, Surface, f64)> {
 fn random_uv(rng: &mut XorShift, surface: &Surface) -> Vec2 {
     if let Surface::Triangle(t) = surface {
         let (a, b) = (rng.next_f64() as f32, rng.next_f64() as f32);
-        let (a, b) = if a + b > 1.0 { (1.0 - a, 1.0 - b) } else { (a, b) };
+        let (a, b) = if a + b > 1.0 {
+            (1.0 - a, 1.0 - b)
+        } else {
+            (a, b)
+        };
         let [p, q, r] = t.corners_uv;
         return p + (q - p) * a + (r - p) * b;
     }
@@ -164,7 +168,10 @@ fn misses_and_ranges_are_respected() {
             origin: DVec3::splat(50.0 * size),
             direction: DVec3::splat(1.0),
         };
-        assert!(intersect(&surface, &far_away, 0.0..=1e9).is_none(), "{name}");
+        assert!(
+            intersect(&surface, &far_away, 0.0..=1e9).is_none(),
+            "{name}"
+        );
         // A ray at a surface point, with the range ending before it, finds nothing there.
         let target = surface.frame(0.0, 0.0).p.as_dvec3();
         let ray = Ray {

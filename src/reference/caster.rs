@@ -103,7 +103,12 @@ pub fn cast_pixel(
             continue;
         };
         let culled = surface.encloses(camera.eye) == Some(true)
-            && surface.frame(hit.uv.x, hit.uv.y).n.as_dvec3().dot(direction) >= 0.0;
+            && surface
+                .frame(hit.uv.x, hit.uv.y)
+                .n
+                .as_dvec3()
+                .dot(direction)
+                >= 0.0;
         if !culled && nearest.is_none_or(|(_, best)| hit.t < best.t) {
             nearest = Some((index, hit));
         }

@@ -85,7 +85,12 @@ pub fn normal_angle_error(normals: &Framebuffer, reference: &Framebuffer) -> Nor
     assert_same_size(normals, reference);
     let angles: Vec<f64> = (0..normals.color.len())
         .filter(|&i| normals.depth[i].is_finite() && reference.depth[i].is_finite())
-        .map(|i| angle_degrees(decode_normal(normals.color[i]), decode_normal(reference.color[i])))
+        .map(|i| {
+            angle_degrees(
+                decode_normal(normals.color[i]),
+                decode_normal(reference.color[i]),
+            )
+        })
         .collect();
     NormalAngles {
         // A fold from +0: an empty sum of f64 is −0.
@@ -158,7 +163,10 @@ mod tests {
     #[test]
     fn one_full_scale_channel_in_two_pixels() {
         let a = frame(&[Vec3::ZERO, Vec3::ZERO], &[1.0, 1.0]);
-        let b = frame(&[Vec3::new(1.0, 0.0, 0.0), Vec3::ZERO], &[1.0, f32::INFINITY]);
+        let b = frame(
+            &[Vec3::new(1.0, 0.0, 0.0), Vec3::ZERO],
+            &[1.0, f32::INFINITY],
+        );
         // MSE = 255² / 6 samples: PSNR = 10·log10(6).
         assert!((psnr(&a, &b) - 10.0 * 6f64.log10()).abs() < 1e-9);
         assert_eq!(max_pixel_error(&a, &b), 255.0);

@@ -3,7 +3,11 @@ use crate::surface::Plane;
 use glam::{DVec3, Vec2};
 use std::ops::RangeInclusive;
 
-pub(super) fn intersect_plane(plane: &Plane, ray: &Ray, range: &RangeInclusive<f64>) -> Option<Hit> {
+pub(super) fn intersect_plane(
+    plane: &Plane,
+    ray: &Ray,
+    range: &RangeInclusive<f64>,
+) -> Option<Hit> {
     let t = flat_hit(plane.normal.as_dvec3(), ray)?;
     nearest_hit([t], range, |t| {
         let uv = plane_uv(plane, ray.at(t));

@@ -55,8 +55,7 @@ impl WaveAlongRay {
     }
 
     fn df(&self, t: f64) -> f64 {
-        self.direction.y
-            - self.amplitude * self.wavenumber * self.direction.x * self.phase(t).cos()
+        self.direction.y - self.amplitude * self.wavenumber * self.direction.x * self.phase(t).cos()
     }
 
     fn first_root(&self, lo: f64, hi: f64) -> Option<f64> {
@@ -78,12 +77,12 @@ impl WaveAlongRay {
         let rate = self.wavenumber * self.direction.x;
         let (p_lo, p_hi) = (self.phase(lo) / FRAC_PI_2, self.phase(hi) / FRAC_PI_2);
         let (first, last) = (p_lo.min(p_hi).floor() + 1.0, p_lo.max(p_hi).ceil() - 1.0);
-        let count = if rate == 0.0 || !(last >= first) {
-            0.0
-        } else {
+        let count = if rate != 0.0 && last >= first {
             last - first + 1.0
+        } else {
+            0.0
         };
-        if !(count <= MAX_QUARTER_WAVES) {
+        if !count.is_finite() || count > MAX_QUARTER_WAVES {
             return None;
         }
         let start_phase = if rate > 0.0 { first } else { last };
@@ -111,8 +110,7 @@ impl WaveAlongRay {
         }
         let extremum = bisect_sign_change(|t| self.df(t), lo, hi);
         let f_extremum = self.f(extremum);
-        ((f_extremum < 0.0) != (f_lo < 0.0) || f_extremum == 0.0)
-            .then(|| self.refine(lo, extremum))
+        ((f_extremum < 0.0) != (f_lo < 0.0) || f_extremum == 0.0).then(|| self.refine(lo, extremum))
     }
 
     fn refine(&self, lo: f64, hi: f64) -> f64 {
