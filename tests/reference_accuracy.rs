@@ -120,3 +120,59 @@ fn error_shrinks_with_tessellation() {
         }
     }
 }
+
+/// (∂u/∂x, ∂v/∂x, ∂u/∂y, ∂v/∂y) packed into colour for the comparison below.
+fn derivative_shader(dy: bool) -> PerFragment<impl Fn(&FrameObject, &Fragment) -> Vec3 + Sync> {
+    PerFragment(move |_: &FrameObject, f: &Fragment| {
+        let d = if dy { f.duv_dy } else { f.duv_dx };
+        Vec3::new(d.x, d.y, 0.0)
+    })
+}
+
+#[test]
+fn analytic_uv_derivatives_match_the_rasterizer_on_a_plane() {
+    // On a plane the rasterizer's perspective-correct planes are exact, and so are the
+    // reference's ray differentials: both are ∂(u,v)/∂(x,y) of the same projective map.
+    let scene = preset("plane-checks").unwrap();
+    let prepared = PreparedScene::new(scene.clone(), Tessellation::default());
+    let target = RenderTarget {
+        camera: &scene.camera,
+        viewport: SMALL,
+        interpolation: Interpolation::PerspectiveCorrect,
+    };
+    for dy in [false, true] {
+        let raster = render_with(&prepared, &target, &derivative_shader(dy)).0;
+        let reference = render_reference(&prepared, &scene.camera, SMALL, &derivative_shader(dy)).0;
+        let mut compared = 0;
+        for i in 0..raster.color.len() {
+            if raster.depth[i].is_finite() && reference.depth[i].is_finite() {
+                let (a, b) = (raster.color[i], reference.color[i]);
+                let scale = a.abs().max_element().max(1e-3);
+                assert!(
+                    (a - b).abs().max_element() <= 1e-3 * scale,
+                    "pixel {i}: {a} vs {b}"
+                );
+                compared += 1;
+            }
+        }
+        assert!(compared > 500, "{compared}");
+    }
+}
+
+#[test]
+fn heat_map_is_black_where_frames_agree_and_blue_at_silhouettes() {
+    let scene = preset("big-sphere-dimples").unwrap();
+    let pair = render_both(&scene, SMALL, 4, |_| {});
+    let same = bumpwork::reference::error_heat_map(&pair.reference, &pair.reference, 32.0);
+    assert!(same.color.iter().all(|c| *c == Vec3::ZERO));
+    let heat = bumpwork::reference::error_heat_map(&pair.raster, &pair.reference, 32.0);
+    assert_all_finite(&heat, "heat map");
+    let silhouettes = heat
+        .color
+        .iter()
+        .filter(|c| c.z > 0.0 && c.x == 0.0)
+        .count();
+    let mismatch = bumpwork::reference::metrics::silhouette_mismatch(&pair.raster, &pair.reference);
+    assert_eq!(silhouettes, mismatch);
+    assert!(mismatch > 0, "a 4-per-half-turn sphere has visible facets");
+}
