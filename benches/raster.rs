@@ -14,7 +14,13 @@ use bumpwork::shade::LitShader;
 use bumpwork::surface::{Sphere, Surface, Tessellation};
 use glam::{DVec3, Vec3};
 
-const RUNS: usize = 31;
+/// Frames per measurement; `BUMPWORK_BENCH_RUNS=1` makes a single-frame run for callgrind.
+fn runs() -> usize {
+    std::env::var("BUMPWORK_BENCH_RUNS")
+        .ok()
+        .and_then(|r| r.parse().ok())
+        .unwrap_or(31)
+}
 
 fn sphere_scene() -> Scene {
     // r / d = sin(atan(0.5·tan 20°)) puts the 1-unit sphere 540 of 1080 pixels high at fov 40°.
@@ -71,18 +77,19 @@ fn main() {
         .expect("thread pool");
 
     println!(
-        "lit 128x64 sphere ({} triangles) at 1920x1080, {RUNS} frames each",
-        prepared.triangle_count()
+        "lit 128x64 sphere ({} triangles) at 1920x1080, {} frames each",
+        prepared.triangle_count(),
+        runs()
     );
     println!("\none thread, where the frame goes:");
     let objects = frame_objects(&prepared, &camera);
     let setup = one_thread.install(|| {
-        Timing::measure(3, RUNS, || {
+        Timing::measure(3.min(runs().saturating_sub(1)), runs(), || {
             std::hint::black_box(screen_triangles(&objects, &target));
         })
     });
     let flat = one_thread.install(|| {
-        Timing::measure(3, RUNS, || {
+        Timing::measure(3.min(runs().saturating_sub(1)), runs(), || {
             // Coverage and visibility only: isolates the rasterizer from the cost of lighting.
             render_into(
                 &prepared,
@@ -115,7 +122,7 @@ fn main() {
             .expect("thread pool");
         let mut stats = Default::default();
         let timing = pool.install(|| {
-            Timing::measure(3, RUNS, || {
+            Timing::measure(3.min(runs().saturating_sub(1)), runs(), || {
                 stats = render_into(&prepared, &target, &lit, &mut framebuffer)
             })
         });

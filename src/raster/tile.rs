@@ -47,9 +47,19 @@ impl StripOutput<'_> {
         for y in rect.y0..=rect.y1 {
             let row = ((y - self.first_row) * self.width) as usize;
             let span = row + rect.x0 as usize..=row + rect.x1 as usize;
-            self.color[span.clone()].fill(self.background);
+            fill_colour(&mut self.color[span.clone()], self.background);
             self.depth[span].fill(f32::INFINITY);
         }
+    }
+}
+
+/// Most of a frame is background: a grey one is written as plain f32s, which compiles to wide
+/// stores instead of one 12-byte store per pixel.
+fn fill_colour(pixels: &mut [Vec3], colour: Vec3) {
+    if colour.x == colour.y && colour.y == colour.z {
+        bytemuck::cast_slice_mut::<Vec3, f32>(pixels).fill(colour.x);
+    } else {
+        pixels.fill(colour);
     }
 }
 

@@ -82,20 +82,40 @@ pub fn blinn_phong(
     color * diffuse + specular * material.specular
 }
 
-/// x^exponent; integer exponents (the usual case) take the multiply chain of `powi`, several
-/// times faster than `powf`, with the same result to within rounding.
+/// x^exponent; whole exponents (the usual case) by repeated squaring inline, several times
+/// faster than `powf` (and than the `powi` library call), equal to within rounding.
 #[inline]
 fn power(x: f32, exponent: f32) -> f32 {
-    if exponent.fract() == 0.0 && exponent.abs() <= 1024.0 {
-        x.powi(exponent as i32)
-    } else {
-        x.powf(exponent)
+    if !(exponent.fract() == 0.0 && (0.0..=1024.0).contains(&exponent)) {
+        return x.powf(exponent);
     }
+    let (mut base, mut n, mut result) = (x, exponent as u32, 1.0f32);
+    while n > 0 {
+        if n & 1 == 1 {
+            result *= base;
+        }
+        base *= base;
+        n >>= 1;
+    }
+    result
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn power_agrees_with_powf() {
+        for exponent in [0.0, 1.0, 2.0, 7.0, 32.0, 40.0, 1024.0, 2.5, 1500.0] {
+            for x in [0.0f32, 0.3, 0.9, 0.999, 1.0] {
+                let (got, want) = (power(x, exponent), x.powf(exponent));
+                assert!(
+                    (got - want).abs() <= 1e-5 * want.max(1e-30) + 1e-30,
+                    "{x}^{exponent}: {got} vs {want}"
+                );
+            }
+        }
+    }
 
     fn material() -> Material {
         Material {
