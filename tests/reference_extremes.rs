@@ -190,6 +190,11 @@ fn translated_by_a_million_renders_the_same() {
     let psnr = bumpwork::reference::metrics::psnr(&a.reference, &b.reference);
     assert!(psnr >= 50.0, "reference moved by 1e6: PSNR {psnr}");
     assert_eq!(silhouette_mismatch(&a.reference, &b.reference), 0);
+    // And the rasterizer is as close to its reference far away as near the origin.
+    let near_origin = bumpwork::reference::metrics::psnr(&a.raster, &a.reference);
+    let far_away = bumpwork::reference::metrics::psnr(&b.raster, &b.reference);
+    eprintln!("raster vs reference: {near_origin:.1} dB at the origin, {far_away:.1} dB at 1e6");
+    assert!(far_away >= near_origin - 1.0, "{near_origin} vs {far_away}");
 }
 
 fn translate(surface: &mut bumpwork::surface::Surface, offset: DVec3) {
