@@ -13,6 +13,7 @@ mod cone;
 mod differentials;
 mod heat_map;
 mod intersect;
+mod lit_frames;
 pub mod metrics;
 mod paraboloid;
 mod plane;
@@ -28,6 +29,7 @@ pub use caster::{ReferenceStats, cast_pixel, render_reference, render_reference_
 pub use differentials::uv_derivatives;
 pub use heat_map::error_heat_map;
 pub use intersect::{intersect, surface_uv};
+pub use lit_frames::ShadedAndNormals;
 pub use metrics::{FrameError, frame_error};
 pub use ray::{Hit, Ray};
 pub use view_rays::ViewRays;

@@ -4,9 +4,9 @@
 use bumpwork::raster::{
     Camera, Framebuffer, Interpolation, PreparedScene, RenderTarget, Viewport, render_with,
 };
-use bumpwork::reference::{FrameError, frame_error, render_reference};
+use bumpwork::reference::{FrameError, ShadedAndNormals, render_reference};
 use bumpwork::scene::Scene;
-use bumpwork::shade::{LitShader, ViewMode};
+use bumpwork::shade::LitShader;
 use bumpwork::surface::Tessellation;
 
 pub const SMALL: Viewport = Viewport {
@@ -43,14 +43,19 @@ pub fn render_both(
 
 /// Every error figure of the rasterizer against the reference, at a tessellation density.
 pub fn raster_error(scene: &Scene, viewport: Viewport, density: u32) -> FrameError {
-    let shaded = render_both(scene, viewport, density, |_| {});
-    let normals = render_both(scene, viewport, density, |s| s.mode = ViewMode::Normals);
-    frame_error(
-        &shaded.raster,
-        &shaded.reference,
-        &normals.raster,
-        &normals.reference,
-    )
+    let prepared = PreparedScene::new(scene.clone(), Tessellation { density });
+    let camera = &scene.camera;
+    let mut shader = LitShader::new(scene, camera);
+    let target = RenderTarget {
+        camera,
+        viewport,
+        interpolation: Interpolation::PerspectiveCorrect,
+    };
+    let raster = ShadedAndNormals::render(&mut shader, |s| render_with(&prepared, &target, s).0);
+    let reference = ShadedAndNormals::render(&mut shader, |s| {
+        render_reference(&prepared, camera, viewport, s).0
+    });
+    raster.error_against(&reference)
 }
 
 pub fn assert_all_finite(fb: &Framebuffer, what: &str) {
