@@ -12,6 +12,7 @@ pub mod shade;
 pub mod surface;
 pub mod term;
 pub mod texture;
+pub mod watch;
 
 pub use error::Error;
 

@@ -1,6 +1,7 @@
 //! What is drawn: surfaces with materials, lights and a camera, from a TOML file or a preset.
 
 mod binding_file;
+pub mod dependencies;
 mod file;
 mod material;
 mod presets;

@@ -1,0 +1,49 @@
+use std::hash::{DefaultHasher, Hasher};
+use std::io::Read;
+use std::path::{Path, PathBuf};
+
+/// The content of a set of files, by hash, to tell a real change from a save of the same bytes.
+/// A missing or unreadable file has no hash, which differs from every content.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub(crate) struct Snapshot(Vec<(PathBuf, Option<u64>)>);
+
+impl Snapshot {
+    pub fn take(files: &[PathBuf]) -> Snapshot {
+        Snapshot(files.iter().map(|f| (f.clone(), content_hash(f))).collect())
+    }
+}
+
+fn content_hash(path: &Path) -> Option<u64> {
+    let mut file = std::fs::File::open(path).ok()?;
+    let mut hasher = DefaultHasher::new();
+    let mut buffer = vec![0; 64 * 1024];
+    loop {
+        match file.read(&mut buffer).ok()? {
+            0 => return Some(hasher.finish()),
+            n => hasher.write(&buffer[..n]),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn same_bytes_same_snapshot_and_missing_differs_from_empty() {
+        let dir = std::env::temp_dir().join(format!("bumpwork-snapshot-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let file = dir.join("a.pat");
+        let files = [file.clone()];
+        std::fs::write(&file, "height = u").unwrap();
+        let first = Snapshot::take(&files);
+        std::fs::write(&file, "height = u").unwrap();
+        assert_eq!(Snapshot::take(&files), first);
+        std::fs::write(&file, "").unwrap();
+        let empty = Snapshot::take(&files);
+        assert_ne!(empty, first);
+        std::fs::remove_file(&file).unwrap();
+        assert_ne!(Snapshot::take(&files), empty);
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}
