@@ -6,6 +6,7 @@ pub mod export;
 pub mod measure;
 pub mod pattern;
 pub mod raster;
+pub mod reference;
 pub mod scene;
 pub mod shade;
 pub mod surface;

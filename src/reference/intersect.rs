@@ -1,0 +1,36 @@
+use super::cone::{cone_uv, intersect_cone};
+use super::paraboloid::{intersect_paraboloid, paraboloid_uv};
+use super::plane::{intersect_plane, plane_uv};
+use super::ray::{Hit, Ray};
+use super::sphere::{intersect_sphere, sphere_uv};
+use super::triangle::{intersect_triangle, triangle_uv};
+use super::wave::{intersect_wave, wave_uv};
+use crate::surface::Surface;
+use glam::{DVec3, Vec2};
+use std::ops::RangeInclusive;
+
+/// The nearest intersection of the ray (relative to the surface's anchor) with the exact surface,
+/// for t in `range`, with the exact (u,v) there.
+pub fn intersect(surface: &Surface, ray: &Ray, range: RangeInclusive<f64>) -> Option<Hit> {
+    let hit = match surface {
+        Surface::Plane(s) => intersect_plane(s, ray, &range),
+        Surface::Sphere(s) => intersect_sphere(s, ray, &range),
+        Surface::Paraboloid(s) => intersect_paraboloid(s, ray, &range),
+        Surface::Cone(s) => intersect_cone(s, ray, &range),
+        Surface::Wave(s) => intersect_wave(s, ray, &range),
+        Surface::Triangle(s) => intersect_triangle(s, ray, &range),
+    }?;
+    hit.uv.is_finite().then_some(hit)
+}
+
+/// The (u,v) of a point on the surface (relative to its anchor): the inverse of `Surface::frame`.
+pub fn surface_uv(surface: &Surface, p: DVec3) -> Vec2 {
+    match surface {
+        Surface::Plane(s) => plane_uv(s, p),
+        Surface::Sphere(_) => sphere_uv(p),
+        Surface::Paraboloid(s) => paraboloid_uv(s, p),
+        Surface::Cone(s) => cone_uv(s, p),
+        Surface::Wave(_) => wave_uv(p),
+        Surface::Triangle(s) => triangle_uv(s, p),
+    }
+}

@@ -1,0 +1,35 @@
+//! The exact reference renderer: one ray per pixel centre, intersected analytically (robust root
+//! finding for the wave) with the scene's exact surfaces, producing the same `Fragment`s the
+//! rasterizer does, shaded by the same `FragmentShader`. Only visibility and (u,v) interpolation
+//! differ from the rasterizer, so the difference between the two is the tessellation's error.
+//! It is the ground truth for accuracy, not fast.
+//!
+//! Numerics: rays are intersected in f64 relative to each surface's anchor, so a scene translated
+//! by 1e6 loses nothing. The ray direction is scaled so that its component along the view
+//! direction is 1: the ray parameter t is then the view depth, which the near and far planes bound.
+
+mod caster;
+mod cone;
+mod differentials;
+mod heat_map;
+mod intersect;
+mod lit_frames;
+pub mod metrics;
+mod paraboloid;
+mod plane;
+mod quadratic;
+mod ray;
+mod root;
+mod sphere;
+mod triangle;
+mod view_rays;
+mod wave;
+
+pub use caster::{ReferenceStats, cast_pixel, render_reference, render_reference_into};
+pub use differentials::uv_derivatives;
+pub use heat_map::error_heat_map;
+pub use intersect::{intersect, surface_uv};
+pub use lit_frames::ShadedAndNormals;
+pub use metrics::{FrameError, frame_error};
+pub use ray::{Hit, Ray};
+pub use view_rays::ViewRays;

@@ -1,0 +1,38 @@
+use glam::{DVec3, Vec2};
+use std::ops::RangeInclusive;
+
+/// A ray relative to a surface's anchor: points origin + t·direction for t in a range.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Ray {
+    pub origin: DVec3,
+    /// Not normalised: the caster scales it so that t is the view depth.
+    pub direction: DVec3,
+}
+
+impl Ray {
+    pub fn at(&self, t: f64) -> DVec3 {
+        self.origin + self.direction * t
+    }
+}
+
+/// The nearest intersection in a range: its ray parameter and the exact surface (u,v) there.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Hit {
+    pub t: f64,
+    pub uv: Vec2,
+}
+
+/// The first of `candidates` (any order) inside `range` that `accept` keeps, as a hit.
+pub(super) fn nearest_hit(
+    candidates: impl IntoIterator<Item = f64>,
+    range: &RangeInclusive<f64>,
+    mut accept: impl FnMut(f64) -> Option<Vec2>,
+) -> Option<Hit> {
+    let mut ts: Vec<f64> = candidates
+        .into_iter()
+        .filter(|t| range.contains(t))
+        .collect();
+    ts.sort_by(f64::total_cmp);
+    ts.into_iter()
+        .find_map(|t| accept(t).map(|uv| Hit { t, uv }))
+}

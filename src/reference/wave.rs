@@ -1,0 +1,142 @@
+use super::ray::{Hit, Ray};
+use super::root::{bisect_sign_change, safeguarded_root};
+use crate::surface::Wave;
+use glam::{DVec3, Vec2};
+use std::f64::consts::FRAC_PI_2;
+use std::ops::RangeInclusive;
+
+/// A ray crossing more quarter-waves than this is given up on (a wavelength far below a pixel
+/// would alias anyway); it bounds the work per ray.
+const MAX_QUARTER_WAVES: f64 = 1e6;
+
+/// The first root of f(t) = y(t) − A·sin(k·x(t)) inside the wave's box. The ray is first clipped
+/// to the box (x in [0, width], z in [−depth, 0], |y| ≤ |A|), then cut where k·x(t) crosses a
+/// multiple of π/2: on each piece f is convex or concave (f'' = A·k²·dx²·sin(k·x) keeps its
+/// sign), so it has at most two roots, found exactly: bracketed at the ends, or on either side of
+/// the piece's single extremum. Safeguarded Newton then refines each bracket.
+pub(super) fn intersect_wave(wave: &Wave, ray: &Ray, range: &RangeInclusive<f64>) -> Option<Hit> {
+    let curve = WaveAlongRay::new(wave, ray);
+    let (lo, hi) = clip_to_box(wave, ray, *range.start(), *range.end())?;
+    let t = curve.first_root(lo, hi)?;
+    Some(Hit {
+        t,
+        uv: wave_uv(ray.at(t)),
+    })
+}
+
+/// u = x, v = −z.
+pub(super) fn wave_uv(p: DVec3) -> Vec2 {
+    Vec2::new(p.x as f32, -p.z as f32)
+}
+
+struct WaveAlongRay {
+    origin: DVec3,
+    direction: DVec3,
+    amplitude: f64,
+    wavenumber: f64,
+}
+
+impl WaveAlongRay {
+    fn new(wave: &Wave, ray: &Ray) -> WaveAlongRay {
+        WaveAlongRay {
+            origin: ray.origin,
+            direction: ray.direction,
+            amplitude: wave.amplitude as f64,
+            wavenumber: std::f64::consts::TAU / wave.wavelength as f64,
+        }
+    }
+
+    fn phase(&self, t: f64) -> f64 {
+        self.wavenumber * (self.origin.x + t * self.direction.x)
+    }
+
+    fn f(&self, t: f64) -> f64 {
+        self.origin.y + t * self.direction.y - self.amplitude * self.phase(t).sin()
+    }
+
+    fn df(&self, t: f64) -> f64 {
+        self.direction.y - self.amplitude * self.wavenumber * self.direction.x * self.phase(t).cos()
+    }
+
+    fn first_root(&self, lo: f64, hi: f64) -> Option<f64> {
+        let cuts = self.quarter_wave_cuts(lo, hi)?;
+        let mut start = lo;
+        for end in cuts.chain([hi]) {
+            // Rounding may put a cut a hair outside the interval.
+            let end = end.clamp(start, hi);
+            if let Some(t) = self.root_in_piece(start, end) {
+                return Some(t);
+            }
+            start = end;
+        }
+        None
+    }
+
+    /// The t in (lo, hi) where the phase crosses a multiple of π/2, in increasing order.
+    fn quarter_wave_cuts(&self, lo: f64, hi: f64) -> Option<impl Iterator<Item = f64> + use<>> {
+        let rate = self.wavenumber * self.direction.x;
+        let (p_lo, p_hi) = (self.phase(lo) / FRAC_PI_2, self.phase(hi) / FRAC_PI_2);
+        let (first, last) = (p_lo.min(p_hi).floor() + 1.0, p_lo.max(p_hi).ceil() - 1.0);
+        let count = if rate != 0.0 && last >= first {
+            last - first + 1.0
+        } else {
+            0.0
+        };
+        if !count.is_finite() || count > MAX_QUARTER_WAVES {
+            return None;
+        }
+        let start_phase = if rate > 0.0 { first } else { last };
+        let step = rate.signum();
+        let (x0, k, dx) = (self.origin.x, self.wavenumber, self.direction.x);
+        Some((0..count as u64).map(move |i| {
+            let phase = (start_phase + step * i as f64) * FRAC_PI_2;
+            (phase / k - x0) / dx
+        }))
+    }
+
+    /// The first root in [lo, hi], where f is convex or concave.
+    fn root_in_piece(&self, lo: f64, hi: f64) -> Option<f64> {
+        let (f_lo, f_hi) = (self.f(lo), self.f(hi));
+        if f_lo == 0.0 {
+            return Some(lo);
+        }
+        if (f_lo < 0.0) != (f_hi < 0.0) || f_hi == 0.0 {
+            return Some(self.refine(lo, hi));
+        }
+        // Same sign at both ends: two roots or none, around the extremum (where f' changes sign).
+        let (d_lo, d_hi) = (self.df(lo), self.df(hi));
+        if (d_lo < 0.0) == (d_hi < 0.0) {
+            return None;
+        }
+        let extremum = bisect_sign_change(|t| self.df(t), lo, hi);
+        let f_extremum = self.f(extremum);
+        ((f_extremum < 0.0) != (f_lo < 0.0) || f_extremum == 0.0).then(|| self.refine(lo, extremum))
+    }
+
+    fn refine(&self, lo: f64, hi: f64) -> f64 {
+        safeguarded_root(|t| self.f(t), |t| self.df(t), lo, hi)
+    }
+}
+
+/// The ray's parameter interval inside the wave's bounding box, within [lo, hi].
+fn clip_to_box(wave: &Wave, ray: &Ray, lo: f64, hi: f64) -> Option<(f64, f64)> {
+    let amplitude = (wave.amplitude as f64).abs();
+    let slabs = [
+        (ray.origin.x, ray.direction.x, 0.0, wave.size.x as f64),
+        (ray.origin.y, ray.direction.y, -amplitude, amplitude),
+        (ray.origin.z, ray.direction.z, -(wave.size.y as f64), 0.0),
+    ];
+    let (mut lo, mut hi) = (lo, hi);
+    for (origin, direction, min, max) in slabs {
+        if direction == 0.0 {
+            if origin < min || origin > max {
+                return None;
+            }
+            continue;
+        }
+        let (a, b) = ((min - origin) / direction, (max - origin) / direction);
+        lo = lo.max(a.min(b));
+        hi = hi.min(a.max(b));
+    }
+    (lo <= hi).then_some((lo, hi))
+}
