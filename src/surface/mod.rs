@@ -126,10 +126,12 @@ impl Surface {
                 collapsed_v_min: true,
                 collapsed_v_max: false,
             },
-            // A cone is ruled: straight along v, so one cell along v is exact.
+            // A cone is ruled, so a single cell along v would be exact in position; but the
+            // apex fan's vertex sits at mid-cell u, and u interpolated from it is off by up to
+            // half a cell across the whole fan row. Rows along v confine that to the first one.
             Surface::Cone(_) => tessellate::GridShape {
                 cells_u: 2 * d,
-                cells_v: 1,
+                cells_v: (d / 2).max(2),
                 collapsed_v_min: true,
                 collapsed_v_max: false,
             },
