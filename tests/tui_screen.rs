@@ -171,3 +171,25 @@ fn an_edited_pattern_file_reloads_and_a_broken_one_keeps_the_view_and_shows_wher
     assert!(!draw(&mut screen, &mut app).is_empty());
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn with_watching_off_an_edited_file_is_not_reloaded() {
+    let dir = std::env::temp_dir().join(format!("bumpwork-tui-nowatch-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("still.pat");
+    std::fs::write(&path, "height = sin(u / 20)\n").unwrap();
+    let options = WorkbenchOptions {
+        scenes: vec![path.to_str().unwrap().into()],
+        watch: false,
+        ..WorkbenchOptions::default()
+    };
+    let mut app = App::new(&options, ColorMode::Ansi256).unwrap();
+    std::fs::write(&path, "height = u + )\n").unwrap();
+    // Longer than the watcher's debounce, several times over: nothing may arrive.
+    for _ in 0..25 {
+        std::thread::sleep(std::time::Duration::from_millis(20));
+        app.reload_if_changed();
+    }
+    assert_eq!(app.message, Message::None);
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -20,6 +20,9 @@ pub struct ViewArgs {
     /// Leave the mouse to the terminal (text selection) instead of orbiting with it.
     #[arg(long)]
     no_mouse: bool,
+    /// Do not reload scene, pattern and image files when they change on disk.
+    #[arg(long)]
+    no_watch: bool,
     /// Size of PNGs the export key writes, WIDTHxHEIGHT.
     #[arg(long, default_value = "1920x1080", value_parser = super::parse_size)]
     export_size: Option<(u32, u32)>,
@@ -42,6 +45,7 @@ pub fn run(args: ViewArgs) -> Result<(), Error> {
         },
         mouse: !args.no_mouse,
         export_size: args.export_size.unwrap_or(defaults.export_size),
+        watch: !args.no_watch,
     };
     bumpwork::tui::run(&options)
 }

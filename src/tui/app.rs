@@ -42,6 +42,8 @@ pub struct App {
     pub dirty: Dirty,
     /// Watches the current scene's files; None for built-in scenes.
     reloader: Option<Reloader>,
+    /// Whether files are watched (`--no-watch` turns it off).
+    watch: bool,
 }
 
 /// The reload state or the last error, shown in the status line.
@@ -85,11 +87,12 @@ impl App {
         for name in &options.scenes[1..] {
             super::source::load_source(name)?;
         }
-        let (scene, reloader) = open_source(&options.scenes[0])?;
+        let (scene, reloader) = open_source(&options.scenes[0], options.watch)?;
         let quality = Quality::default();
         let orbit = Orbit::from_camera(&scene.camera);
         Ok(App {
             scenes: options.scenes.clone(),
+            watch: options.watch,
             scene_index: 0,
             object: first_bumped_object(&scene),
             param: 0,
@@ -243,7 +246,7 @@ impl App {
     pub fn switch_scene(&mut self, step: i32) {
         let count = self.scenes.len() as i32;
         let index = (self.scene_index as i32 + step).rem_euclid(count) as usize;
-        match open_source(&self.scenes[index]) {
+        match open_source(&self.scenes[index], self.watch) {
             Ok((scene, reloader)) => {
                 self.reloader = reloader;
                 self.scene_index = index;

@@ -13,6 +13,8 @@ pub struct WorkbenchOptions {
     pub mouse: bool,
     /// Pixel size of exported PNGs.
     pub export_size: (u32, u32),
+    /// Reload scene, pattern and image files when they change on disk.
+    pub watch: bool,
 }
 
 impl Default for WorkbenchOptions {
@@ -27,6 +29,7 @@ impl Default for WorkbenchOptions {
             fps: 30,
             mouse: true,
             export_size: (1920, 1080),
+            watch: true,
         }
     }
 }

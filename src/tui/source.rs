@@ -38,9 +38,11 @@ pub fn load_source(name: &str) -> Result<Scene, Error> {
 
 /// Loads the scene `name` names and, for files, starts watching them (the scene file and every
 /// pattern and image it names, or the pattern file). If watching cannot start, the scene still
-/// opens, without hot reload.
-pub fn open_source(name: &str) -> Result<(Scene, Option<Reloader>), Error> {
-    let started = if name.ends_with(".pat") {
+/// opens, without hot reload. With `watch` off nothing is watched.
+pub fn open_source(name: &str, watch: bool) -> Result<(Scene, Option<Reloader>), Error> {
+    let started = if !watch {
+        return Ok((load_source(name)?, None));
+    } else if name.ends_with(".pat") {
         let owned = name.to_string();
         let source = FileSetSource::new(vec![PathBuf::from(name)], move || load_source(&owned));
         Reloader::start(source)
