@@ -1,24 +1,8 @@
 //! Messages about user files: `file:line:column: what was expected` with the line and a caret, with any
 //! control characters from the file escaped so nothing from a file reaches the terminal raw.
 
-use std::borrow::Cow;
-
-/// Escapes control characters (C0, DEL, C1) as `\u{..}` (newline and tab as `\n`, `\t`).
-pub fn sanitize(text: &str) -> Cow<'_, str> {
-    if !text.chars().any(char::is_control) {
-        return Cow::Borrowed(text);
-    }
-    let mut out = String::with_capacity(text.len() + 8);
-    for c in text.chars() {
-        match c {
-            '\n' => out.push_str("\\n"),
-            '\t' => out.push_str("\\t"),
-            c if c.is_control() => out.push_str(&format!("\\u{{{:x}}}", c as u32)),
-            c => out.push(c),
-        }
-    }
-    Cow::Owned(out)
-}
+/// The one sanitiser for text from files: see `term::sanitize`.
+pub use crate::term::sanitize;
 
 /// The 1-based line and column (in characters) of a byte offset.
 pub fn line_column(source: &str, offset: usize) -> (usize, usize) {
@@ -61,9 +45,12 @@ mod tests {
 
     #[test]
     fn escapes_terminal_controls() {
-        assert_eq!(sanitize("a\x1b[31mb\x07\n"), "a\\u{1b}[31mb\\u{7}\\n");
+        assert_eq!(sanitize("a\x1b[31mb\x07\n"), "a\\e[31mb\\x07\\n");
         assert_eq!(sanitize("\u{9b}x"), "\\u{9b}x");
-        assert!(matches!(sanitize("plain ünïcode"), Cow::Borrowed(_)));
+        assert!(matches!(
+            sanitize("plain ünïcode"),
+            std::borrow::Cow::Borrowed(_)
+        ));
     }
 
     #[test]

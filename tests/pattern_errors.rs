@@ -141,7 +141,7 @@ fn control_characters_never_reach_the_terminal() {
         !text.chars().any(|c| c.is_control() && c != '\n'),
         "{text:?}"
     );
-    assert!(text.contains("\\u{1b}"));
+    assert!(text.contains("\\e[2J"));
     let e = error("height = \u{202e}u");
     assert!(!e.to_string().contains('\u{202e}'));
 }

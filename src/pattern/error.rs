@@ -123,21 +123,7 @@ fn floor_char_boundary(s: &str, mut i: usize) -> usize {
 /// text echoed from a pattern file can never drive the terminal. Tabs become one space so the
 /// caret stays aligned.
 pub fn escape_for_terminal(text: &str) -> String {
-    let mut out = String::with_capacity(text.len());
-    for c in text.chars() {
-        match c {
-            '\t' => out.push(' '),
-            c if c.is_control() || is_bidi_control(c) => {
-                out.push_str(&c.escape_unicode().to_string());
-            }
-            c => out.push(c),
-        }
-    }
-    out
-}
-
-fn is_bidi_control(c: char) -> bool {
-    matches!(c, '\u{200e}' | '\u{200f}' | '\u{202a}'..='\u{202e}' | '\u{2066}'..='\u{2069}')
+    crate::term::sanitize(&text.replace('\t', " ")).into_owned()
 }
 
 #[cfg(test)]

@@ -16,7 +16,8 @@ pub struct PatternBatch {
     point: [Vec<f32>; 9],
     samples: Vec<BumpSample>,
     rgb: Vec<[f32; 3]>,
-    scratch: Option<Scratch>,
+    /// Grows to fit whichever pattern runs; one serves them all.
+    scratch: Scratch,
 }
 
 impl PatternBatch {
@@ -65,16 +66,13 @@ impl PatternBatch {
         let n = self.u.len();
         self.samples.clear();
         self.samples.resize(n, BumpSample::default());
-        let mut scratch = self
-            .scratch
-            .take()
-            .unwrap_or_else(|| binding.pattern.scratch());
         let inputs = inputs(&self.u, &self.v, &self.point, time);
-        let flattened =
-            binding
-                .pattern
-                .eval_bump(&inputs, &binding.params, &mut scratch, &mut self.samples);
-        self.scratch = Some(scratch);
+        let flattened = binding.pattern.eval_bump(
+            &inputs,
+            &binding.params,
+            &mut self.scratch,
+            &mut self.samples,
+        );
         // ∂B/∂(u,v) = Jᵀ·∂B/∂q.
         let jacobian = binding.placement.jacobian();
         for ((sample, h), g) in self.samples.iter().zip(heights).zip(gradients) {
@@ -90,16 +88,11 @@ impl PatternBatch {
         let n = self.u.len();
         self.rgb.clear();
         self.rgb.resize(n, [0.0; 3]);
-        let mut scratch = self
-            .scratch
-            .take()
-            .unwrap_or_else(|| binding.pattern.scratch());
         let inputs = inputs(&self.u, &self.v, &self.point, time);
         let flattened =
             binding
                 .pattern
-                .eval_color(&inputs, &binding.params, &mut scratch, &mut self.rgb);
-        self.scratch = Some(scratch);
+                .eval_color(&inputs, &binding.params, &mut self.scratch, &mut self.rgb);
         for (rgb, color) in self.rgb.iter().zip(colors) {
             *color = Vec3::from_array(*rgb);
         }

@@ -1,7 +1,7 @@
 //! The shipped images (CC0, see textures/README.md), embedded so built-in scenes work from any
 //! directory. A scene names them without a path or extension: `image = "brick"`.
 
-use super::{Encoding, HeightMap, Limits, Texture, TextureError, decode_image};
+use super::{Encoding, HeightMap, Limits, LoadedImage, Texture, TextureError, decode_image};
 use std::path::Path;
 
 pub const BUILTIN_IMAGES: &[(&str, &[u8])] = &[
@@ -18,34 +18,29 @@ fn builtin_bytes(name: &str) -> Option<&'static [u8]> {
         .map(|(_, bytes)| *bytes)
 }
 
+/// The texels of a built-in image, decoded with `encoding`; `None` if no image has that name.
+fn decode_builtin(name: &str, encoding: Encoding) -> Option<Result<LoadedImage, TextureError>> {
+    let bytes = builtin_bytes(name)?;
+    Some(decode_image(
+        bytes,
+        Path::new(name),
+        &Limits::default(),
+        encoding,
+    ))
+}
+
 /// A colour texture: a built-in name, or a file path.
 pub fn load_texture(name_or_path: &str, base: &Path) -> Result<Texture, TextureError> {
-    match builtin_bytes(name_or_path) {
-        Some(bytes) => {
-            let image = decode_image(
-                bytes,
-                Path::new(name_or_path),
-                &Limits::default(),
-                Encoding::Srgb,
-            )?;
-            Ok(Texture::from_raster(image.texels))
-        }
+    match decode_builtin(name_or_path, Encoding::Srgb) {
+        Some(image) => Ok(Texture::from_raster(image?.texels)),
         None => Texture::load(base.join(name_or_path), &Limits::default()),
     }
 }
 
 /// A height map (grey values as stored, not sRGB-decoded): a built-in name, or a file path.
 pub fn load_height_map(name_or_path: &str, base: &Path) -> Result<HeightMap, TextureError> {
-    match builtin_bytes(name_or_path) {
-        Some(bytes) => {
-            let image = decode_image(
-                bytes,
-                Path::new(name_or_path),
-                &Limits::default(),
-                Encoding::Linear,
-            )?;
-            Ok(HeightMap::from_texels(&image.texels))
-        }
+    match decode_builtin(name_or_path, Encoding::Linear) {
+        Some(image) => Ok(HeightMap::from_texels(&image?.texels)),
         None => HeightMap::load(base.join(name_or_path), &Limits::default()),
     }
 }

@@ -40,22 +40,13 @@ pub enum Reason {
 }
 
 /// A file name safe to print on a terminal: control characters are shown escaped
-/// (`\n`, `\u{1b}`), so a hostile name cannot move the cursor or fake a message.
+/// (`\n`, `\e`), so a hostile name cannot move the cursor or fake a message.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct PrintableName(String);
 
 impl PrintableName {
     pub fn from_path(path: &Path) -> Self {
-        let raw = path.to_string_lossy();
-        let mut escaped = String::with_capacity(raw.len());
-        for c in raw.chars() {
-            if c.is_control() {
-                escaped.extend(c.escape_default());
-            } else {
-                escaped.push(c);
-            }
-        }
-        Self(escaped)
+        Self(crate::term::sanitize(&path.to_string_lossy()).into_owned())
     }
 
     pub fn as_str(&self) -> &str {
@@ -77,7 +68,7 @@ mod tests {
     fn control_characters_in_names_are_escaped() {
         let err = TextureError::new(Path::new("evil\n\u{1b}[2J.png"), Reason::Missing);
         let text = err.to_string();
-        assert_eq!(text, "evil\\n\\u{1b}[2J.png: file not found");
+        assert_eq!(text, "evil\\n\\e[2J.png: file not found");
         assert!(!text.chars().any(char::is_control));
     }
 }
