@@ -4,9 +4,7 @@ use super::app::App;
 use super::resample::resample_to_srgb;
 use super::view_mode::{ViewMode, render_view_mode};
 use super::wireframe::draw_wireframe;
-use crate::raster::{
-    Camera, FrameStats, Framebuffer, Interpolation, PreparedScene, RenderTarget, Viewport,
-};
+use crate::raster::{Camera, FrameStats, Framebuffer, PreparedScene, RenderTarget, Viewport};
 use crate::term::{CellGrid, EncodeOptions, GlyphSet, Picture, encode};
 use glam::Vec3;
 
@@ -37,11 +35,7 @@ pub fn render_frame(
     height: u32,
     framebuffer: &mut Framebuffer,
 ) -> FrameStats {
-    let target = RenderTarget {
-        camera: &view.camera,
-        viewport: Viewport { width, height },
-        interpolation: Interpolation::PerspectiveCorrect,
-    };
+    let target = RenderTarget::new(&view.camera, Viewport { width, height });
     let stats = render_view_mode(view.mode, view.time, view.prepared, &target, framebuffer);
     if view.mode == ViewMode::Wireframe {
         draw_wireframe(view.prepared, &target, framebuffer);
