@@ -22,6 +22,8 @@ struct Cli {
 enum Command {
     /// Render a built-in scene or a scene file to a PNG still.
     Render(commands::render::RenderArgs),
+    /// Render every built-in scene to a still and a contact sheet of them all.
+    Gallery(commands::gallery::GalleryArgs),
     /// Check pattern files, scene files and images without rendering.
     Check(commands::check::CheckArgs),
     /// Open the terminal workbench on scenes (default: every built-in scene).
@@ -57,6 +59,7 @@ fn run(cli: Cli) -> Result<(), Error> {
     match cli.command {
         Some(Command::Render(args)) => commands::render::run(args),
         Some(Command::Check(args)) => commands::check::run(args),
+        Some(Command::Gallery(args)) => commands::gallery::run(args),
         Some(Command::View(args)) => commands::view::run(args),
         None => commands::view::run(Default::default()),
     }

@@ -1,6 +1,7 @@
 //! One file per subcommand; `main.rs` only parses and dispatches.
 
 pub mod check;
+pub mod gallery;
 mod interrupt;
 mod progress;
 pub mod render;
