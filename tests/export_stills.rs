@@ -237,7 +237,28 @@ fn failed_renders_leave_no_file_and_say_why() {
         &bumpwork(&["render", "--from", broken.to_str().unwrap(), "-o", out]),
         "PNG",
     );
-    assert_eq!(leftovers(&dir, &["bad.toml"]), Vec::<String>::new());
+    // An image whose header asks for more memory than the texture limit allows.
+    std::fs::write(
+        dir.join("huge.ppm"),
+        b"P6\n100000 100000\n255\n\x00\x00\x00",
+    )
+    .unwrap();
+    let greedy = dir.join("greedy.toml");
+    std::fs::write(
+        &greedy,
+        "[camera]\neye = [0, 0, 5]\ntarget = [0, 0, 0]\n\
+         [[object]]\nsurface = { sphere = { center = [0, 0, 0], radius = 1 } }\n\
+         texture = { image = \"huge.ppm\", mapping = \"spherical\" }\n",
+    )
+    .unwrap();
+    assert_user_error(
+        &bumpwork(&["render", greedy.to_str().unwrap(), "-o", out]),
+        "huge.ppm",
+    );
+    assert_eq!(
+        leftovers(&dir, &["bad.toml", "huge.ppm", "greedy.toml"]),
+        Vec::<String>::new()
+    );
 }
 
 #[test]
