@@ -355,3 +355,58 @@ fn the_gallery_writes_each_scene_and_a_contact_sheet_of_them() {
         "unknown scene 'no-such-scene'",
     );
 }
+
+#[test]
+fn a_pov_ray_scene_carries_every_object_and_its_baked_maps() {
+    let dir = temp_dir("still-pov");
+    let pov = dir.join("scene.pov");
+    let out = bumpwork(&[
+        "render",
+        "sphere-on-plane-waffle",
+        "-o",
+        pov.to_str().unwrap(),
+        "--size",
+        "64x36",
+        "--format",
+        "pov",
+        "--tessellation",
+        "8",
+    ]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let sdl = std::fs::read_to_string(&pov).unwrap();
+    assert_eq!(sdl.matches("mesh2 {").count(), 2);
+    assert!(sdl.contains("camera {") && sdl.contains("light_source {"));
+    for map in ["scene-1-bump.png", "scene-2-bump.png"] {
+        assert!(sdl.contains(map), "{map} is referenced");
+        let decoder = png::Decoder::new(std::io::BufReader::new(
+            std::fs::File::open(dir.join(map)).unwrap(),
+        ));
+        let info = decoder.read_info().unwrap().info().clone();
+        assert_eq!((info.width, info.bit_depth), (1024, png::BitDepth::Sixteen));
+    }
+    // The seed's dimples are slopes, with no height to bake: said, not silently dropped.
+    let out = bumpwork(&[
+        "render",
+        "plane-dimples",
+        "-o",
+        dir.join("d.pov").to_str().unwrap(),
+        "--format",
+        "pov",
+    ]);
+    assert!(out.status.success());
+    assert!(stderr(&out).contains("slope pattern"), "{}", stderr(&out));
+    let Ok(povray) = Command::new("povray")
+        .args(["+W64", "+H36", "-D", "-GA", "+Oscene.png", "scene.pov"])
+        .current_dir(&dir)
+        .output()
+    else {
+        eprintln!("povray is not installed: the scene was not rendered by POV-Ray");
+        return;
+    };
+    assert!(
+        povray.status.success(),
+        "{}",
+        String::from_utf8_lossy(&povray.stderr)
+    );
+    assert_eq!(decode_png(&dir.join("scene.png")).0, 64);
+}

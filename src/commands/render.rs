@@ -202,6 +202,21 @@ fn render_one(
     format: StillFormat,
     interrupt: &Interrupt,
 ) -> Result<(), Error> {
+    if format == StillFormat::Pov {
+        let settings = &request.settings;
+        let warnings = bumpwork::export::write_pov(
+            &request.prepared.scene,
+            request.camera,
+            settings.size,
+            settings.tessellation,
+            settings.time,
+            path,
+        )?;
+        for warning in warnings {
+            eprintln!("bumpwork: warning: {warning}");
+        }
+        return Ok(());
+    }
     let mut progress = RenderProgress::new(&path.display().to_string());
     let stats = write_still(
         request,

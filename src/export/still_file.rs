@@ -19,6 +19,9 @@ pub enum StillFormat {
     Png,
     /// The seed's binary PPM (P6): pixels only.
     Ppm,
+    /// A POV-Ray 3.7 scene of the same meshes, lights and camera, colours and bumps baked into
+    /// image maps beside it (for rendering the same scene in POV-Ray).
+    Pov,
 }
 
 /// What to render and what to record about it.
@@ -76,6 +79,9 @@ pub fn write_still(
             png.finish()?;
             Ok(stats)
         }
+        StillFormat::Pov => Err(Error::InvalidArgument(
+            "a POV-Ray scene is written by write_pov, not rendered".into(),
+        )),
         StillFormat::Ppm => {
             let mut ppm = PpmStill::create(path, settings.size)?;
             let stats = stream(&mut ppm)?;

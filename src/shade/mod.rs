@@ -1,12 +1,14 @@
 //! Per-fragment shading: the surface's exact frame at the fragment's (u,v), the texture, the
 //! bump-perturbed normal, then lighting.
 
+mod bake;
 mod bump;
 mod lighting;
 mod pattern_batch;
 mod scene_shader;
 mod view_mode;
 
+pub use bake::{bake_color, bake_height};
 pub use bump::{NormalForm, bumped_normal};
 pub use lighting::{FrameLights, blinn_phong, facing_sign};
 pub use scene_shader::{LitShader, ShadeScratch};
