@@ -24,6 +24,9 @@ enum Command {
     Render(commands::render::RenderArgs),
     /// Check pattern files, scene files and images without rendering.
     Check(commands::check::CheckArgs),
+    /// Time every quality preset and knob on standard scenes and measure their error against
+    /// the exact reference.
+    Bench(commands::bench::BenchArgs),
     /// Open the terminal workbench on scenes (default: every built-in scene).
     View(commands::view::ViewArgs),
 }
@@ -54,6 +57,7 @@ fn run(cli: Cli) -> Result<(), Error> {
         Some(Command::Render(args)) => commands::render::run(args),
         Some(Command::Check(args)) => commands::check::run(args),
         Some(Command::View(args)) => commands::view::run(args),
+        Some(Command::Bench(args)) => commands::bench::run(args),
         None => commands::view::run(Default::default()),
     }
 }
