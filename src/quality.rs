@@ -30,10 +30,11 @@ pub enum NormalSource {
 /// One setting of every speed/accuracy knob.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Quality {
-    /// Cells per half turn of curved surfaces, for every object (unless `adaptive` is set).
+    /// Cells per half turn of curved surfaces, for every object (where refinement starts when
+    /// `adaptive_tolerance_px` is set).
     pub tessellation: Tessellation,
-    /// Screen-space adaptive tessellation: each object's density is refined until its chords
-    /// deviate from the surface by at most this many pixels in this view.
+    /// Screen-space adaptive tessellation: each object's density is refined from `tessellation`
+    /// until its chords deviate from the surface by at most this many pixels in this view.
     pub adaptive_tolerance_px: Option<f32>,
     /// Samples per pixel (1, 4, 16, …), for the supersampled renderer.
     pub samples: u32,
@@ -55,13 +56,13 @@ impl Default for Quality {
 }
 
 impl Quality {
-    /// Coarse meshes, nearest texels and the mesh's interpolated normals: the classic cheap
-    /// rasterizer, for slow machines and huge terminals.
+    /// Coarse meshes and nearest texels, for slow machines and huge terminals. (It keeps the
+    /// exact frame: interpolated vertex normals measure slower here, a point location per
+    /// fragment against two `sincos`.)
     pub fn draft() -> Quality {
         Quality {
             tessellation: Tessellation { density: 16 },
             filter: Some(Filter::Nearest),
-            normals: NormalSource::InterpolatedVertex,
             ..Quality::interactive()
         }
     }
@@ -81,9 +82,11 @@ impl Quality {
         }
     }
 
-    /// Silhouettes within half a pixel, 4 samples, the exact normal of the bumped surface.
+    /// Density 128, refined where silhouettes would be off by more than half a pixel; 4 samples,
+    /// the exact normal of the bumped surface.
     pub fn high() -> Quality {
         Quality {
+            tessellation: Tessellation { density: 128 },
             adaptive_tolerance_px: Some(0.5),
             samples: 4,
             normal_form: NormalForm::Full,
@@ -91,10 +94,13 @@ impl Quality {
         }
     }
 
-    /// Silhouettes within a tenth of a pixel, 16 samples, and the reference's shading: the
-    /// closest the rasterizer gets to the ray-cast reference.
+    /// Density 256, refined until silhouettes are within a tenth of a pixel; 16 samples and the
+    /// reference's shading: the closest the rasterizer gets to the ray-cast reference. (The
+    /// (u,v) error inside a silhouette shifts pattern edges; it shrinks with density, not with
+    /// the silhouette tolerance, hence the high base density.)
     pub fn exact() -> Quality {
         Quality {
+            tessellation: Tessellation { density: 256 },
             adaptive_tolerance_px: Some(0.1),
             samples: 16,
             ..Quality::high()
@@ -144,7 +150,10 @@ impl Quality {
         viewport: Viewport,
     ) -> u32 {
         match self.adaptive_tolerance_px {
-            Some(tolerance) => adaptive_density(surface, camera, viewport, tolerance),
+            Some(tolerance) => {
+                let start = self.tessellation.density;
+                adaptive_density(surface, camera, viewport, tolerance, start)
+            }
             None => self.tessellation.density,
         }
     }
@@ -237,7 +246,8 @@ mod tests {
         assert!(draft.samples <= interactive.samples);
         assert!(interactive.samples < high.samples && high.samples < exact.samples);
         assert!(exact.adaptive_tolerance_px < high.adaptive_tolerance_px);
-        assert_eq!(draft.normals, NormalSource::InterpolatedVertex);
+        assert!(interactive.tessellation.density < high.tessellation.density);
+        assert!(high.tessellation.density < exact.tessellation.density);
         assert_eq!(exact.normal_form, NormalForm::Full);
         assert_eq!(exact.gradient, GradientMethod::Exact);
     }

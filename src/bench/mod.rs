@@ -26,6 +26,10 @@ pub const STANDARD_SCENES: [&str; 6] = [
     "wave-spheres",
 ];
 
+/// Untimed frames first: the first frames after a change of variant run measurably slower
+/// (caches, the thread pool waking).
+const WARMUP_FRAMES: usize = 3;
+
 /// One variant on one scene: its cost and its error.
 #[derive(Clone, Debug)]
 pub struct Measurement {
@@ -44,9 +48,9 @@ pub struct Reference {
 impl Reference {
     pub fn render(scene: &Scene, viewport: Viewport) -> Reference {
         let quality = Quality::exact();
-        // The reference ignores the tessellation; the coarsest serves to build the scene.
-        let prepared =
-            PreparedScene::new(scene.clone(), crate::surface::Tessellation { density: 1 });
+        // The reference ignores the tessellation; a coarse one serves to build the scene.
+        let coarse = crate::surface::Tessellation { density: 4 };
+        let prepared = PreparedScene::new(scene.clone(), coarse);
         let mut shader = quality.shader(&prepared, &scene.camera);
         let frames = ShadedAndNormals::render(&mut shader, |s| {
             render_reference(&prepared, &scene.camera, viewport, s).0
@@ -55,7 +59,7 @@ impl Reference {
     }
 }
 
-/// Times `runs` frames of the variant (after one warm-up) and measures its error.
+/// Times `runs` frames of the variant (after warm-up frames) and measures its error.
 pub fn measure(
     scene_name: &str,
     scene: &Scene,
@@ -70,7 +74,7 @@ pub fn measure(
     let mut shader = quality.shader(&prepared, camera);
     let target = quality.target(camera, viewport);
     let mut framebuffer = Framebuffer::new(0, 0, Vec3::ZERO);
-    let timing = Timing::measure(1, runs, || {
+    let timing = Timing::measure(WARMUP_FRAMES, runs, || {
         render_into(&prepared, &target, &shader, &mut framebuffer);
     });
     let frames = ShadedAndNormals::render(&mut shader, |s| render_with(&prepared, &target, s).0);

@@ -14,21 +14,20 @@ use crate::surface::{Surface, Tessellation};
 
 /// Densest adaptive tessellation: a sphere at 512 has 512 K triangles.
 pub const MAX_ADAPTIVE_DENSITY: u32 = 512;
-/// Where refinement starts.
-const START_DENSITY: u32 = 8;
 /// Margin on the 1/d² prediction, so one refinement usually suffices.
 const PREDICTION_MARGIN: f32 = 1.1;
 
-/// The smallest density (up to `MAX_ADAPTIVE_DENSITY`) found whose projected chord error is at
-/// most `tolerance_px`, refining from a coarse mesh by the 1/d² law.
+/// The density, refined from `start` (never below it) by the 1/d² law up to
+/// `MAX_ADAPTIVE_DENSITY`, at which the projected chord error is at most `tolerance_px`.
 pub fn adaptive_density(
     surface: &Surface,
     camera: &Camera,
     viewport: Viewport,
     tolerance_px: f32,
+    start: u32,
 ) -> u32 {
     let tolerance = tolerance_px.max(1e-3);
-    let mut density = START_DENSITY;
+    let mut density = start.clamp(1, MAX_ADAPTIVE_DENSITY);
     for _ in 0..8 {
         let error = projected_chord_error(surface, density, camera, viewport);
         if error <= tolerance || density >= MAX_ADAPTIVE_DENSITY {
@@ -103,7 +102,7 @@ mod tests {
     fn the_chosen_density_meets_the_tolerance_and_half_of_it_does_not() {
         for tolerance in [1.0, 0.5, 0.1] {
             let camera = camera_at(400.0);
-            let d = adaptive_density(&sphere(), &camera, VIEW, tolerance);
+            let d = adaptive_density(&sphere(), &camera, VIEW, tolerance, 4);
             let error = projected_chord_error(&sphere(), d, &camera, VIEW);
             let coarser = projected_chord_error(&sphere(), d / 2, &camera, VIEW);
             assert!(error <= tolerance, "d {d}: {error} px > {tolerance}");
@@ -129,8 +128,8 @@ mod tests {
 
     #[test]
     fn far_objects_and_small_viewports_get_coarser_meshes() {
-        let near = adaptive_density(&sphere(), &camera_at(300.0), VIEW, 0.5);
-        let far = adaptive_density(&sphere(), &camera_at(3000.0), VIEW, 0.5);
+        let near = adaptive_density(&sphere(), &camera_at(300.0), VIEW, 0.5, 4);
+        let far = adaptive_density(&sphere(), &camera_at(3000.0), VIEW, 0.5, 4);
         let small = Viewport {
             width: 80,
             height: 60,
