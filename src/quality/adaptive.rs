@@ -134,10 +134,17 @@ mod tests {
             width: 80,
             height: 60,
         };
-        let tiny = adaptive_density(&sphere(), &camera_at(300.0), small, 0.5);
+        let tiny = adaptive_density(&sphere(), &camera_at(300.0), small, 0.5, 4);
         assert!(
             far < near && tiny < near,
             "near {near}, far {far}, tiny {tiny}"
         );
+    }
+
+    #[test]
+    fn refinement_never_goes_below_the_start() {
+        let far = camera_at(30000.0);
+        assert_eq!(adaptive_density(&sphere(), &far, VIEW, 1.0, 64), 64);
+        assert!(adaptive_density(&sphere(), &camera_at(300.0), VIEW, 0.01, 64) > 64);
     }
 }
