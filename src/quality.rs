@@ -32,11 +32,11 @@ pub enum NormalSource {
 pub struct Quality {
     /// Cells per half turn of curved surfaces, for every object (where refinement starts when
     /// `adaptive_tolerance_px` is set).
-    pub tessellation: Tessellation,
+    pub tessellation: u32,
     /// Screen-space adaptive tessellation: each object's density is refined from `tessellation`
     /// until its chords deviate from the surface by at most this many pixels in this view.
     pub adaptive_tolerance_px: Option<f32>,
-    /// Samples per pixel (1, 4, 16, …), for the supersampled renderer.
+    /// Samples per pixel (1, 4, 16, …), averaged in linear light by the supersampled renderer.
     pub samples: u32,
     /// Texture filter for every image texture; `None` keeps each scene's own.
     pub filter: Option<Filter>,
@@ -47,7 +47,18 @@ pub struct Quality {
 }
 
 /// The preset names, cheapest first.
-pub const PRESET_NAMES: [&str; 4] = ["draft", "interactive", "high", "exact"];
+pub const QUALITY_NAMES: [&str; 4] = ["draft", "interactive", "high", "exact"];
+
+/// The named preset, if there is one.
+pub fn preset(name: &str) -> Option<Quality> {
+    match name {
+        "draft" => Some(Quality::draft()),
+        "interactive" => Some(Quality::interactive()),
+        "high" => Some(Quality::high()),
+        "exact" => Some(Quality::exact()),
+        _ => None,
+    }
+}
 
 impl Default for Quality {
     fn default() -> Self {
@@ -56,13 +67,14 @@ impl Default for Quality {
 }
 
 impl Quality {
-    /// Coarse meshes and nearest texels, for slow machines and huge terminals. (It keeps the
-    /// exact frame: interpolated vertex normals measure slower here, a point location per
-    /// fragment against two `sincos`.)
+    /// Coarse meshes, affine (u,v) and nearest texels, for slow machines and huge terminals.
+    /// (It keeps the exact frame: interpolated vertex normals measure slower here, a point
+    /// location per fragment against two `sincos`.)
     pub fn draft() -> Quality {
         Quality {
-            tessellation: Tessellation { density: 16 },
+            tessellation: 16,
             filter: Some(Filter::Nearest),
+            interpolation: Interpolation::Affine,
             ..Quality::interactive()
         }
     }
@@ -71,7 +83,7 @@ impl Quality {
     /// frame and derivatives, Blinn's first-order normal, perspective-correct (u,v).
     pub fn interactive() -> Quality {
         Quality {
-            tessellation: Tessellation::default(),
+            tessellation: Tessellation::default().density,
             adaptive_tolerance_px: None,
             samples: 1,
             filter: None,
@@ -82,44 +94,40 @@ impl Quality {
         }
     }
 
-    /// Density 128, refined where silhouettes would be off by more than half a pixel; 4 samples,
-    /// the exact normal of the bumped surface.
+    /// Density 128, refined where silhouettes would be off by more than half a pixel; 16
+    /// samples, the exact normal of the bumped surface.
     pub fn high() -> Quality {
         Quality {
-            tessellation: Tessellation { density: 128 },
+            tessellation: 128,
             adaptive_tolerance_px: Some(0.5),
-            samples: 4,
+            samples: 16,
             normal_form: NormalForm::Full,
             ..Quality::interactive()
         }
     }
 
-    /// Density 256, refined until silhouettes are within a tenth of a pixel; 16 samples and the
+    /// Density 256, refined until silhouettes are within a tenth of a pixel; 64 samples and the
     /// reference's shading: the closest the rasterizer gets to the ray-cast reference. (The
     /// (u,v) error inside a silhouette shifts pattern edges; it shrinks with density, not with
     /// the silhouette tolerance, hence the high base density.)
     pub fn exact() -> Quality {
         Quality {
-            tessellation: Tessellation { density: 256 },
+            tessellation: 256,
             adaptive_tolerance_px: Some(0.1),
-            samples: 16,
+            samples: 64,
             ..Quality::high()
         }
     }
 
-    /// A preset by name, or a message listing the names.
-    pub fn preset(name: &str) -> Result<Quality, String> {
-        match name {
-            "draft" => Ok(Quality::draft()),
-            "interactive" => Ok(Quality::interactive()),
-            "high" => Ok(Quality::high()),
-            "exact" => Ok(Quality::exact()),
-            _ => Err(format!(
+    /// A preset by name, or a message listing the names (a command-line value parser).
+    pub fn named(name: &str) -> Result<Quality, String> {
+        preset(name).ok_or_else(|| {
+            format!(
                 "unknown quality preset '{}'; the presets are {}",
                 crate::diagnostic::sanitize(name),
-                PRESET_NAMES.join(", ")
-            )),
-        }
+                QUALITY_NAMES.join(", ")
+            )
+        })
     }
 
     /// Tessellates the scene for this view (after applying the filter override).
@@ -151,10 +159,10 @@ impl Quality {
     ) -> u32 {
         match self.adaptive_tolerance_px {
             Some(tolerance) => {
-                let start = self.tessellation.density;
+                let start = self.tessellation;
                 adaptive_density(surface, camera, viewport, tolerance, start)
             }
-            None => self.tessellation.density,
+            None => self.tessellation,
         }
     }
 
@@ -187,7 +195,7 @@ impl Quality {
     pub fn describe(&self) -> String {
         let tessellation = match self.adaptive_tolerance_px {
             Some(px) => format!("adaptive<{px}px"),
-            None => format!("density {}", self.tessellation.density),
+            None => format!("density {}", self.tessellation),
         };
         let filter = self
             .filter
@@ -227,10 +235,7 @@ mod tests {
 
     #[test]
     fn every_preset_parses_by_name_and_they_differ() {
-        let presets: Vec<Quality> = PRESET_NAMES
-            .iter()
-            .map(|n| Quality::preset(n).unwrap())
-            .collect();
+        let presets: Vec<Quality> = QUALITY_NAMES.iter().map(|n| preset(n).unwrap()).collect();
         for (i, a) in presets.iter().enumerate() {
             for b in &presets[i + 1..] {
                 assert_ne!(a, b);
@@ -241,22 +246,24 @@ mod tests {
 
     #[test]
     fn presets_grow_in_samples_and_shrink_in_tolerance() {
-        let [draft, interactive, high, exact] = PRESET_NAMES.map(|n| Quality::preset(n).unwrap());
-        assert!(draft.tessellation.density < interactive.tessellation.density);
+        let [draft, interactive, high, exact] = QUALITY_NAMES.map(|n| preset(n).unwrap());
+        assert!(draft.tessellation < interactive.tessellation);
         assert!(draft.samples <= interactive.samples);
         assert!(interactive.samples < high.samples && high.samples < exact.samples);
         assert!(exact.adaptive_tolerance_px < high.adaptive_tolerance_px);
-        assert!(interactive.tessellation.density < high.tessellation.density);
-        assert!(high.tessellation.density < exact.tessellation.density);
+        assert!(interactive.tessellation < high.tessellation);
+        assert!(high.tessellation < exact.tessellation);
+        assert_eq!(draft.interpolation, Interpolation::Affine);
         assert_eq!(exact.normal_form, NormalForm::Full);
         assert_eq!(exact.gradient, GradientMethod::Exact);
     }
 
     #[test]
     fn an_unknown_name_lists_the_presets() {
-        let message = Quality::preset("ultra").unwrap_err();
+        assert_eq!(preset("ultra"), None);
+        let message = Quality::named("ultra").unwrap_err();
         assert!(message.contains("'ultra'"), "{message}");
-        for name in PRESET_NAMES {
+        for name in QUALITY_NAMES {
             assert!(message.contains(name), "{message}");
         }
     }

@@ -7,7 +7,6 @@ use bumpwork::reference::metrics::normal_angle_error;
 use bumpwork::reference::render_reference;
 use bumpwork::scene::{Scene, Texturing, preset};
 use bumpwork::shade::{GradientMethod, NormalForm, ViewMode};
-use bumpwork::surface::Tessellation;
 use bumpwork::texture::Filter;
 
 const VIEW: Viewport = Viewport {
@@ -90,7 +89,7 @@ fn interpolated_vertex_normals_differ_from_the_exact_frame_and_converge_with_den
     let sphere = bare_sphere();
     let exact = reference(&sphere, &Quality::interactive(), ViewMode::Normals);
     let at = |density: u32, normals: NormalSource| Quality {
-        tessellation: Tessellation { density },
+        tessellation: density,
         normals,
         ..Quality::interactive()
     };
@@ -238,7 +237,7 @@ fn adaptive_tessellation_brings_a_coarse_silhouette_within_its_tolerance() {
     let sphere = bare_sphere();
     let exact = reference(&sphere, &Quality::interactive(), ViewMode::Shaded);
     let coarse = Quality {
-        tessellation: Tessellation { density: 4 },
+        tessellation: 4,
         ..Quality::interactive()
     };
     let adaptive = Quality {

@@ -5,6 +5,9 @@
 use super::Summary;
 use super::pareto::pareto_front;
 use super::variants::VariantKind;
+use crate::raster::Framebuffer;
+use crate::texture::srgb_to_linear;
+use glam::Vec3;
 use tiny_skia::{Color, FillRule, Paint, PathBuilder, Pixmap, Rect, Stroke, Transform};
 
 /// Which error the vertical axis shows (up is better for both).
@@ -21,8 +24,9 @@ const HEIGHT: u32 = 500;
 const MARGIN: f32 = 60.0;
 const GLYPH_SCALE: f32 = 2.0;
 
-/// The chart as straight (opaque, so also premultiplied) RGBA8 rows, WIDTH × HEIGHT.
-pub fn draw_chart(summaries: &[Summary], metric: ChartMetric) -> (u32, u32, Vec<u8>) {
+/// The chart, WIDTH × HEIGHT, as a framebuffer for the PNG writer (its 8-bit sRGB pixels decoded
+/// to linear light, which the writer encodes back to the same bytes).
+pub fn draw_chart(summaries: &[Summary], metric: ChartMetric) -> Framebuffer {
     let mut pixmap = Pixmap::new(WIDTH, HEIGHT).expect("non-zero chart size");
     pixmap.fill(Color::WHITE);
     let points: Vec<(f64, f64)> = summaries
@@ -43,7 +47,23 @@ pub fn draw_chart(summaries: &[Summary], metric: ChartMetric) -> (u32, u32, Vec<
         let (x, y) = axes.to_pixel(point);
         draw_number(&mut pixmap, x + 6.0, y - 12.0, i as u32 + 1, [40, 40, 40]);
     }
-    (WIDTH, HEIGHT, pixmap.data().to_vec())
+    to_framebuffer(&pixmap)
+}
+
+/// The opaque pixmap (so premultiplied equals straight alpha) in linear light.
+fn to_framebuffer(pixmap: &Pixmap) -> Framebuffer {
+    let decode = |c: u8| srgb_to_linear(c as f32 / 255.0);
+    let color: Vec<Vec3> = pixmap
+        .data()
+        .chunks_exact(4)
+        .map(|p| Vec3::new(decode(p[0]), decode(p[1]), decode(p[2])))
+        .collect();
+    Framebuffer {
+        width: pixmap.width(),
+        height: pixmap.height(),
+        depth: vec![0.0; color.len()],
+        color,
+    }
 }
 
 /// The error to minimise: −PSNR, or the normal error.
@@ -233,6 +253,14 @@ fn draw_number(pixmap: &mut Pixmap, x: f32, y: f32, number: u32, rgb: [u8; 3]) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn every_srgb_byte_survives_the_trip_through_linear_light() {
+        for code in 0..=255u8 {
+            let linear = srgb_to_linear(code as f32 / 255.0);
+            assert_eq!(crate::raster::linear_to_srgb8(linear), code);
+        }
+    }
 
     #[test]
     fn tick_steps_are_round_and_give_a_handful_of_ticks() {

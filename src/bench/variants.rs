@@ -1,9 +1,8 @@
 //! What the bench runs: the presets, then `interactive` with one knob changed at a time.
 
-use crate::quality::{NormalSource, PRESET_NAMES, Quality};
+use crate::quality::{NormalSource, QUALITY_NAMES, Quality, preset};
 use crate::raster::Interpolation;
 use crate::shade::{GradientMethod, NormalForm};
-use crate::surface::Tessellation;
 use crate::texture::Filter;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -22,10 +21,10 @@ pub struct Variant {
 
 /// Every preset, then every single-knob variation of `interactive`.
 pub fn variants() -> Vec<Variant> {
-    let presets = PRESET_NAMES.iter().map(|&name| Variant {
+    let presets = QUALITY_NAMES.iter().map(|&name| Variant {
         name: name.to_string(),
         kind: VariantKind::Preset,
-        quality: Quality::preset(name).expect("preset names parse"),
+        quality: preset(name).expect("every listed name is a preset"),
     });
     let knobs = knob_variations()
         .into_iter()
@@ -45,14 +44,8 @@ fn knob_variations() -> Vec<(&'static str, Quality)> {
         quality
     };
     vec![
-        (
-            "tessellation=16",
-            with(|q| q.tessellation = Tessellation { density: 16 }),
-        ),
-        (
-            "tessellation=256",
-            with(|q| q.tessellation = Tessellation { density: 256 }),
-        ),
+        ("tessellation=16", with(|q| q.tessellation = 16)),
+        ("tessellation=256", with(|q| q.tessellation = 256)),
         (
             "adaptive<0.5px",
             with(|q| q.adaptive_tolerance_px = Some(0.5)),

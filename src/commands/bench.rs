@@ -68,8 +68,7 @@ pub fn run(args: BenchArgs) -> Result<(), Error> {
     }
     let summaries = summarize(&variants, &measurements);
     if let Some(path) = &args.chart {
-        let (width, height, pixels) = draw_chart(&summaries, args.chart_metric);
-        bumpwork::export::write_png_rgba8(width, height, &pixels, path)?;
+        bumpwork::export::write_png(&draw_chart(&summaries, args.chart_metric), path)?;
     }
     let front = front_of(&summaries, args.chart_metric);
     if args.json {

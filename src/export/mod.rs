@@ -2,4 +2,4 @@
 
 mod png_file;
 
-pub use png_file::{write_png, write_png_rgba8};
+pub use png_file::write_png;

@@ -7,37 +7,8 @@ use std::path::{Path, PathBuf};
 /// directory, then renamed over the destination, so a failed or interrupted export leaves no file.
 pub fn write_png(framebuffer: &Framebuffer, path: &Path) -> Result<(), Error> {
     let pixels: Vec<u8> = framebuffer.to_srgb8().into_iter().flatten().collect();
-    let image = Image8 {
-        width: framebuffer.width,
-        height: framebuffer.height,
-        color: png::ColorType::Rgb,
-        pixels: &pixels,
-    };
-    write_atomically(&image, path)
-}
-
-/// Writes straight (not premultiplied) 8-bit sRGB RGBA rows as a PNG, atomically like
-/// `write_png`: for pictures drawn without a framebuffer, such as charts.
-pub fn write_png_rgba8(width: u32, height: u32, pixels: &[u8], path: &Path) -> Result<(), Error> {
-    let image = Image8 {
-        width,
-        height,
-        color: png::ColorType::Rgba,
-        pixels,
-    };
-    write_atomically(&image, path)
-}
-
-struct Image8<'a> {
-    width: u32,
-    height: u32,
-    color: png::ColorType,
-    pixels: &'a [u8],
-}
-
-fn write_atomically(image: &Image8, path: &Path) -> Result<(), Error> {
     let temporary = temporary_path(path);
-    let result = write_png_to(&temporary, image)
+    let result = write_png_to(&temporary, framebuffer.width, framebuffer.height, &pixels)
         .and_then(|()| std::fs::rename(&temporary, path).map_err(|e| e.to_string()));
     result.map_err(|reason| {
         let _ = std::fs::remove_file(&temporary);
@@ -45,16 +16,14 @@ fn write_atomically(image: &Image8, path: &Path) -> Result<(), Error> {
     })
 }
 
-fn write_png_to(path: &Path, image: &Image8) -> Result<(), String> {
+fn write_png_to(path: &Path, width: u32, height: u32, pixels: &[u8]) -> Result<(), String> {
     let mut encoded = Vec::new();
-    let mut encoder = png::Encoder::new(&mut encoded, image.width, image.height);
-    encoder.set_color(image.color);
+    let mut encoder = png::Encoder::new(&mut encoded, width, height);
+    encoder.set_color(png::ColorType::Rgb);
     encoder.set_depth(png::BitDepth::Eight);
     encoder.set_source_srgb(png::SrgbRenderingIntent::Perceptual);
     let mut writer = encoder.write_header().map_err(|e| e.to_string())?;
-    writer
-        .write_image_data(image.pixels)
-        .map_err(|e| e.to_string())?;
+    writer.write_image_data(pixels).map_err(|e| e.to_string())?;
     writer.finish().map_err(|e| e.to_string())?;
     let mut file = std::fs::File::create(path).map_err(|e| e.to_string())?;
     file.write_all(&encoded).map_err(|e| e.to_string())?;
