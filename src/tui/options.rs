@@ -1,5 +1,6 @@
 //! How the workbench was asked to start.
 
+use super::quality::QualityPreset;
 use crate::term::{ColorChoice, GlyphSet};
 
 #[derive(Clone, Debug)]
@@ -15,6 +16,8 @@ pub struct WorkbenchOptions {
     pub export_size: (u32, u32),
     /// Reload scene, pattern and image files when they change on disk.
     pub watch: bool,
+    /// The quality preset to start with (`Q` cycles them).
+    pub quality: QualityPreset,
 }
 
 impl Default for WorkbenchOptions {
@@ -30,6 +33,7 @@ impl Default for WorkbenchOptions {
             mouse: true,
             export_size: (1920, 1080),
             watch: true,
+            quality: QualityPreset::default(),
         }
     }
 }
