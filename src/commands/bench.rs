@@ -13,7 +13,7 @@ use std::path::PathBuf;
 #[derive(clap::Args)]
 pub struct BenchArgs {
     /// Frame size in pixels, WIDTHxHEIGHT (the reference ray caster's cost grows with it).
-    #[arg(long, default_value = "160x120", value_parser = super::parse_size)]
+    #[arg(long, default_value = "320x240", value_parser = super::parse_size)]
     size: (u32, u32),
     /// Timed frames per variant and scene (after warm-up frames); the median and min–max are shown.
     #[arg(long, default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..=1000))]
