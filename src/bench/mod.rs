@@ -11,10 +11,12 @@ pub use variants::{Variant, VariantKind, variants};
 
 use crate::measure::Timing;
 use crate::quality::Quality;
-use crate::raster::{Camera, Framebuffer, PreparedScene, Viewport, render_into};
+use crate::raster::{Camera, Framebuffer, PreparedScene, RenderTarget, Viewport, render_into};
 use crate::reference::{FrameError, ShadedAndNormals, render_reference};
 use crate::scene::Scene;
+use crate::shade::LitShader;
 use glam::Vec3;
+use std::time::Instant;
 
 /// The scenes of the default bench (all built in).
 pub const STANDARD_SCENES: [&str; 6] = [
@@ -26,8 +28,8 @@ pub const STANDARD_SCENES: [&str; 6] = [
     "wave-spheres",
 ];
 
-/// Untimed frames first: the first frames after a change of variant run measurably slower
-/// (caches, the thread pool waking).
+/// Untimed frames of each variant first: the first frames run measurably slower (caches, the
+/// thread pool waking).
 const WARMUP_FRAMES: usize = 3;
 
 /// One variant on one scene: its cost and its error.
@@ -59,36 +61,79 @@ impl Reference {
     }
 }
 
-/// Times `runs` frames of the variant (after warm-up frames) and measures its error.
-pub fn measure(
+/// One variant made ready to render on one scene.
+struct Ready<'a> {
+    variant: &'a Variant,
+    prepared: PreparedScene,
+    shader: LitShader,
+    target: RenderTarget<'a>,
+}
+
+/// Times `runs` frames of every variant on the scene and measures each one's error. The timed
+/// frames go in rounds, one frame of each variant per round (after warm-up frames), so load
+/// from other processes that comes and goes falls on all variants alike.
+pub fn measure_scene(
     scene_name: &str,
     scene: &Scene,
-    variant: &Variant,
+    variants: &[Variant],
     viewport: Viewport,
     runs: usize,
     reference: &Reference,
-) -> Measurement {
+) -> Vec<Measurement> {
     let camera: &Camera = &scene.camera;
-    let quality = &variant.quality;
-    let prepared = quality.prepare(scene.clone(), camera, viewport);
-    let mut shader = quality.shader(&prepared, camera);
-    let target = quality.target(camera, viewport);
+    let mut ready: Vec<Ready> = variants
+        .iter()
+        .map(|variant| {
+            let quality = &variant.quality;
+            let prepared = quality.prepare(scene.clone(), camera, viewport);
+            let shader = quality.shader(&prepared, camera);
+            let target = quality.target(camera, viewport);
+            Ready {
+                variant,
+                prepared,
+                shader,
+                target,
+            }
+        })
+        .collect();
+    let timings = time_in_rounds(&ready, runs);
+    ready
+        .iter_mut()
+        .zip(timings)
+        .map(|(r, timing)| {
+            let frames = ShadedAndNormals::render(&mut r.shader, |s| {
+                let mut frame = Framebuffer::new(0, 0, Vec3::ZERO);
+                render_frame(&r.prepared, &r.target, s, &mut frame);
+                frame
+            });
+            Measurement {
+                scene: scene_name.to_string(),
+                variant: r.variant.clone(),
+                triangles: r.prepared.triangle_count(),
+                timing,
+                error: frames.error_against(&reference.frames),
+            }
+        })
+        .collect()
+}
+
+/// Per variant, the timing of `runs` frames taken one per round.
+fn time_in_rounds(ready: &[Ready], runs: usize) -> Vec<Timing> {
     let mut framebuffer = Framebuffer::new(0, 0, Vec3::ZERO);
-    let timing = Timing::measure(WARMUP_FRAMES, runs, || {
-        render_frame(&prepared, &target, &shader, &mut framebuffer);
-    });
-    let frames = ShadedAndNormals::render(&mut shader, |s| {
-        let mut frame = Framebuffer::new(0, 0, Vec3::ZERO);
-        render_frame(&prepared, &target, s, &mut frame);
-        frame
-    });
-    Measurement {
-        scene: scene_name.to_string(),
-        variant: variant.clone(),
-        triangles: prepared.triangle_count(),
-        timing,
-        error: frames.error_against(&reference.frames),
+    let mut samples = vec![Vec::with_capacity(runs); ready.len()];
+    for r in ready {
+        for _ in 0..WARMUP_FRAMES {
+            render_frame(&r.prepared, &r.target, &r.shader, &mut framebuffer);
+        }
     }
+    for _ in 0..runs.max(1) {
+        for (r, times) in ready.iter().zip(&mut samples) {
+            let start = Instant::now();
+            render_frame(&r.prepared, &r.target, &r.shader, &mut framebuffer);
+            times.push(start.elapsed());
+        }
+    }
+    samples.into_iter().map(Timing::from_samples).collect()
 }
 
 /// Samples per pixel the bench renders. The supersampled renderer is being added on main;
@@ -100,8 +145,8 @@ pub const SAMPLES_RENDERED: u32 = 1;
 /// will be resolved (see `SAMPLES_RENDERED`).
 fn render_frame(
     prepared: &PreparedScene,
-    target: &crate::raster::RenderTarget,
-    shader: &crate::shade::LitShader,
+    target: &RenderTarget,
+    shader: &LitShader,
     framebuffer: &mut Framebuffer,
 ) {
     render_into(prepared, target, shader, framebuffer);

@@ -4,7 +4,7 @@
 use bumpwork::Error;
 use bumpwork::bench::{
     ChartMetric, Measurement, Reference, SAMPLES_RENDERED, STANDARD_SCENES, Summary, Variant,
-    VariantKind, draw_chart, measure, pareto_front, summarize, variants,
+    VariantKind, draw_chart, measure_scene, pareto_front, summarize, variants,
 };
 use bumpwork::raster::Viewport;
 use serde::Serialize;
@@ -15,7 +15,8 @@ pub struct BenchArgs {
     /// Frame size in pixels, WIDTHxHEIGHT (the reference ray caster's cost grows with it).
     #[arg(long, default_value = "320x240", value_parser = super::parse_size)]
     size: (u32, u32),
-    /// Timed frames per variant and scene (after warm-up frames); the median and min–max are shown.
+    /// Timed frames per variant and scene, in rounds of one frame of each variant (after warm-up
+    /// frames); the median and min–max are shown.
     #[arg(long, default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..=1000))]
     runs: u32,
     /// Comma-separated built-in scene names or scene files (default: the standard six).
@@ -61,10 +62,10 @@ pub fn run(args: BenchArgs) -> Result<(), Error> {
         eprintln!("bench: {name}: reference…");
         let reference = Reference::render(scene, viewport);
         eprintln!("bench: {name}: {} variants…", variants.len());
-        for variant in &variants {
-            let runs = args.runs as usize;
-            measurements.push(measure(name, scene, variant, viewport, runs, &reference));
-        }
+        let runs = args.runs as usize;
+        measurements.extend(measure_scene(
+            name, scene, &variants, viewport, runs, &reference,
+        ));
     }
     let summaries = summarize(&variants, &measurements);
     if let Some(path) = &args.chart {
