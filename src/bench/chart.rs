@@ -35,6 +35,7 @@ pub fn draw_chart(summaries: &[Summary], metric: ChartMetric) -> Framebuffer {
         .collect();
     let axes = Axes::fit(&points);
     axes.draw(&mut pixmap);
+    draw_units(&mut pixmap, metric);
     let front = pareto_front(&points);
     draw_front(
         &mut pixmap,
@@ -64,6 +65,23 @@ fn to_framebuffer(pixmap: &Pixmap) -> Framebuffer {
         depth: vec![0.0; color.len()],
         color,
     }
+}
+
+/// "ms" under the time axis, "dB" or "deg" over the error axis.
+fn draw_units(pixmap: &mut Pixmap, metric: ChartMetric) {
+    let (w, h) = (WIDTH as f32, HEIGHT as f32);
+    draw_text(
+        pixmap,
+        w - MARGIN - 16.0,
+        h - MARGIN + 28.0,
+        "ms",
+        [0, 0, 0],
+    );
+    let unit = match metric {
+        ChartMetric::Psnr => "dB",
+        ChartMetric::NormalDegrees => "deg",
+    };
+    draw_text(pixmap, 8.0, MARGIN - 24.0, unit, [0, 0, 0]);
 }
 
 /// The error to minimise: −PSNR, or the normal error.
@@ -231,10 +249,32 @@ const DIGITS: [[u8; 5]; 10] = [
     [7, 5, 7, 1, 7],
 ];
 
+/// The few letters the axis units need, in the same 3×5 form.
+const LETTERS: [(char, [u8; 5]); 6] = [
+    ('m', [0, 7, 7, 5, 5]),
+    ('s', [0, 7, 4, 1, 7]),
+    ('d', [1, 1, 7, 5, 7]),
+    ('B', [6, 5, 6, 5, 6]),
+    ('e', [7, 5, 7, 4, 7]),
+    ('g', [7, 5, 7, 1, 6]),
+];
+
+fn glyph(c: char) -> Option<[u8; 5]> {
+    match c.to_digit(10) {
+        Some(d) => Some(DIGITS[d as usize]),
+        None => LETTERS.iter().find(|(l, _)| *l == c).map(|(_, g)| *g),
+    }
+}
+
 fn draw_number(pixmap: &mut Pixmap, x: f32, y: f32, number: u32, rgb: [u8; 3]) {
+    draw_text(pixmap, x, y, &number.to_string(), rgb);
+}
+
+/// Digits and the letters of `LETTERS`; other characters leave a gap.
+fn draw_text(pixmap: &mut Pixmap, x: f32, y: f32, text: &str, rgb: [u8; 3]) {
     let paint = paint(rgb);
-    for (k, digit) in number.to_string().bytes().enumerate() {
-        let glyph = DIGITS[(digit - b'0') as usize];
+    for (k, c) in text.chars().enumerate() {
+        let Some(glyph) = glyph(c) else { continue };
         let left = x + k as f32 * 4.0 * GLYPH_SCALE;
         for (row, bits) in glyph.iter().enumerate() {
             for col in 0..3 {
@@ -259,6 +299,13 @@ mod tests {
         for code in 0..=255u8 {
             let linear = srgb_to_linear(code as f32 / 255.0);
             assert_eq!(crate::raster::linear_to_srgb8(linear), code);
+        }
+    }
+
+    #[test]
+    fn every_unit_letter_has_a_glyph() {
+        for c in "0123456789msdBdeg".chars() {
+            assert!(glyph(c).is_some(), "{c}");
         }
     }
 
