@@ -6,8 +6,8 @@
 
 use bumpwork::measure::Timing;
 use bumpwork::raster::{
-    Camera, Fragment, FrameObject, Framebuffer, Interpolation, PerFragment, PreparedScene,
-    RenderTarget, Viewport, frame_objects, render_into, screen_triangles,
+    Camera, Fragment, FrameObject, Framebuffer, PerFragment, PreparedScene, RenderTarget, Viewport,
+    frame_objects, render_into, screen_triangles,
 };
 use bumpwork::scene::{Light, Material, Object, Scene};
 use bumpwork::shade::LitShader;
@@ -61,14 +61,13 @@ fn main() {
     let scene = sphere_scene();
     let camera = scene.camera.clone();
     let prepared = PreparedScene::new(scene, Tessellation { density: 64 });
-    let target = RenderTarget {
-        camera: &camera,
-        viewport: Viewport {
+    let target = RenderTarget::new(
+        &camera,
+        Viewport {
             width: 1920,
             height: 1080,
         },
-        interpolation: Interpolation::PerspectiveCorrect,
-    };
+    );
     let lit = LitShader::new(&prepared.scene, &camera);
     let mut framebuffer = Framebuffer::new(1920, 1080, Vec3::ZERO);
     let one_thread = rayon::ThreadPoolBuilder::new()

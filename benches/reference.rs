@@ -4,9 +4,7 @@
 //!
 //! Run: `cargo bench --bench reference` (release; a few minutes on two cores).
 
-use bumpwork::raster::{
-    Framebuffer, Interpolation, PreparedScene, RenderTarget, Viewport, render_with,
-};
+use bumpwork::raster::{Framebuffer, PreparedScene, RenderTarget, Viewport, render_with};
 use bumpwork::reference::{FrameError, frame_error, render_reference};
 use bumpwork::scene::{PRESET_NAMES, Scene, preset};
 use bumpwork::shade::{LitShader, ViewMode};
@@ -40,11 +38,7 @@ fn render_pair(
     let prepared = PreparedScene::new(scene.clone(), Tessellation { density });
     let mut shader = LitShader::new(scene, &scene.camera);
     shader.mode = mode;
-    let target = RenderTarget {
-        camera: &scene.camera,
-        viewport: VIEWPORT,
-        interpolation: Interpolation::PerspectiveCorrect,
-    };
+    let target = RenderTarget::new(&scene.camera, VIEWPORT);
     let start = Instant::now();
     let raster = render_with(&prepared, &target, &shader).0;
     let raster_time = start.elapsed();
@@ -93,11 +87,7 @@ fn trivial_scene_at_8k() {
     };
     let prepared = PreparedScene::new(scene.clone(), Tessellation { density: 8 });
     let shader = LitShader::new(&scene, &scene.camera);
-    let target = RenderTarget {
-        camera: &scene.camera,
-        viewport,
-        interpolation: Interpolation::PerspectiveCorrect,
-    };
+    let target = RenderTarget::new(&scene.camera, viewport);
     for (name, render) in [
         (
             "raster",

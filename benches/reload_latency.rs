@@ -6,7 +6,7 @@
 //! Run: `cargo bench --bench reload_latency`.
 
 use bumpwork::measure::Timing;
-use bumpwork::raster::{Interpolation, PreparedScene, RenderTarget, Viewport, render};
+use bumpwork::raster::{PreparedScene, RenderTarget, Viewport, render};
 use bumpwork::scene::Scene;
 use bumpwork::surface::Tessellation;
 use bumpwork::watch::{DEBOUNCE, ReloadOutcome, Reloader, SceneFileSource};
@@ -50,11 +50,7 @@ fn pattern(period: u32) -> String {
 fn frame(scene: Scene) {
     let camera = scene.camera.clone();
     let prepared = PreparedScene::new(scene, Tessellation::default());
-    let target = RenderTarget {
-        camera: &camera,
-        viewport: VIEWPORT,
-        interpolation: Interpolation::PerspectiveCorrect,
-    };
+    let target = RenderTarget::new(&camera, VIEWPORT);
     std::hint::black_box(render(&prepared, &target));
 }
 

@@ -26,6 +26,9 @@ pub enum Error {
     },
     #[error("{0}")]
     InvalidArgument(String),
+    /// A signal stopped the work; nothing partial was left behind. Exit status 128 + signal.
+    #[error("interrupted by signal {0}; no file was written")]
+    Interrupted(i32),
 }
 
 impl Error {

@@ -45,6 +45,10 @@ fn main() -> ExitCode {
     };
     match run(cli) {
         Ok(()) => ExitCode::SUCCESS,
+        Err(Error::Interrupted(signal)) => {
+            eprintln!("bumpwork: {}", Error::Interrupted(signal));
+            ExitCode::from(128 + signal as u8)
+        }
         Err(e) => {
             eprintln!("bumpwork: error: {e}");
             ExitCode::FAILURE

@@ -167,12 +167,9 @@ impl Quality {
         }
     }
 
+    /// The whole `viewport`, one sample per pixel centre, with this quality's interpolation.
     pub fn target<'a>(&self, camera: &'a Camera, viewport: Viewport) -> RenderTarget<'a> {
-        RenderTarget {
-            camera,
-            viewport,
-            interpolation: self.interpolation,
-        }
+        RenderTarget::new(camera, viewport).with_interpolation(self.interpolation)
     }
 
     /// The scene's fragment program with this quality's shading knobs.

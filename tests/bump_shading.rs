@@ -1,6 +1,6 @@
 //! Bump mapping and textures as the renderer applies them: properties of whole frames.
 
-use bumpwork::raster::{Framebuffer, Interpolation, PreparedScene, RenderTarget, Viewport, render};
+use bumpwork::raster::{Framebuffer, PreparedScene, RenderTarget, Viewport, render};
 use bumpwork::scene::{Light, Scene, parse_scene, preset};
 use bumpwork::surface::Tessellation;
 use glam::{DVec3, Vec3};
@@ -9,11 +9,7 @@ use std::path::PathBuf;
 fn frame(scene: Scene, width: u32, height: u32) -> (Framebuffer, bumpwork::raster::FrameStats) {
     let camera = scene.camera.clone();
     let prepared = PreparedScene::new(scene, Tessellation { density: 32 });
-    let target = RenderTarget {
-        camera: &camera,
-        viewport: Viewport { width, height },
-        interpolation: Interpolation::PerspectiveCorrect,
-    };
+    let target = RenderTarget::new(&camera, Viewport { width, height });
     render(&prepared, &target)
 }
 

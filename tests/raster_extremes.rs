@@ -2,7 +2,7 @@
 
 mod common;
 
-use bumpwork::raster::{Framebuffer, Interpolation, PreparedScene, RenderTarget, Viewport, render};
+use bumpwork::raster::{Framebuffer, PreparedScene, RenderTarget, Viewport, render};
 use bumpwork::scene::{Light, PRESET_NAMES, Scene, preset};
 use bumpwork::surface::{Surface, Tessellation};
 use common::*;
@@ -11,11 +11,7 @@ use glam::DVec3;
 fn render_scene(scene: Scene, viewport: Viewport) -> Framebuffer {
     let camera = scene.camera.clone();
     let prepared = PreparedScene::new(scene, Tessellation { density: 16 });
-    let target = RenderTarget {
-        camera: &camera,
-        viewport,
-        interpolation: Interpolation::PerspectiveCorrect,
-    };
+    let target = RenderTarget::new(&camera, viewport);
     render(&prepared, &target).0
 }
 

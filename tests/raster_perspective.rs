@@ -111,11 +111,7 @@ fn screen_derivatives_of_uv_match_neighbouring_pixels() {
     let (scene, _) = grazing_plane_scene();
     let cam = scene.camera.clone();
     let prepared = PreparedScene::new(scene, Tessellation { density: 1 });
-    let target = RenderTarget {
-        camera: &cam,
-        viewport,
-        interpolation: Interpolation::PerspectiveCorrect,
-    };
+    let target = RenderTarget::new(&cam, viewport);
     let shader =
         PerFragment(|_: &FrameObject, f: &Fragment| Vec3::new(f.uv.x, f.duv_dx.x, f.duv_dy.y));
     let fb = render_with(&prepared, &target, &shader).0;

@@ -4,7 +4,7 @@
 mod common;
 
 use bumpwork::raster::PreparedScene;
-use bumpwork::raster::{Interpolation, RenderTarget, Viewport, frame_objects, screen_triangles};
+use bumpwork::raster::{RenderTarget, Viewport, frame_objects, screen_triangles};
 use bumpwork::scene::{Light, Material, Object, Scene};
 use bumpwork::surface::{Sphere, Surface, Tessellation};
 use common::*;
@@ -161,11 +161,7 @@ fn tessellated_sphere_front_faces_cover_its_silhouette_once() {
     let density = 32;
     let cam = scene.camera.clone();
     let prepared = PreparedScene::new(scene, Tessellation { density });
-    let target = RenderTarget {
-        camera: &cam,
-        viewport,
-        interpolation: Interpolation::PerspectiveCorrect,
-    };
+    let target = RenderTarget::new(&cam, viewport);
     let triangles = screen_triangles(&frame_objects(&prepared, &cam), &target);
     let counts = coverage(viewport, &triangles);
     let distance = cam.eye.length();

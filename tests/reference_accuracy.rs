@@ -5,7 +5,7 @@
 mod reference_support;
 
 use bumpwork::raster::{
-    Fragment, FrameObject, Interpolation, PerFragment, PreparedScene, RenderTarget, render_with,
+    Fragment, FrameObject, PerFragment, PreparedScene, RenderTarget, render_with,
 };
 use bumpwork::reference::render_reference;
 use bumpwork::scene::preset;
@@ -25,11 +25,7 @@ fn planar_scenes_give_the_same_fragments_both_ways() {
     for name in ["plane-dimples", "two-planes-textured", "image-to-triangle"] {
         let scene = preset(name).unwrap();
         let prepared = PreparedScene::new(scene.clone(), Tessellation::default());
-        let target = RenderTarget {
-            camera: &scene.camera,
-            viewport: SMALL,
-            interpolation: Interpolation::PerspectiveCorrect,
-        };
+        let target = RenderTarget::new(&scene.camera, SMALL);
         let raster = render_with(&prepared, &target, &uv_shader()).0;
         let reference = render_reference(&prepared, &scene.camera, SMALL, &uv_shader()).0;
         let mut mismatched = 0;
@@ -135,11 +131,7 @@ fn analytic_uv_derivatives_match_the_rasterizer_on_a_plane() {
     // reference's ray differentials: both are ∂(u,v)/∂(x,y) of the same projective map.
     let scene = preset("plane-checks").unwrap();
     let prepared = PreparedScene::new(scene.clone(), Tessellation::default());
-    let target = RenderTarget {
-        camera: &scene.camera,
-        viewport: SMALL,
-        interpolation: Interpolation::PerspectiveCorrect,
-    };
+    let target = RenderTarget::new(&scene.camera, SMALL);
     for dy in [false, true] {
         let raster = render_with(&prepared, &target, &derivative_shader(dy)).0;
         let reference = render_reference(&prepared, &scene.camera, SMALL, &derivative_shader(dy)).0;

@@ -2,11 +2,18 @@
 
 pub mod bench;
 pub mod check;
+mod interrupt;
+mod progress;
 pub mod render;
 pub mod view;
 
-/// Largest output side accepted; 16384² linear-light RGB is 3 GiB, the most an export should take.
-pub const MAX_SIDE: u32 = 16384;
+/// Largest output side accepted (stills are rendered in bands, so memory does not grow with it).
+pub use bumpwork::still::MAX_SIDE;
+
+/// Text from a file or the command line, safe to show in a terminal.
+pub fn sanitized(text: &str) -> String {
+    bumpwork::diagnostic::sanitize(text).into_owned()
+}
 
 pub fn parse_size(text: &str) -> Result<(u32, u32), String> {
     let expected = || {

@@ -1,29 +1,64 @@
-//! `bumpwork render`: a scene to a PNG still.
+//! `bumpwork render`: a scene to a PNG (or PPM) still at any size, supersampled, in bands; again
+//! from a still's own metadata with `--from`; or as a numbered sequence over a time range.
 
+use super::interrupt::Interrupt;
+use super::progress::RenderProgress;
 use bumpwork::Error;
-use bumpwork::raster::{PreparedScene, RenderTarget, Viewport, render};
+use bumpwork::export::metadata::{RECIPE, SCENE, read_png_text, text_of};
+use bumpwork::export::{StillFormat, StillRequest, write_still};
+use bumpwork::raster::{Interpolation, PreparedScene};
+use bumpwork::scene::Scene;
+use bumpwork::shade::ViewMode;
+use bumpwork::still::{MAX_SAMPLES, Recipe, ResolveFilter, StillSettings, Supersampling};
 use bumpwork::surface::Tessellation;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 #[derive(clap::Args)]
 pub struct RenderArgs {
-    /// A built-in scene name (see --list) or a path to a scene file (.toml).
-    #[arg(required_unless_present = "list")]
+    /// A built-in scene name (see --list), a scene file (.toml) or a pattern file (.pat).
+    #[arg(required_unless_present_any = ["list", "from"], conflicts_with = "from")]
     scene: Option<String>,
-    /// The PNG to write.
+    /// The file to write.
     #[arg(short, long, required_unless_present = "list")]
     output: Option<PathBuf>,
-    /// Output size in pixels, WIDTHxHEIGHT.
-    #[arg(long, default_value = "800x600", value_parser = super::parse_size)]
-    size: (u32, u32),
-    /// Tessellation density: cells per half turn of a curved surface.
-    #[arg(long, default_value_t = Tessellation::default().density,
-          value_parser = clap::value_parser!(u32).range(1..=4096))]
-    tessellation: u32,
+    /// Render again what a still made by bumpwork was made from (its recipe); options given
+    /// here override the recorded ones.
+    #[arg(long, value_name = "STILL.png")]
+    from: Option<PathBuf>,
+    /// Output size in pixels, WIDTHxHEIGHT [default: 800x600].
+    #[arg(long, value_parser = super::parse_size)]
+    size: Option<(u32, u32)>,
+    /// Samples per pixel, spread over the pixel and resolved in linear light [default: 1].
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=MAX_SAMPLES as i64))]
+    samples: Option<u32>,
+    /// How samples are resolved [default: tent].
+    #[arg(long, value_parser = clap::builder::PossibleValuesParser::new(ResolveFilter::NAMES))]
+    filter: Option<String>,
+    /// Tessellation density: cells per half turn of a curved surface [default: 64].
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=4096))]
+    tessellation: Option<u32>,
+    /// Scene time in seconds, for animated patterns and scrolling images [default: 0].
+    #[arg(long, allow_negative_numbers = true, value_parser = parse_time)]
+    time: Option<f64>,
+    /// Render frames from START (inclusive) to END (exclusive) as OUTPUT-0000.png, …
+    #[arg(long, value_name = "START..END", value_parser = parse_time_range, requires = "fps")]
+    time_range: Option<(f64, f64)>,
+    /// Frames per second of a --time-range sequence.
+    #[arg(long, value_parser = parse_fps, requires = "time_range")]
+    fps: Option<f64>,
+    /// What the still shows [default: shaded].
+    #[arg(long, value_parser = clap::builder::PossibleValuesParser::new(mode_names()))]
+    mode: Option<String>,
+    /// File format.
+    #[arg(long, value_enum, default_value_t = StillFormat::Png)]
+    format: StillFormat,
     /// Print the built-in scene names and exit.
     #[arg(long)]
     list: bool,
 }
+
+/// Frames a sequence may have.
+const MAX_FRAMES: u64 = 100_000;
 
 pub fn run(args: RenderArgs) -> Result<(), Error> {
     if args.list {
@@ -32,28 +67,190 @@ pub fn run(args: RenderArgs) -> Result<(), Error> {
         }
         return Ok(());
     }
-    let (Some(scene_name), Some(output)) = (args.scene, args.output) else {
-        unreachable!("clap requires both unless --list");
+    let output = args.output.clone().expect("clap requires -o unless --list");
+    let start = match &args.from {
+        Some(still) => from_still(still)?,
+        None => from_source(args.scene.as_deref().expect("clap requires a scene"))?,
     };
-    let scene = bumpwork::scene::resolve(&scene_name)?;
-    let camera = scene.camera.clone();
-    let prepared = PreparedScene::new(
-        scene,
-        Tessellation {
-            density: args.tessellation,
-        },
-    );
-    let viewport = Viewport {
-        width: args.size.0,
-        height: args.size.1,
-    };
-    let (framebuffer, _) = render(
-        &prepared,
-        &RenderTarget {
+    let settings = override_settings(start.settings, &args);
+    let camera = start.scene.camera.clone();
+    let prepared = PreparedScene::new(start.scene, settings.tessellation);
+    let interrupt = Interrupt::watch();
+    for (time, path) in frames(&args, settings.time, &output)? {
+        let settings = StillSettings { time, ..settings };
+        let recipe = Recipe::capture(&start.source, &prepared.scene, &camera, &settings);
+        let request = StillRequest {
+            prepared: &prepared,
             camera: &camera,
-            viewport,
-            interpolation: Default::default(),
+            settings,
+            scene_text: &start.scene_text,
+            recipe: &recipe,
+        };
+        render_one(&request, &path, args.format, &interrupt)?;
+    }
+    Ok(())
+}
+
+/// Where a render starts: the scene, its text and source, and the settings before options.
+struct Start {
+    source: String,
+    scene_text: String,
+    scene: Scene,
+    settings: StillSettings,
+}
+
+fn from_source(name: &str) -> Result<Start, Error> {
+    let scene = bumpwork::scene::load_source(name)?;
+    Ok(Start {
+        source: name.to_string(),
+        scene_text: bumpwork::scene::source_text(name)?,
+        settings: StillSettings {
+            size: (800, 600),
+            supersampling: Supersampling::default(),
+            tessellation: Tessellation::default(),
+            interpolation: Interpolation::PerspectiveCorrect,
+            time: 0.0,
+            mode: ViewMode::Shaded,
         },
+        scene,
+    })
+}
+
+fn from_still(still: &Path) -> Result<Start, Error> {
+    let texts = read_png_text(still)?;
+    let origin = format!("{} ({RECIPE})", still.display());
+    let recipe = Recipe::parse(text_of(&texts, RECIPE, still)?, &origin)?;
+    let scene_text = text_of(&texts, SCENE, still)?.to_string();
+    for change in recipe.changed_files() {
+        eprintln!("bumpwork: warning: {change}; the picture may differ");
+    }
+    let program = format!("bumpwork {}", env!("CARGO_PKG_VERSION"));
+    if recipe.program != program {
+        eprintln!(
+            "bumpwork: warning: the still was made by {}, this is {program}",
+            bumpwork::diagnostic::sanitize(&recipe.program)
+        );
+    }
+    let settings = recipe
+        .settings()
+        .map_err(|m| Error::Diagnostic(format!("{origin}: {m}")))?;
+    Ok(Start {
+        scene: recipe.scene(&scene_text)?,
+        source: recipe.source,
+        scene_text,
+        settings,
+    })
+}
+
+fn override_settings(base: StillSettings, args: &RenderArgs) -> StillSettings {
+    StillSettings {
+        size: args.size.unwrap_or(base.size),
+        supersampling: Supersampling {
+            samples: args.samples.unwrap_or(base.supersampling.samples),
+            filter: args
+                .filter
+                .as_deref()
+                .and_then(ResolveFilter::parse)
+                .unwrap_or(base.supersampling.filter),
+        },
+        tessellation: args
+            .tessellation
+            .map_or(base.tessellation, |density| Tessellation { density }),
+        interpolation: base.interpolation,
+        time: args.time.unwrap_or(base.time),
+        mode: args
+            .mode
+            .as_deref()
+            .and_then(|m| ViewMode::ALL.into_iter().find(|v| v.name() == m))
+            .unwrap_or(base.mode),
+    }
+}
+
+/// (time, file) of every frame: one, or a numbered sequence over the time range.
+fn frames(args: &RenderArgs, time: f64, output: &Path) -> Result<Vec<(f64, PathBuf)>, Error> {
+    let (Some((start, end)), Some(fps)) = (args.time_range, args.fps) else {
+        return Ok(vec![(time, output.to_path_buf())]);
+    };
+    let count = ((end - start) * fps).ceil();
+    if !(count >= 1.0 && count <= MAX_FRAMES as f64) {
+        return Err(Error::InvalidArgument(format!(
+            "--time-range {start}..{end} at --fps {fps} gives {count} frames; expected 1..={MAX_FRAMES}"
+        )));
+    }
+    let count = count as u64;
+    let digits = (count - 1).to_string().len().max(4);
+    Ok((0..count)
+        .map(|i| (start + i as f64 / fps, numbered(output, i, digits)))
+        .collect())
+}
+
+/// `out.png` → `out-0007.png`.
+fn numbered(output: &Path, index: u64, digits: usize) -> PathBuf {
+    let stem = output
+        .file_stem()
+        .map_or("frame".into(), |s| s.to_string_lossy().into_owned());
+    let name = match output.extension() {
+        Some(ext) => format!("{stem}-{index:0digits$}.{}", ext.to_string_lossy()),
+        None => format!("{stem}-{index:0digits$}"),
+    };
+    output.with_file_name(name)
+}
+
+fn render_one(
+    request: &StillRequest,
+    path: &Path,
+    format: StillFormat,
+    interrupt: &Interrupt,
+) -> Result<(), Error> {
+    let mut progress = RenderProgress::new(&path.display().to_string());
+    let stats = write_still(
+        request,
+        path,
+        format,
+        &mut |fraction| progress.update(fraction),
+        &|| interrupt.received(),
     );
-    bumpwork::export::write_png(&framebuffer, &output)
+    progress.finish();
+    let stats = stats?;
+    if stats.flattened > 0 {
+        eprintln!(
+            "bumpwork: warning: {} of {} fragments had no finite bump or colour value and were drawn flat",
+            stats.flattened, stats.fragments
+        );
+    }
+    Ok(())
+}
+
+fn mode_names() -> Vec<&'static str> {
+    ViewMode::ALL.iter().map(|m| m.name()).collect()
+}
+
+fn parse_time(text: &str) -> Result<f64, String> {
+    text.trim()
+        .parse::<f64>()
+        .ok()
+        .filter(|t| t.is_finite() && t.abs() <= 1e9)
+        .ok_or_else(|| format!("expected a time in seconds (|t| ≤ 1e9), got '{text}'"))
+}
+
+fn parse_fps(text: &str) -> Result<f64, String> {
+    text.trim()
+        .parse::<f64>()
+        .ok()
+        .filter(|f| f.is_finite() && *f > 0.0 && *f <= 1000.0)
+        .ok_or_else(|| format!("expected frames per second in (0, 1000], got '{text}'"))
+}
+
+fn parse_time_range(text: &str) -> Result<(f64, f64), String> {
+    let expected = || format!("expected START..END in seconds with START < END, got '{text}'");
+    let (a, b) = text.split_once("..").ok_or_else(expected)?;
+    let (start, end) = (
+        parse_time(a).map_err(|_| expected())?,
+        parse_time(b).map_err(|_| expected())?,
+    );
+    if start < end {
+        Ok((start, end))
+    } else {
+        Err(expected())
+    }
 }

@@ -1,5 +1,13 @@
-//! Writing rendered frames to files.
+//! Writing stills to files: PNG (with the recipe in text chunks) and the seed's PPM, always
+//! atomically.
 
+mod atomic;
+pub mod metadata;
 mod png_file;
+mod ppm_file;
+mod still_file;
 
-pub use png_file::write_png;
+pub use atomic::AtomicFile;
+pub use png_file::{PngStill, write_png, write_png_with_text};
+pub use ppm_file::PpmStill;
+pub use still_file::{BAND_BUDGET_BYTES, StillFormat, StillRequest, write_still};

@@ -1,38 +1,73 @@
+//! PNG output with the `png` crate: 8-bit sRGB, text chunks before the image data, rows
+//! streamed in as they are rendered.
+
+use super::atomic::AtomicFile;
 use crate::Error;
 use crate::raster::Framebuffer;
-use std::io::Write;
-use std::path::{Path, PathBuf};
+use crate::still::RowSink;
+use std::fs::File;
+use std::path::Path;
 
-/// Writes the framebuffer as an 8-bit sRGB PNG, atomically: into a temporary file in the same
-/// directory, then renamed over the destination, so a failed or interrupted export leaves no file.
+/// A PNG being written: rows go in top first; `finish` completes it and makes it appear.
+pub struct PngStill {
+    file: AtomicFile,
+    writer: png::StreamWriter<'static, File>,
+}
+
+impl PngStill {
+    /// Starts `path` as a `width` × `height` RGB PNG carrying `texts` (keyword, UTF-8 text).
+    pub fn create(
+        path: &Path,
+        (width, height): (u32, u32),
+        texts: &[(&str, String)],
+    ) -> Result<PngStill, Error> {
+        let (file, handle) = AtomicFile::create(path)?;
+        let fail = |e: png::EncodingError| Error::write(path, e);
+        let mut encoder = png::Encoder::new(handle, width, height);
+        encoder.set_color(png::ColorType::Rgb);
+        encoder.set_depth(png::BitDepth::Eight);
+        encoder.set_source_srgb(png::SrgbRenderingIntent::Perceptual);
+        for (keyword, text) in texts {
+            encoder
+                .add_itxt_chunk(keyword.to_string(), text.clone())
+                .map_err(fail)?;
+        }
+        let writer = encoder
+            .write_header()
+            .and_then(|w| w.into_stream_writer())
+            .map_err(fail)?;
+        Ok(PngStill { file, writer })
+    }
+
+    pub fn finish(self) -> Result<(), Error> {
+        let path = self.file.destination().to_path_buf();
+        self.writer.finish().map_err(|e| Error::write(&path, e))?;
+        self.file.commit()
+    }
+}
+
+impl RowSink for PngStill {
+    fn write_rows(&mut self, rgb: &[u8]) -> Result<(), String> {
+        use std::io::Write;
+        self.writer.write_all(rgb).map_err(|e| e.to_string())
+    }
+}
+
+/// Writes the framebuffer as an 8-bit sRGB PNG, atomically: a failed or interrupted export
+/// leaves no file.
 pub fn write_png(framebuffer: &Framebuffer, path: &Path) -> Result<(), Error> {
+    write_png_with_text(framebuffer, path, &[])
+}
+
+/// `write_png` with text chunks.
+pub fn write_png_with_text(
+    framebuffer: &Framebuffer,
+    path: &Path,
+    texts: &[(&str, String)],
+) -> Result<(), Error> {
     let pixels: Vec<u8> = framebuffer.to_srgb8().into_iter().flatten().collect();
-    let temporary = temporary_path(path);
-    let result = write_png_to(&temporary, framebuffer.width, framebuffer.height, &pixels)
-        .and_then(|()| std::fs::rename(&temporary, path).map_err(|e| e.to_string()));
-    result.map_err(|reason| {
-        let _ = std::fs::remove_file(&temporary);
-        Error::write(path, reason)
-    })
-}
-
-fn write_png_to(path: &Path, width: u32, height: u32, pixels: &[u8]) -> Result<(), String> {
-    let mut encoded = Vec::new();
-    let mut encoder = png::Encoder::new(&mut encoded, width, height);
-    encoder.set_color(png::ColorType::Rgb);
-    encoder.set_depth(png::BitDepth::Eight);
-    encoder.set_source_srgb(png::SrgbRenderingIntent::Perceptual);
-    let mut writer = encoder.write_header().map_err(|e| e.to_string())?;
-    writer.write_image_data(pixels).map_err(|e| e.to_string())?;
-    writer.finish().map_err(|e| e.to_string())?;
-    let mut file = std::fs::File::create(path).map_err(|e| e.to_string())?;
-    file.write_all(&encoded).map_err(|e| e.to_string())?;
-    file.sync_all().map_err(|e| e.to_string())
-}
-
-fn temporary_path(path: &Path) -> PathBuf {
-    let name = path
-        .file_name()
-        .map_or("out".into(), |n| n.to_string_lossy().into_owned());
-    path.with_file_name(format!(".{name}.{}.tmp", std::process::id()))
+    let mut png = PngStill::create(path, (framebuffer.width, framebuffer.height), texts)?;
+    png.write_rows(&pixels)
+        .map_err(|reason| Error::write(path, reason))?;
+    png.finish()
 }

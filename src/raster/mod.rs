@@ -15,6 +15,7 @@ mod pipeline;
 mod scan;
 mod setup;
 mod tile;
+mod window;
 
 pub use bin::{TILE_SIZE, TileBins};
 pub use camera::Camera;
@@ -27,3 +28,4 @@ pub use pipeline::{
 };
 pub use scan::{PixelRect, scan_triangle};
 pub use setup::{SUBPIXEL_BITS, ScreenTriangle, TrianglePlanes, Viewport};
+pub use window::ImageWindow;

@@ -5,6 +5,7 @@ use super::fragment::{FragmentShader, FrameObject};
 use super::framebuffer::Framebuffer;
 use super::setup::{ScreenTriangle, TrianglePlanes, Viewport};
 use super::tile::{StripOutput, TileBuffers, TileFrame};
+use super::window::ImageWindow;
 use crate::scene::{Material, Scene};
 use crate::shade::LitShader;
 use crate::surface::{Mesh, Surface, Tessellation};
@@ -58,8 +59,40 @@ pub struct FrameStats {
 /// Where a frame goes and how it is seen.
 pub struct RenderTarget<'a> {
     pub camera: &'a Camera,
+    /// The size of the frame rendered (the window's size when rendering part of an image).
     pub viewport: Viewport,
     pub interpolation: Interpolation,
+    /// The part of the image this frame covers and where it samples in each pixel.
+    pub window: ImageWindow,
+    /// The spacing of samples in pixels, scaling the (u,v) derivatives that pick texture detail:
+    /// 1 for one sample per pixel, ½ for 4 samples, so supersampled stills keep their detail.
+    pub footprint: f32,
+}
+
+impl<'a> RenderTarget<'a> {
+    /// The whole `viewport` seen by `camera`, one perspective-correct sample at each pixel centre.
+    pub fn new(camera: &'a Camera, viewport: Viewport) -> RenderTarget<'a> {
+        RenderTarget {
+            camera,
+            viewport,
+            interpolation: Interpolation::PerspectiveCorrect,
+            window: ImageWindow::whole(viewport),
+            footprint: 1.0,
+        }
+    }
+
+    pub fn with_interpolation(self, interpolation: Interpolation) -> RenderTarget<'a> {
+        RenderTarget {
+            interpolation,
+            ..self
+        }
+    }
+
+    /// Camera-relative world positions to this frame's clip space.
+    pub fn view_projection(&self) -> Mat4 {
+        self.window.clip_transform(self.viewport)
+            * self.camera.view_projection(self.window.full.aspect())
+    }
 }
 
 /// How (u,v) is interpolated across a triangle in screen space.
@@ -92,7 +125,7 @@ pub fn frame_objects<'a>(prepared: &'a PreparedScene, camera: &Camera) -> Vec<Fr
 
 /// Transforms, culls, clips and sets up every triangle of the scene, in submission order.
 pub fn screen_triangles(objects: &[FrameObject], target: &RenderTarget) -> Vec<ScreenTriangle> {
-    let view_projection = target.camera.view_projection(target.viewport.aspect());
+    let view_projection = target.view_projection();
     objects
         .iter()
         .enumerate()
@@ -128,6 +161,7 @@ pub fn render_into(
         objects: &objects,
         shader,
         perspective: target.interpolation == Interpolation::PerspectiveCorrect,
+        footprint: target.footprint,
     };
     let background = prepared.scene.background;
     framebuffer.resize(viewport.width, viewport.height);
@@ -178,11 +212,7 @@ fn object_triangles(
     target: &RenderTarget,
     view_projection: Mat4,
 ) -> Vec<ScreenTriangle> {
-    let RenderTarget {
-        camera,
-        viewport,
-        interpolation,
-    } = *target;
+    let (camera, viewport, interpolation) = (target.camera, target.viewport, target.interpolation);
     let mesh = &object.prepared.mesh;
     let clip_positions: Vec<Vec4> = mesh
         .positions

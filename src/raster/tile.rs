@@ -110,7 +110,8 @@ impl TileBuffers {
                     }
                     index => {
                         let t = &triangles[index as usize];
-                        self.fragments.push(fragment(t, x, y, frame.perspective));
+                        self.fragments
+                            .push(fragment(t, x, y, frame.perspective, frame.footprint));
                         self.pixels.push(pixel as u32);
                     }
                 }
@@ -136,12 +137,14 @@ pub struct TileFrame<'a, S> {
     pub objects: &'a [FrameObject<'a>],
     pub shader: &'a S,
     pub perspective: bool,
+    /// Sample spacing in pixels: scales the (u,v) derivatives (see `RenderTarget::footprint`).
+    pub footprint: f32,
 }
 
 /// The fragment at pixel (x, y) of a triangle: (u,v) and its screen derivatives from the
 /// interpolated planes (for u = U/Q with U = u/w and Q = 1/w: ∂u/∂x = (U_x − u·Q_x)/Q).
 #[inline]
-fn fragment(t: &ScreenTriangle, x: u32, y: u32, perspective: bool) -> Fragment {
+fn fragment(t: &ScreenTriangle, x: u32, y: u32, perspective: bool, footprint: f32) -> Fragment {
     let offset = pixel_offset(t, x, y);
     let q = t.inv_w.at(offset);
     let w = 1.0 / q;
@@ -161,8 +164,8 @@ fn fragment(t: &ScreenTriangle, x: u32, y: u32, perspective: bool) -> Fragment {
     Fragment {
         object: t.object,
         uv,
-        duv_dx,
-        duv_dy,
+        duv_dx: duv_dx * footprint,
+        duv_dy: duv_dy * footprint,
         depth: w,
         x,
         y,

@@ -20,7 +20,7 @@ use std::sync::Arc;
 /// The `bump = {…}` or `texture = {…}` table of an object: exactly one of `pattern` and `image`,
 /// and where it sits. One type for both (rather than a shared part flattened into two) so serde
 /// keeps every field's line and column for error messages.
-#[derive(Clone, Debug, Default, Serialize, Deserialize)]
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, rename_all = "kebab-case")]
 pub struct BindingFile {
     /// A built-in pattern name or a `.pat` file (bump: `height` or `slope`; texture: `color`).

@@ -171,27 +171,33 @@ macro_rules! checked {
 const MAX_COORDINATE: f64 = 1e12;
 
 checked!(Finite(f32) from "f64" f64, "a finite number",
-    check |v| v.is_finite() && v.abs() < 1e30, make v as f32, back |x| x.0 as f64);
+    check |v| v.is_finite() && v.abs() < 1e30, make v as f32, back |x| shortest(x.0));
 checked!(Positive(f32) from "f64" f64, "a positive number",
-    check |v| v.is_finite() && v < 1e30 && (v as f32) > 0.0, make v as f32, back |x| x.0 as f64);
+    check |v| v.is_finite() && v < 1e30 && (v as f32) > 0.0, make v as f32, back |x| shortest(x.0));
 checked!(NonNegative(f32) from "f64" f64, "a number ≥ 0",
-    check |v| (0.0..1e30).contains(&v), make v as f32, back |x| x.0 as f64);
+    check |v| (0.0..1e30).contains(&v), make v as f32, back |x| shortest(x.0));
 checked!(
     /// Degrees, strictly between 0 and 180.
     FieldOfView(f32) from "f64" f64, "an angle in degrees between 0 and 180",
-    check |v| v > 0.0 && v < 180.0, make v as f32, back |x| x.0 as f64);
+    check |v| v > 0.0 && v < 180.0, make v as f32, back |x| shortest(x.0));
 checked!(
     /// Degrees, strictly between 0 and 90.
     HalfAngle(f32) from "f64" f64, "an angle in degrees between 0 and 90",
-    check |v| v > 0.0 && v < 90.0, make v as f32, back |x| x.0 as f64);
+    check |v| v > 0.0 && v < 90.0, make v as f32, back |x| shortest(x.0));
 checked!(Point(DVec3) from "[f64; 3]" [f64; 3], "a point: three finite numbers",
     check |v| v.iter().all(|c| c.abs() < MAX_COORDINATE), make DVec3::from_array(v), back |x| x.0.to_array());
 checked!(Direction(Vec3) from "[f64; 3]" [f64; 3], "a direction: three finite numbers, not all zero",
     check |v| v.iter().all(|c| c.abs() < 1e30) && v.iter().any(|&c| c as f32 != 0.0),
-    make DVec3::from_array(v).as_vec3(), back |x| x.0.as_dvec3().to_array());
+    make DVec3::from_array(v).as_vec3(), back |x| x.0.to_array().map(shortest));
 checked!(Rgb(Vec3) from "[f64; 3]" [f64; 3], "a linear RGB colour: three numbers ≥ 0",
     check |v| v.iter().all(|&c| (0.0..1e30).contains(&c)),
-    make DVec3::from_array(v).as_vec3(), back |x| x.0.as_dvec3().to_array());
+    make DVec3::from_array(v).as_vec3(), back |x| x.0.to_array().map(shortest));
+
+/// The f64 that prints like the f32 (0.02, not 0.019999999552965164): files written from scenes
+/// stay readable, and read back to the same f32.
+fn shortest(x: f32) -> f64 {
+    x.to_string().parse().unwrap_or(x as f64)
+}
 
 fn black() -> Rgb {
     Rgb(Vec3::ZERO)

@@ -5,13 +5,15 @@ pub mod dependencies;
 mod file;
 mod material;
 mod presets;
+mod source;
 
 pub use binding_file::{BindingFile, FilterFile, MappingKind, WrapFile};
-pub use file::{MAX_SCENE_FILE_BYTES, SceneFile, load_scene_file, parse_scene};
+pub use file::{Finite, MAX_SCENE_FILE_BYTES, Positive, SceneFile, load_scene_file, parse_scene};
 pub use material::{
     Bump, BumpSource, ImageHeight, ImageTexture, Material, PatternBinding, Placement, Texturing,
 };
 pub use presets::{PRESET_NAMES, preset, preset_file};
+pub use source::{load_source, source_text};
 
 use crate::raster::Camera;
 use crate::surface::Surface;

@@ -86,7 +86,7 @@ impl App {
             return Err(Error::InvalidArgument("no scene to show".into()));
         }
         for name in &options.scenes[1..] {
-            super::source::load_source(name)?;
+            crate::scene::load_source(name)?;
         }
         let (scene, reloader) = open_source(&options.scenes[0], options.watch)?;
         let quality = options.quality;

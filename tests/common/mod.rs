@@ -56,11 +56,7 @@ pub fn render_uv(
 ) -> Framebuffer {
     let camera = scene.camera.clone();
     let prepared = PreparedScene::new(scene, Tessellation { density });
-    let target = RenderTarget {
-        camera: &camera,
-        viewport,
-        interpolation,
-    };
+    let target = RenderTarget::new(&camera, viewport).with_interpolation(interpolation);
     render_with(&prepared, &target, &uv_shader()).0
 }
 

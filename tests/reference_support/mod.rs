@@ -1,9 +1,7 @@
 //! Helpers shared by the reference renderer's tests: render a scene both ways, compare.
 #![allow(dead_code)]
 
-use bumpwork::raster::{
-    Camera, Framebuffer, Interpolation, PreparedScene, RenderTarget, Viewport, render_with,
-};
+use bumpwork::raster::{Camera, Framebuffer, PreparedScene, RenderTarget, Viewport, render_with};
 use bumpwork::reference::{FrameError, ShadedAndNormals, render_reference};
 use bumpwork::scene::Scene;
 use bumpwork::shade::LitShader;
@@ -30,11 +28,7 @@ pub fn render_both(
     let camera = &scene.camera;
     let mut shader = LitShader::new(scene, camera);
     configure(&mut shader);
-    let target = RenderTarget {
-        camera,
-        viewport,
-        interpolation: Interpolation::PerspectiveCorrect,
-    };
+    let target = RenderTarget::new(camera, viewport);
     FramePair {
         raster: render_with(&prepared, &target, &shader).0,
         reference: render_reference(&prepared, camera, viewport, &shader).0,
@@ -46,11 +40,7 @@ pub fn raster_error(scene: &Scene, viewport: Viewport, density: u32) -> FrameErr
     let prepared = PreparedScene::new(scene.clone(), Tessellation { density });
     let camera = &scene.camera;
     let mut shader = LitShader::new(scene, camera);
-    let target = RenderTarget {
-        camera,
-        viewport,
-        interpolation: Interpolation::PerspectiveCorrect,
-    };
+    let target = RenderTarget::new(camera, viewport);
     let raster = ShadedAndNormals::render(&mut shader, |s| render_with(&prepared, &target, s).0);
     let reference = ShadedAndNormals::render(&mut shader, |s| {
         render_reference(&prepared, camera, viewport, s).0

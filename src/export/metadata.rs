@@ -1,0 +1,52 @@
+//! The text chunks a still carries, and reading them back from any PNG.
+
+use crate::Error;
+use std::io::BufReader;
+use std::path::Path;
+
+/// The program and version (a registered PNG keyword).
+pub const SOFTWARE: &str = "Software";
+/// The scene as the text of a scene file.
+pub const SCENE: &str = "bumpwork-scene";
+/// The recipe: source, settings, camera, live edits, file hashes (TOML).
+pub const RECIPE: &str = "bumpwork-recipe";
+
+/// A PNG's text chunks (tEXt, zTXt and iTXt) as (keyword, text), in file order by kind.
+pub fn read_png_text(path: &Path) -> Result<Vec<(String, String)>, Error> {
+    let file = std::fs::File::open(path).map_err(|e| Error::read(path, e))?;
+    let fail = |e: png::DecodingError| Error::read(path, format!("not a readable PNG: {e}"));
+    let mut decoder = png::Decoder::new(BufReader::new(file));
+    decoder.set_ignore_text_chunk(false);
+    let reader = decoder.read_info().map_err(fail)?;
+    let info = reader.info();
+    let mut texts: Vec<(String, String)> = info
+        .uncompressed_latin1_text
+        .iter()
+        .map(|c| (c.keyword.clone(), c.text.clone()))
+        .collect();
+    for chunk in &info.compressed_latin1_text {
+        texts.push((chunk.keyword.clone(), chunk.get_text().map_err(fail)?));
+    }
+    for chunk in &info.utf8_text {
+        texts.push((chunk.keyword.clone(), chunk.get_text().map_err(fail)?));
+    }
+    Ok(texts)
+}
+
+/// The text of `keyword`, or a message saying the PNG is not a bumpwork still.
+pub fn text_of<'a>(
+    texts: &'a [(String, String)],
+    keyword: &str,
+    path: &Path,
+) -> Result<&'a str, Error> {
+    texts
+        .iter()
+        .find(|(k, _)| k == keyword)
+        .map(|(_, t)| t.as_str())
+        .ok_or_else(|| {
+            Error::read(
+                path,
+                format!("no '{keyword}' text chunk: not a still made by bumpwork render"),
+            )
+        })
+}

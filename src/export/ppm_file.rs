@@ -1,0 +1,35 @@
+//! The seed's image format: binary PPM (P6), 8-bit sRGB, streamed row by row.
+
+use super::atomic::AtomicFile;
+use crate::Error;
+use crate::still::RowSink;
+use std::fs::File;
+use std::io::{BufWriter, Write};
+use std::path::Path;
+
+pub struct PpmStill {
+    file: AtomicFile,
+    writer: BufWriter<File>,
+}
+
+impl PpmStill {
+    pub fn create(path: &Path, (width, height): (u32, u32)) -> Result<PpmStill, Error> {
+        let (file, handle) = AtomicFile::create(path)?;
+        let mut writer = BufWriter::new(handle);
+        write!(writer, "P6\n{width} {height}\n255\n").map_err(|e| Error::write(path, e))?;
+        Ok(PpmStill { file, writer })
+    }
+
+    pub fn finish(mut self) -> Result<(), Error> {
+        let path = self.file.destination().to_path_buf();
+        self.writer.flush().map_err(|e| Error::write(&path, e))?;
+        drop(self.writer);
+        self.file.commit()
+    }
+}
+
+impl RowSink for PpmStill {
+    fn write_rows(&mut self, rgb: &[u8]) -> Result<(), String> {
+        self.writer.write_all(rgb).map_err(|e| e.to_string())
+    }
+}

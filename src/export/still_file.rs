@@ -1,0 +1,86 @@
+//! A still rendered straight into a file: bands streamed into a PNG (carrying its recipe) or a
+//! PPM, so memory is bounded by the band budget whatever the size.
+
+use super::metadata::{RECIPE, SCENE, SOFTWARE};
+use super::{PngStill, PpmStill};
+use crate::Error;
+use crate::raster::{Camera, FrameStats, PreparedScene, Viewport};
+use crate::shade::LitShader;
+use crate::still::{BandJob, Recipe, RowSink, StillSettings, StillStop, stream_still};
+use std::path::Path;
+
+/// Band memory for a streamed still: a 7680-wide band of 576 rows at 28 bytes a pixel.
+pub const BAND_BUDGET_BYTES: u64 = 128 << 20;
+
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
+pub enum StillFormat {
+    /// PNG with the recipe in text chunks (`render --from` reads it back).
+    #[default]
+    Png,
+    /// The seed's binary PPM (P6): pixels only.
+    Ppm,
+}
+
+/// What to render and what to record about it.
+pub struct StillRequest<'a> {
+    pub prepared: &'a PreparedScene,
+    pub camera: &'a Camera,
+    pub settings: StillSettings,
+    /// The scene as text and the recipe, for the PNG's metadata.
+    pub scene_text: &'a str,
+    pub recipe: &'a Recipe,
+}
+
+/// Renders `request` into `path`. `progress` hears the fraction done; `interrupted` is asked between
+/// passes and, when it names a signal, the render stops and no file is left.
+pub fn write_still(
+    request: &StillRequest,
+    path: &Path,
+    format: StillFormat,
+    progress: &mut dyn FnMut(f64),
+    interrupted: &dyn Fn() -> Option<i32>,
+) -> Result<FrameStats, Error> {
+    let settings = &request.settings;
+    let mut shader = LitShader::new(&request.prepared.scene, request.camera);
+    shader.mode = settings.mode;
+    shader.time = settings.time;
+    let job = BandJob {
+        prepared: request.prepared,
+        camera: request.camera,
+        full: Viewport {
+            width: settings.size.0,
+            height: settings.size.1,
+        },
+        shader: &shader,
+        supersampling: settings.supersampling,
+        interpolation: settings.interpolation,
+    };
+    let keep_going = || interrupted().is_none();
+    let mut stream = |sink: &mut dyn RowSink| {
+        stream_still(&job, BAND_BUDGET_BYTES, sink, progress, &keep_going).map_err(
+            |stop| match stop {
+                StillStop::Cancelled => Error::Interrupted(interrupted().unwrap_or(2)),
+                StillStop::Write(reason) => Error::write(path, reason),
+            },
+        )
+    };
+    match format {
+        StillFormat::Png => {
+            let texts = [
+                (SOFTWARE, request.recipe.program.clone()),
+                (SCENE, request.scene_text.to_string()),
+                (RECIPE, request.recipe.to_toml()),
+            ];
+            let mut png = PngStill::create(path, settings.size, &texts)?;
+            let stats = stream(&mut png)?;
+            png.finish()?;
+            Ok(stats)
+        }
+        StillFormat::Ppm => {
+            let mut ppm = PpmStill::create(path, settings.size)?;
+            let stats = stream(&mut ppm)?;
+            ppm.finish()?;
+            Ok(stats)
+        }
+    }
+}

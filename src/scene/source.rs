@@ -1,0 +1,78 @@
+//! Where a scene comes from: a built-in name, a scene file, or a pattern file shown on the
+//! sphere-on-plane scene; and the scene's text, as a file would hold it.
+
+use super::{BumpSource, MAX_SCENE_FILE_BYTES, PatternBinding, Scene, Texturing};
+use crate::Error;
+use crate::pattern::{OutputKind, Pattern};
+use std::path::Path;
+
+/// The scene a pattern file is shown on: both a plane and a sphere, the pattern on each.
+const PATTERN_STAGE: &str = "sphere-on-plane-dimples";
+
+/// Loads the scene `name` names: a `.pat` file goes on the stage scene, anything else is a
+/// built-in scene or a scene file.
+pub fn load_source(name: &str) -> Result<Scene, Error> {
+    if !name.ends_with(".pat") {
+        return super::resolve(name);
+    }
+    let pattern = Pattern::load(Path::new(name)).map_err(|e| Error::Diagnostic(e.to_string()))?;
+    let mut scene = super::resolve(PATTERN_STAGE)?;
+    let file_name = Path::new(name).file_name().map(|n| n.to_string_lossy());
+    scene.name = file_name.map_or_else(|| name.to_string(), |n| n.into_owned());
+    for object in &mut scene.objects {
+        let binding = PatternBinding {
+            name: name.to_string(),
+            params: pattern.params().iter().map(|p| p.default).collect(),
+            pattern: pattern.clone(),
+            placement: Default::default(),
+        };
+        match (pattern.output(), &mut object.material.bump) {
+            (OutputKind::Color, _) => object.material.texture = Some(Texturing::Pattern(binding)),
+            (_, Some(bump)) => bump.source = BumpSource::Pattern(binding),
+            (_, None) => {}
+        }
+    }
+    Ok(scene)
+}
+
+/// The text of the scene `name` names, as a scene file: the file itself, or a built-in scene
+/// (the stage scene for a pattern file) printed as one.
+pub fn source_text(name: &str) -> Result<String, Error> {
+    let preset = if name.ends_with(".pat") {
+        PATTERN_STAGE
+    } else {
+        name
+    };
+    match super::preset_file(preset) {
+        Some(file) => Ok(file.to_toml()),
+        None => crate::read_text_limited(Path::new(name), MAX_SCENE_FILE_BYTES),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_pattern_file_is_shown_on_every_bumped_object_and_errors_name_the_place() {
+        let dir = std::env::temp_dir().join(format!("bumpwork-source-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let good = dir.join("bumps.pat");
+        std::fs::write(
+            &good,
+            "param period = 20 in 2..100\nheight = sin(u / period)\n",
+        )
+        .unwrap();
+        let scene = load_source(good.to_str().unwrap()).unwrap();
+        let bumped = scene
+            .objects
+            .iter()
+            .filter_map(|o| o.material.bump.as_ref());
+        assert!(bumped.count() > 0);
+        let bad = dir.join("bad.pat");
+        std::fs::write(&bad, "height = u + )\n").unwrap();
+        let message = load_source(bad.to_str().unwrap()).unwrap_err().to_string();
+        assert!(message.contains("bad.pat:1:"), "{message}");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}

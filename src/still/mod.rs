@@ -1,0 +1,12 @@
+//! Stills: a scene rendered at any size with supersampling, in bands so memory stays bounded,
+//! and the recipe that lets a still be rendered again from its own metadata.
+
+mod bands;
+mod recipe;
+mod samples;
+mod stream;
+
+pub use bands::{BandBuffers, BandJob, band_rows, render_supersampled};
+pub use recipe::{FileHash, MAX_SIDE, ObjectState, Recipe, RecipeCamera, StillSettings};
+pub use samples::{MAX_SAMPLES, ResolveFilter, Supersampling};
+pub use stream::{RowSink, StillStop, stream_still};

@@ -1,0 +1,404 @@
+//! What a still was made from, carried in its own PNG so `render --from` can make it again: the
+//! scene's source and text, every object's live bump and texture patterns with their parameter
+//! values, the camera, the render settings, and a content hash of each file the scene reads.
+
+use super::samples::{MAX_SAMPLES, ResolveFilter, Supersampling};
+use crate::Error;
+use crate::raster::{Camera, Interpolation};
+use crate::scene::{
+    BindingFile, BumpSource, Finite, Material, PatternBinding, Positive, Scene, Texturing,
+};
+use crate::shade::ViewMode;
+use crate::surface::Tessellation;
+use glam::{DVec3, Vec3};
+use serde::{Deserialize, Serialize};
+use std::path::{Path, PathBuf};
+
+/// The largest still side in pixels.
+pub const MAX_SIDE: u32 = 16384;
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, rename_all = "kebab-case")]
+pub struct Recipe {
+    /// The program and version that made the still, e.g. "bumpwork 0.1.0".
+    pub program: String,
+    /// A built-in scene name, or the absolute path of the scene or pattern file.
+    pub source: String,
+    pub width: u32,
+    pub height: u32,
+    pub samples: u32,
+    pub filter: String,
+    pub tessellation: u32,
+    /// Affine (rather than perspective-correct) texture coordinates.
+    #[serde(default)]
+    pub affine: bool,
+    /// Scene time in seconds (animated patterns, scrolling images).
+    pub time: f64,
+    pub mode: String,
+    pub camera: RecipeCamera,
+    #[serde(default, rename = "object")]
+    pub objects: Vec<ObjectState>,
+    #[serde(default, rename = "file")]
+    pub files: Vec<FileHash>,
+}
+
+/// The camera exactly: f64 eye and target, f32 the rest (TOML round-trips both exactly).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, rename_all = "kebab-case")]
+pub struct RecipeCamera {
+    pub eye: [f64; 3],
+    pub target: [f64; 3],
+    pub up: [f32; 3],
+    pub fov: f32,
+    pub near: f32,
+    pub far: f32,
+}
+
+/// One object's live material edits: its bump and texture bindings where they are patterns
+/// (name, parameter values, placement), and its bump's strength and sign whatever the source.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, rename_all = "kebab-case")]
+pub struct ObjectState {
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub bump: Option<BindingFile>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub texture: Option<BindingFile>,
+}
+
+/// A file the scene reads and its FNV-1a 64-bit content hash, to tell whether it changed.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, rename_all = "kebab-case")]
+pub struct FileHash {
+    pub path: String,
+    pub fnv1a64: String,
+}
+
+/// The render settings a recipe records besides the scene and camera.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StillSettings {
+    pub size: (u32, u32),
+    pub supersampling: Supersampling,
+    pub tessellation: Tessellation,
+    pub interpolation: Interpolation,
+    pub time: f64,
+    pub mode: ViewMode,
+}
+
+impl Recipe {
+    /// The recipe of `scene` (as live, edits included) loaded from `source` and seen by `camera`.
+    pub fn capture(
+        source: &str,
+        scene: &Scene,
+        camera: &Camera,
+        settings: &StillSettings,
+    ) -> Recipe {
+        let base = source_directory(source);
+        let objects = scene
+            .objects
+            .iter()
+            .map(|o| object_state(&o.material, &base))
+            .collect();
+        Recipe {
+            program: program(),
+            source: absolute_source(source),
+            width: settings.size.0,
+            height: settings.size.1,
+            samples: settings.supersampling.samples,
+            filter: settings.supersampling.filter.name().into(),
+            tessellation: settings.tessellation.density,
+            affine: settings.interpolation == Interpolation::Affine,
+            time: settings.time,
+            mode: settings.mode.name().into(),
+            camera: RecipeCamera::of(camera),
+            files: file_hashes(scene, &base),
+            objects,
+        }
+    }
+
+    pub fn to_toml(&self) -> String {
+        toml::to_string(self).expect("a recipe holds only TOML values")
+    }
+
+    /// Parses and checks a recipe; `origin` names where it came from in messages.
+    pub fn parse(text: &str, origin: &str) -> Result<Recipe, Error> {
+        let recipe: Recipe = toml::from_str(text).map_err(|e| {
+            let offset = e.span().map_or(0, |s| s.start);
+            Error::Diagnostic(crate::diagnostic::render(origin, text, offset, e.message()))
+        })?;
+        recipe
+            .settings()
+            .map(|_| recipe.clone())
+            .map_err(|m| Error::Diagnostic(format!("{}: {m}", crate::diagnostic::sanitize(origin))))
+    }
+
+    /// The checked render settings.
+    pub fn settings(&self) -> Result<StillSettings, String> {
+        let side = |v: u32| (1..=MAX_SIDE).contains(&v);
+        if !side(self.width) || !side(self.height) {
+            return Err(format!(
+                "size {}x{} is outside 1..={MAX_SIDE}",
+                self.width, self.height
+            ));
+        }
+        if !(1..=MAX_SAMPLES).contains(&self.samples) {
+            return Err(format!(
+                "samples {} is outside 1..={MAX_SAMPLES}",
+                self.samples
+            ));
+        }
+        if !(1..=4096).contains(&self.tessellation) {
+            return Err(format!(
+                "tessellation {} is outside 1..=4096",
+                self.tessellation
+            ));
+        }
+        if !self.time.is_finite() {
+            return Err("time is not a finite number".into());
+        }
+        let filter = ResolveFilter::parse(&self.filter)
+            .ok_or_else(|| format!("unknown filter '{}'", self.filter))?;
+        let mode = ViewMode::ALL
+            .into_iter()
+            .find(|m| m.name() == self.mode)
+            .ok_or_else(|| format!("unknown view mode '{}'", self.mode))?;
+        Ok(StillSettings {
+            size: (self.width, self.height),
+            supersampling: Supersampling {
+                samples: self.samples,
+                filter,
+            },
+            tessellation: Tessellation {
+                density: self.tessellation,
+            },
+            interpolation: if self.affine {
+                Interpolation::Affine
+            } else {
+                Interpolation::PerspectiveCorrect
+            },
+            time: self.time,
+            mode,
+        })
+    }
+
+    /// Rebuilds the scene from its text (as recorded) with the recorded edits and camera.
+    pub fn scene(&self, scene_text: &str) -> Result<Scene, Error> {
+        let origin = if Path::new(&self.source).is_absolute() && !self.source.ends_with(".pat") {
+            self.source.clone()
+        } else {
+            "scene".to_string()
+        };
+        let mut scene = crate::scene::parse_scene(scene_text, &origin)?;
+        if scene.objects.len() != self.objects.len() {
+            return Err(Error::Diagnostic(format!(
+                "the recorded scene has {} objects but the recipe describes {}",
+                scene.objects.len(),
+                self.objects.len()
+            )));
+        }
+        let base = source_directory(&self.source);
+        for (index, (object, state)) in scene.objects.iter_mut().zip(&self.objects).enumerate() {
+            apply_state(object, state, &base)
+                .map_err(|e| Error::Diagnostic(format!("recipe object {}: {}", index + 1, e)))?;
+        }
+        scene.camera = self.camera.to_camera()?;
+        Ok(scene)
+    }
+
+    /// Files whose content is no longer what the still was made from, as messages.
+    pub fn changed_files(&self) -> Vec<String> {
+        self.files
+            .iter()
+            .filter_map(|f| match std::fs::read(&f.path) {
+                Ok(bytes) if hex(fnv1a64(&bytes)) == f.fnv1a64 => None,
+                Ok(_) => Some(format!("{} has changed since the still was made", f.path)),
+                Err(e) => Some(format!("{} cannot be read: {e}", f.path)),
+            })
+            .map(|m| crate::diagnostic::sanitize(&m).into_owned())
+            .collect()
+    }
+}
+
+impl RecipeCamera {
+    fn of(camera: &Camera) -> RecipeCamera {
+        RecipeCamera {
+            eye: camera.eye.to_array(),
+            target: camera.target.to_array(),
+            up: camera.up.to_array(),
+            fov: camera.vfov_degrees,
+            near: camera.near,
+            far: camera.far,
+        }
+    }
+
+    fn to_camera(&self) -> Result<Camera, Error> {
+        let finite = self.eye.iter().chain(&self.target).all(|c| c.is_finite())
+            && self.up.iter().all(|c| c.is_finite());
+        let sane = finite
+            && self.fov > 0.0
+            && self.fov < 180.0
+            && self.near > 0.0
+            && self.near < self.far
+            && self.far.is_finite();
+        if !sane {
+            return Err(Error::Diagnostic(
+                "the recipe's camera has non-finite values or a bad fov/near/far".into(),
+            ));
+        }
+        Ok(Camera {
+            eye: DVec3::from_array(self.eye),
+            target: DVec3::from_array(self.target),
+            up: Vec3::from_array(self.up),
+            vfov_degrees: self.fov,
+            near: self.near,
+            far: self.far,
+        })
+    }
+}
+
+fn program() -> String {
+    format!("bumpwork {}", env!("CARGO_PKG_VERSION"))
+}
+
+/// A built-in name stays as it is; a file becomes an absolute path.
+fn absolute_source(source: &str) -> String {
+    if crate::scene::preset(source).is_some() {
+        return source.to_string();
+    }
+    std::fs::canonicalize(source).map_or_else(|_| source.to_string(), |p| p.display().to_string())
+}
+
+/// The directory a source's relative pattern and image names are resolved against.
+fn source_directory(source: &str) -> PathBuf {
+    let path = Path::new(source);
+    if crate::scene::preset(source).is_some() || source.ends_with(".pat") {
+        return PathBuf::from(".");
+    }
+    path.parent()
+        .filter(|p| !p.as_os_str().is_empty())
+        .map_or_else(|| PathBuf::from("."), Path::to_path_buf)
+}
+
+/// A pattern or image name as an absolute path when it names a file, else (built-in) as it is.
+fn absolute_name(name: &str, base: &Path) -> String {
+    let path = base.join(name);
+    if path.is_file() {
+        std::fs::canonicalize(&path).map_or_else(|_| name.to_string(), |p| p.display().to_string())
+    } else {
+        name.to_string()
+    }
+}
+
+fn object_state(material: &Material, base: &Path) -> ObjectState {
+    let bump = material.bump.as_ref().map(|bump| {
+        let mut state = match &bump.source {
+            BumpSource::Pattern(binding) => pattern_state(binding, base),
+            BumpSource::Image(_) => BindingFile::default(),
+        };
+        state.strength = Some(Finite(bump.strength));
+        state.invert = Some(bump.invert);
+        state
+    });
+    let texture = match &material.texture {
+        Some(Texturing::Pattern(binding)) => Some(pattern_state(binding, base)),
+        _ => None,
+    };
+    ObjectState { bump, texture }
+}
+
+fn pattern_state(binding: &PatternBinding, base: &Path) -> BindingFile {
+    let p = &binding.placement;
+    BindingFile {
+        pattern: Some(absolute_name(&binding.name, base)),
+        params: binding
+            .pattern
+            .params()
+            .iter()
+            .zip(&binding.params)
+            .map(|(param, &value)| (param.name.clone(), value as f64))
+            .collect(),
+        scale: Some([Positive(p.scale.x), Positive(p.scale.y)]),
+        rotate: Some(Finite(p.rotate_degrees)),
+        offset: Some([Finite(p.offset.x), Finite(p.offset.y)]),
+        ..BindingFile::default()
+    }
+}
+
+fn apply_state(
+    object: &mut crate::scene::Object,
+    state: &ObjectState,
+    base: &Path,
+) -> Result<(), String> {
+    let surface = &object.surface;
+    let material = &mut object.material;
+    if let Some(bump) = &state.bump {
+        if bump.pattern.is_some() {
+            material.bump = Some(bump.load_bump(surface, base)?);
+        } else if let Some(live) = &mut material.bump {
+            live.strength = bump.strength.map_or(live.strength, |s| s.0);
+            live.invert = bump.invert.unwrap_or(live.invert);
+        }
+    }
+    if let Some(texture) = state.texture.as_ref().filter(|t| t.pattern.is_some()) {
+        material.texture = Some(texture.load_texture(surface, base)?);
+    }
+    Ok(())
+}
+
+/// Every pattern and image file the live scene reads, hashed.
+fn file_hashes(scene: &Scene, base: &Path) -> Vec<FileHash> {
+    let mut names: Vec<String> = scene
+        .objects
+        .iter()
+        .flat_map(|o| file_names(&o.material))
+        .map(|name| absolute_name(&name, base))
+        .filter(|name| Path::new(name).is_absolute())
+        .collect();
+    names.sort();
+    names.dedup();
+    names
+        .into_iter()
+        .filter_map(|path| {
+            let bytes = std::fs::read(&path).ok()?;
+            Some(FileHash {
+                path,
+                fnv1a64: hex(fnv1a64(&bytes)),
+            })
+        })
+        .collect()
+}
+
+fn file_names(material: &Material) -> Vec<String> {
+    let bump = material.bump.as_ref().map(|b| match &b.source {
+        BumpSource::Pattern(p) => p.name.clone(),
+        BumpSource::Image(i) => i.name.clone(),
+    });
+    let texture = material.texture.as_ref().map(|t| match t {
+        Texturing::Pattern(p) => p.name.clone(),
+        Texturing::Image(i) => i.name.clone(),
+    });
+    bump.into_iter().chain(texture).collect()
+}
+
+/// FNV-1a, 64 bits: stable across builds and platforms (unlike std's hasher), enough to notice
+/// an edited file.
+fn fnv1a64(bytes: &[u8]) -> u64 {
+    bytes.iter().fold(0xcbf2_9ce4_8422_2325, |hash, &b| {
+        (hash ^ b as u64).wrapping_mul(0x0100_0000_01b3)
+    })
+}
+
+fn hex(value: u64) -> String {
+    format!("{value:016x}")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fnv1a64_matches_the_published_test_vectors() {
+        assert_eq!(fnv1a64(b""), 0xcbf2_9ce4_8422_2325);
+        assert_eq!(fnv1a64(b"a"), 0xaf63_dc4c_8601_ec8c);
+        assert_eq!(fnv1a64(b"foobar"), 0x8594_4171_f739_67e8);
+    }
+}

@@ -1,0 +1,283 @@
+//! Stills as a user makes them: valid PNGs carrying their recipe, `--from` making the same
+//! pixels again, sequences, PPM, and failures that leave no file behind.
+
+mod cli_support;
+
+use bumpwork::export::metadata::{RECIPE, SCENE, read_png_text};
+use bumpwork::still::Recipe;
+use cli_support::*;
+use std::path::Path;
+use std::process::Command;
+use std::time::{Duration, Instant};
+
+fn recipe_of(path: &Path) -> Recipe {
+    let texts = read_png_text(path).unwrap();
+    let text = &texts.iter().find(|(k, _)| k == RECIPE).unwrap().1;
+    Recipe::parse(text, "test").unwrap()
+}
+
+/// Files in `dir` other than those named.
+fn leftovers(dir: &Path, expected: &[&str]) -> Vec<String> {
+    std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| !expected.contains(&n.as_str()))
+        .collect()
+}
+
+#[test]
+fn a_still_carries_its_recipe_and_from_makes_the_same_pixels() {
+    let dir = temp_dir("still-from");
+    let first = dir.join("first.png");
+    let again = dir.join("again.png");
+    let out = bumpwork(&[
+        "render",
+        "sphere-on-plane-dimples",
+        "-o",
+        first.to_str().unwrap(),
+        "--size",
+        "96x64",
+        "--samples",
+        "4",
+        "--time",
+        "1.5",
+        "--tessellation",
+        "24",
+    ]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let (w, h, pixels) = decode_png(&first);
+    assert_eq!((w, h), (96, 64));
+    let recipe = recipe_of(&first);
+    assert_eq!((recipe.width, recipe.height), (96, 64));
+    assert_eq!((recipe.samples, recipe.tessellation), (4, 24));
+    assert_eq!(recipe.time, 1.5);
+    assert_eq!(recipe.source, "sphere-on-plane-dimples");
+    assert!(recipe.program.starts_with("bumpwork "));
+    let texts = read_png_text(&first).unwrap();
+    assert!(
+        texts
+            .iter()
+            .any(|(k, t)| k == SCENE && t.contains("[[object]]"))
+    );
+
+    let out = bumpwork(&[
+        "render",
+        "--from",
+        first.to_str().unwrap(),
+        "-o",
+        again.to_str().unwrap(),
+    ]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert_eq!(
+        decode_png(&again).2,
+        pixels,
+        "--from must reproduce the pixels"
+    );
+    assert_eq!(recipe_of(&again), recipe);
+}
+
+#[test]
+fn from_applies_pattern_parameters_and_warns_when_a_pattern_file_changed() {
+    let dir = temp_dir("still-pattern");
+    let pattern = dir.join("rings.pat");
+    std::fs::write(
+        &pattern,
+        "param period = 20 in 2..100\nheight = sin(u / period) * 4\n",
+    )
+    .unwrap();
+    let scene = dir.join("scene.toml");
+    std::fs::write(
+        &scene,
+        "[camera]\neye = [0, 200, 300]\ntarget = [0, 0, 0]\n\
+         [[light]]\npoint = { position = [100, 300, 200] }\n\
+         [[object]]\nsurface = { plane = { origin = [-200, 0, 200], normal = [0, 1, 0], u-axis = [1, 0, 0], size = [400, 400] } }\n\
+         bump = { pattern = \"rings.pat\", params = { period = 7 } }\n",
+    )
+    .unwrap();
+    let still = dir.join("still.png");
+    let again = dir.join("again.png");
+    let args = [
+        "render",
+        scene.to_str().unwrap(),
+        "-o",
+        still.to_str().unwrap(),
+        "--size",
+        "64x48",
+    ];
+    assert!(bumpwork(&args).status.success());
+    let recipe = recipe_of(&still);
+    let bump = recipe.objects[0].bump.as_ref().unwrap();
+    assert_eq!(bump.params.get("period"), Some(&7.0));
+    assert_eq!(recipe.files.len(), 1);
+    assert!(Path::new(&recipe.files[0].path).is_absolute());
+
+    // Rendered again from elsewhere, the scene's relative pattern path still resolves.
+    let out = Command::new(env!("CARGO_BIN_EXE_bumpwork"))
+        .args([
+            "render",
+            "--from",
+            still.to_str().unwrap(),
+            "-o",
+            again.to_str().unwrap(),
+        ])
+        .current_dir(std::env::temp_dir())
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert!(!stderr(&out).contains("warning"), "{}", stderr(&out));
+    assert_eq!(decode_png(&again).2, decode_png(&still).2);
+
+    std::fs::write(
+        &pattern,
+        "param period = 20 in 2..100\nheight = cos(v / period) * 4\n",
+    )
+    .unwrap();
+    let out = bumpwork(&[
+        "render",
+        "--from",
+        still.to_str().unwrap(),
+        "-o",
+        again.to_str().unwrap(),
+    ]);
+    assert!(out.status.success());
+    assert!(
+        stderr(&out).contains("rings.pat has changed"),
+        "{}",
+        stderr(&out)
+    );
+}
+
+#[test]
+fn a_time_range_writes_a_numbered_sequence() {
+    let dir = temp_dir("still-sequence");
+    let out = bumpwork(&[
+        "render",
+        "image-scroll",
+        "-o",
+        dir.join("wave.png").to_str().unwrap(),
+        "--size",
+        "32x24",
+        "--time-range",
+        "0..0.3",
+        "--fps",
+        "10",
+    ]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let mut names = leftovers(&dir, &[]);
+    names.sort();
+    assert_eq!(names, ["wave-0000.png", "wave-0001.png", "wave-0002.png"]);
+    let times: Vec<f64> = names.iter().map(|n| recipe_of(&dir.join(n)).time).collect();
+    assert!(
+        (times[1] - 0.1).abs() < 1e-12 && (times[2] - 0.2).abs() < 1e-12,
+        "{times:?}"
+    );
+    let first = decode_png(&dir.join(&names[0])).2;
+    assert_ne!(
+        first,
+        decode_png(&dir.join(&names[1])).2,
+        "the image scrolls between frames"
+    );
+}
+
+#[test]
+fn ppm_holds_the_same_pixels_as_png() {
+    let dir = temp_dir("still-ppm");
+    let (png, ppm) = (dir.join("a.png"), dir.join("a.ppm"));
+    for (path, format) in [(&png, "png"), (&ppm, "ppm")] {
+        let out = bumpwork(&[
+            "render",
+            "big-sphere-squares",
+            "-o",
+            path.to_str().unwrap(),
+            "--size",
+            "40x30",
+            "--format",
+            format,
+        ]);
+        assert!(out.status.success(), "{}", stderr(&out));
+    }
+    let bytes = std::fs::read(&ppm).unwrap();
+    let header = b"P6\n40 30\n255\n";
+    assert_eq!(&bytes[..header.len()], header);
+    assert_eq!(&bytes[header.len()..], decode_png(&png).2.as_slice());
+}
+
+#[test]
+fn failed_renders_leave_no_file_and_say_why() {
+    let dir = temp_dir("still-fail");
+    let out_path = dir.join("out.png");
+    let out = out_path.to_str().unwrap();
+    let bad_scene = dir.join("bad.toml");
+    std::fs::write(
+        &bad_scene,
+        "[camera]\neye = [0, 0, 1]\ntarget = [0, 0, 1]\n[[object]]\n",
+    )
+    .unwrap();
+    assert_user_error(
+        &bumpwork(&["render", bad_scene.to_str().unwrap(), "-o", out]),
+        "bad.toml",
+    );
+    assert_user_error(
+        &bumpwork(&["render", "plane-ripple", "-o", "/nonexistent-dir/x.png"]),
+        "cannot write /nonexistent-dir/x.png",
+    );
+    assert_user_error(
+        &bumpwork(&["render", "plane-ripple", "-o", out, "--size", "20000x10"]),
+        "1..=16384",
+    );
+    let plain =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/testdata/pngsuite/basn2c08.png");
+    assert_user_error(
+        &bumpwork(&["render", "--from", plain.to_str().unwrap(), "-o", out]),
+        "not a still made by bumpwork",
+    );
+    let broken =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/testdata/pngsuite/xcrn0g04.png");
+    assert_user_error(
+        &bumpwork(&["render", "--from", broken.to_str().unwrap(), "-o", out]),
+        "PNG",
+    );
+    assert_eq!(leftovers(&dir, &["bad.toml"]), Vec::<String>::new());
+}
+
+#[test]
+fn an_interrupted_export_leaves_no_partial_file() {
+    let dir = temp_dir("still-interrupt");
+    let out = dir.join("big.png");
+    let child = Command::new(env!("CARGO_BIN_EXE_bumpwork"))
+        .args([
+            "render",
+            "sphere-on-plane-dimples",
+            "-o",
+            out.to_str().unwrap(),
+        ])
+        .args(["--size", "4000x3000", "--samples", "64"])
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    // Wait until the render has started writing (its temporary file exists), then interrupt.
+    let started = Instant::now();
+    while leftovers(&dir, &[]).is_empty() && started.elapsed() < Duration::from_secs(20) {
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    assert!(
+        !leftovers(&dir, &[]).is_empty(),
+        "the render never started its file"
+    );
+    let pid = child.id().to_string();
+    assert!(
+        Command::new("kill")
+            .args(["-INT", &pid])
+            .status()
+            .unwrap()
+            .success()
+    );
+    let output = child.wait_with_output().unwrap();
+    assert_eq!(output.status.code(), Some(130), "{}", stderr(&output));
+    assert!(
+        stderr(&output).contains("interrupted"),
+        "{}",
+        stderr(&output)
+    );
+    assert_eq!(leftovers(&dir, &[]), Vec::<String>::new());
+}
