@@ -12,11 +12,12 @@ pub use variants::{Variant, VariantKind, variants};
 use crate::measure::Timing;
 use crate::quality::Quality;
 use crate::raster::{Camera, Framebuffer, PreparedScene, RenderTarget, Viewport, render_into};
-use crate::reference::{FrameError, ShadedAndNormals, render_reference};
+use crate::reference::{FrameError, ShadedAndNormals, ViewRays, render_rays_into};
 use crate::scene::Scene;
 use crate::shade::LitShader;
+use crate::still::{BandBuffers, BandJob, Supersampling, render_supersampled};
 use glam::Vec3;
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
 /// The scenes of the default bench (all built in).
 pub const STANDARD_SCENES: [&str; 6] = [
@@ -28,9 +29,13 @@ pub const STANDARD_SCENES: [&str; 6] = [
     "wave-spheres",
 ];
 
-/// Untimed frames of each variant first: the first frames run measurably slower (caches, the
+/// An untimed frame of each variant first: the first frame runs measurably slower (caches, the
 /// thread pool waking).
-const WARMUP_FRAMES: usize = 3;
+const WARMUP_FRAMES: usize = 1;
+
+/// A variant stops being timed once its timed frames add up to this, after at least one: 64
+/// samples of a 256-density mesh take seconds per frame (every pass sets up every triangle).
+const TIME_BUDGET: Duration = Duration::from_secs(1);
 
 /// One variant on one scene: its cost and its error.
 #[derive(Clone, Debug)]
@@ -42,23 +47,77 @@ pub struct Measurement {
     pub error: FrameError,
 }
 
-/// The reference frames of one scene and view, shaded as the `exact` preset shades.
+/// The reference frames of one scene and view at one sample count, shaded as the `exact`
+/// preset shades.
 pub struct Reference {
+    pub samples: u32,
     pub frames: ShadedAndNormals,
 }
 
 impl Reference {
-    pub fn render(scene: &Scene, viewport: Viewport) -> Reference {
+    /// Ray cast through the very sample positions the supersampled rasterizer uses
+    /// (`Supersampling::offsets`, equal weights), averaged in linear light; coverage is the last
+    /// sample's, as `render_supersampled` keeps the last pass's depth. So a variant with more
+    /// samples is measured against the same filtered picture, not a point-sampled one.
+    pub fn render(scene: &Scene, viewport: Viewport, samples: u32) -> Reference {
         let quality = Quality::exact();
         // The reference ignores the tessellation; a coarse one serves to build the scene.
         let coarse = crate::surface::Tessellation { density: 4 };
         let prepared = PreparedScene::new(scene.clone(), coarse);
         let mut shader = quality.shader(&prepared, &scene.camera);
         let frames = ShadedAndNormals::render(&mut shader, |s| {
-            render_reference(&prepared, &scene.camera, viewport, s).0
+            supersampled_reference(&prepared, &scene.camera, viewport, s, samples)
         });
-        Reference { frames }
+        Reference { samples, frames }
     }
+}
+
+fn supersampled_reference(
+    prepared: &PreparedScene,
+    camera: &Camera,
+    viewport: Viewport,
+    shader: &LitShader,
+    samples: u32,
+) -> Framebuffer {
+    let sampling = supersampling(samples);
+    let offsets = sampling.offsets();
+    let weight = 1.0 / offsets.len() as f32;
+    let rays = ViewRays::new(camera, viewport);
+    let footprint = sampling.footprint() as f64;
+    let mut pass = Framebuffer::new(0, 0, Vec3::ZERO);
+    let mut color = vec![Vec3::ZERO; (viewport.width * viewport.height) as usize];
+    for offset in offsets {
+        let sample_rays = rays.at_sample(offset.as_dvec2(), footprint);
+        render_rays_into(prepared, camera, viewport, sample_rays, shader, &mut pass);
+        for (sum, &c) in color.iter_mut().zip(&pass.color) {
+            *sum += c * weight;
+        }
+    }
+    Framebuffer {
+        width: viewport.width,
+        height: viewport.height,
+        color,
+        depth: pass.depth,
+    }
+}
+
+/// The still renderer's supersampling for a sample count (its default resolve filter).
+fn supersampling(samples: u32) -> Supersampling {
+    Supersampling {
+        samples: samples.max(1),
+        ..Supersampling::default()
+    }
+}
+
+/// References for every sample count the variants ask for.
+pub fn references(scene: &Scene, viewport: Viewport, variants: &[Variant]) -> Vec<Reference> {
+    let mut counts: Vec<u32> = variants.iter().map(|v| v.quality.samples.max(1)).collect();
+    counts.sort_unstable();
+    counts.dedup();
+    counts
+        .into_iter()
+        .map(|samples| Reference::render(scene, viewport, samples))
+        .collect()
 }
 
 /// One variant made ready to render on one scene.
@@ -67,6 +126,7 @@ struct Ready<'a> {
     prepared: PreparedScene,
     shader: LitShader,
     target: RenderTarget<'a>,
+    samples: u32,
 }
 
 /// Times `runs` frames of every variant on the scene and measures each one's error. The timed
@@ -78,7 +138,7 @@ pub fn measure_scene(
     variants: &[Variant],
     viewport: Viewport,
     runs: usize,
-    reference: &Reference,
+    references: &[Reference],
 ) -> Vec<Measurement> {
     let camera: &Camera = &scene.camera;
     let mut ready: Vec<Ready> = variants
@@ -93,6 +153,7 @@ pub fn measure_scene(
                 prepared,
                 shader,
                 target,
+                samples: quality.samples.max(1),
             }
         })
         .collect();
@@ -101,11 +162,16 @@ pub fn measure_scene(
         .iter_mut()
         .zip(timings)
         .map(|(r, timing)| {
+            let samples = r.samples;
             let frames = ShadedAndNormals::render(&mut r.shader, |s| {
                 let mut frame = Framebuffer::new(0, 0, Vec3::ZERO);
-                render_frame(&r.prepared, &r.target, s, &mut frame);
+                render_frame(&r.prepared, &r.target, s, samples, &mut frame);
                 frame
             });
+            let reference = references
+                .iter()
+                .find(|reference| reference.samples == samples)
+                .expect("a reference for every sample count asked for");
             Measurement {
                 scene: scene_name.to_string(),
                 variant: r.variant.clone(),
@@ -117,39 +183,63 @@ pub fn measure_scene(
         .collect()
 }
 
-/// Per variant, the timing of `runs` frames taken one per round.
+/// Per variant, the timing of up to `runs` frames taken one per round (fewer for a variant
+/// past `TIME_BUDGET`).
 fn time_in_rounds(ready: &[Ready], runs: usize) -> Vec<Timing> {
     let mut framebuffer = Framebuffer::new(0, 0, Vec3::ZERO);
     let mut samples = vec![Vec::with_capacity(runs); ready.len()];
     for r in ready {
         for _ in 0..WARMUP_FRAMES {
-            render_frame(&r.prepared, &r.target, &r.shader, &mut framebuffer);
+            render_frame(
+                &r.prepared,
+                &r.target,
+                &r.shader,
+                r.samples,
+                &mut framebuffer,
+            );
         }
     }
     for _ in 0..runs.max(1) {
         for (r, times) in ready.iter().zip(&mut samples) {
+            if times.iter().sum::<Duration>() > TIME_BUDGET {
+                continue;
+            }
             let start = Instant::now();
-            render_frame(&r.prepared, &r.target, &r.shader, &mut framebuffer);
+            render_frame(
+                &r.prepared,
+                &r.target,
+                &r.shader,
+                r.samples,
+                &mut framebuffer,
+            );
             times.push(start.elapsed());
         }
     }
     samples.into_iter().map(Timing::from_samples).collect()
 }
 
-/// Samples per pixel the bench renders. The supersampled renderer is being added on main;
-/// until it is merged here every variant is rendered (timed and measured) at one sample, and
-/// the reports say so next to the samples each variant asks for.
-pub const SAMPLES_RENDERED: u32 = 1;
-
-/// One frame as the bench times and measures it: the single place where samples per pixel
-/// will be resolved (see `SAMPLES_RENDERED`).
+/// One frame as the bench times and measures it: one sample per pixel centre, or the still
+/// renderer's supersampling (shifted passes resolved in linear light).
 fn render_frame(
     prepared: &PreparedScene,
     target: &RenderTarget,
     shader: &LitShader,
+    samples: u32,
     framebuffer: &mut Framebuffer,
 ) {
-    render_into(prepared, target, shader, framebuffer);
+    if samples <= 1 {
+        render_into(prepared, target, shader, framebuffer);
+        return;
+    }
+    let job = BandJob {
+        prepared,
+        camera: target.camera,
+        full: target.viewport,
+        shader,
+        supersampling: supersampling(samples),
+        interpolation: target.interpolation,
+    };
+    *framebuffer = render_supersampled(&job, &mut BandBuffers::default()).0;
 }
 
 /// A variant's figures over every scene benched: summed median time, mean errors.

@@ -3,8 +3,8 @@
 
 use bumpwork::Error;
 use bumpwork::bench::{
-    ChartMetric, Measurement, Reference, SAMPLES_RENDERED, STANDARD_SCENES, Summary, Variant,
-    VariantKind, draw_chart, measure_scene, pareto_front, summarize, variants,
+    ChartMetric, Measurement, STANDARD_SCENES, Summary, Variant, VariantKind, draw_chart,
+    measure_scene, pareto_front, references, summarize, variants,
 };
 use bumpwork::raster::Viewport;
 use serde::Serialize;
@@ -15,13 +15,17 @@ pub struct BenchArgs {
     /// Frame size in pixels, WIDTHxHEIGHT (the reference ray caster's cost grows with it).
     #[arg(long, default_value = "320x240", value_parser = super::parse_size)]
     size: (u32, u32),
-    /// Timed frames per variant and scene, in rounds of one frame of each variant (after warm-up
-    /// frames); the median and min–max are shown.
+    /// Timed frames per variant and scene, in rounds of one frame of each variant (after a
+    /// warm-up frame); a variant stops after 1 s of timed frames. Median and min–max are shown.
     #[arg(long, default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..=1000))]
     runs: u32,
     /// Comma-separated built-in scene names or scene files (default: the standard six).
     #[arg(long, value_delimiter = ',')]
     scenes: Vec<String>,
+    /// Cap every variant's samples per pixel (quick runs: `exact` asks for 64, and each sample
+    /// is a pass over every triangle).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
+    max_samples: Option<u32>,
     /// Print JSON instead of the table.
     #[arg(long)]
     json: bool,
@@ -56,15 +60,25 @@ pub fn run(args: BenchArgs) -> Result<(), Error> {
         width: args.size.0,
         height: args.size.1,
     };
-    let variants = variants();
+    let mut variants = variants();
+    if let Some(cap) = args.max_samples {
+        for variant in &mut variants {
+            variant.quality.samples = variant.quality.samples.min(cap);
+        }
+    }
     let mut measurements = Vec::new();
     for (name, scene) in &scenes {
-        eprintln!("bench: {name}: reference…");
-        let reference = Reference::render(scene, viewport);
+        eprintln!("bench: {name}: references…");
+        let references = references(scene, viewport, &variants);
         eprintln!("bench: {name}: {} variants…", variants.len());
         let runs = args.runs as usize;
         measurements.extend(measure_scene(
-            name, scene, &variants, viewport, runs, &reference,
+            name,
+            scene,
+            &variants,
+            viewport,
+            runs,
+            &references,
         ));
     }
     let summaries = summarize(&variants, &measurements);
@@ -109,7 +123,10 @@ fn print_tables(args: &BenchArgs, rows: &[Measurement], summaries: &[Summary], f
         args.size.0, args.size.1, args.runs
     );
     println!(
-        "every variant rendered at {SAMPLES_RENDERED} sample(s) per pixel: the supersampled renderer is not merged yet (the quality column shows what each asks)"
+        "variants with n samples per pixel are measured against the reference ray cast through the same n sample positions{}",
+        args.max_samples
+            .map(|cap| format!("; samples capped at {cap}"))
+            .unwrap_or_default()
     );
     let mut scene = "";
     for m in rows {
@@ -117,10 +134,10 @@ fn print_tables(args: &BenchArgs, rows: &[Measurement], summaries: &[Summary], f
             scene = &m.scene;
             println!("\n{scene}");
             println!(
-                "  {:<24} {:>8} {:>22} {:>8} {:>5} {:>16} {:>6}",
+                "  {:<24} {:>8} {:>26} {:>8} {:>5} {:>16} {:>6}",
                 "variant",
                 "tris",
-                "time ms (min-max)",
+                "time ms (min-max) xruns",
                 "PSNR dB",
                 "max",
                 "normal mean/max°",
@@ -131,10 +148,16 @@ fn print_tables(args: &BenchArgs, rows: &[Measurement], summaries: &[Summary], f
         let ms = |d: std::time::Duration| d.as_secs_f64() * 1e3;
         let e = &m.error;
         println!(
-            "  {:<24} {:>8} {:>22} {:>8} {:>5.0} {:>16} {:>6}",
+            "  {:<24} {:>8} {:>26} {:>8} {:>5.0} {:>16} {:>6}",
             m.variant.name,
             m.triangles,
-            format!("{:.2} ({:.2}-{:.2})", ms(t.median), ms(t.min), ms(t.max)),
+            format!(
+                "{:.2} ({:.2}-{:.2}) x{}",
+                ms(t.median),
+                ms(t.min),
+                ms(t.max),
+                t.runs
+            ),
             psnr_text(e.psnr_db),
             e.max_pixel_error,
             format!(
@@ -175,8 +198,7 @@ struct JsonReport<'a> {
     width: u32,
     height: u32,
     runs: u32,
-    /// Samples per pixel actually rendered (each row's `quality` says what it asks).
-    samples_rendered: u32,
+    max_samples: Option<u32>,
     rows: Vec<JsonRow<'a>>,
     summary: Vec<JsonSummary<'a>>,
 }
@@ -187,6 +209,7 @@ struct JsonRow<'a> {
     variant: &'a str,
     kind: &'static str,
     quality: String,
+    samples: u32,
     triangles: usize,
     time_ms: JsonTiming,
     /// `null` for a frame identical to the reference (infinite PSNR).
@@ -202,6 +225,7 @@ struct JsonTiming {
     median: f64,
     min: f64,
     max: f64,
+    runs: usize,
 }
 
 #[derive(Serialize)]
@@ -220,7 +244,7 @@ fn print_json(args: &BenchArgs, rows: &[Measurement], summaries: &[Summary], fro
         width: args.size.0,
         height: args.size.1,
         runs: args.runs,
-        samples_rendered: SAMPLES_RENDERED,
+        max_samples: args.max_samples,
         rows: rows
             .iter()
             .map(|m| JsonRow {
@@ -228,11 +252,13 @@ fn print_json(args: &BenchArgs, rows: &[Measurement], summaries: &[Summary], fro
                 variant: &m.variant.name,
                 kind: kind_name(&m.variant),
                 quality: m.variant.quality.describe(),
+                samples: m.variant.quality.samples,
                 triangles: m.triangles,
                 time_ms: JsonTiming {
                     median: ms(m.timing.median),
                     min: ms(m.timing.min),
                     max: ms(m.timing.max),
+                    runs: m.timing.runs,
                 },
                 psnr_db: m.error.psnr_db.is_finite().then_some(m.error.psnr_db),
                 max_pixel_error: m.error.max_pixel_error,
