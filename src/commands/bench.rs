@@ -13,7 +13,7 @@ use std::path::PathBuf;
 #[derive(clap::Args)]
 pub struct BenchArgs {
     /// Frame size in pixels, WIDTHxHEIGHT (the reference ray caster's cost grows with it).
-    #[arg(long, default_value = "320x240", value_parser = super::parse_size)]
+    #[arg(long, default_value = "240x180", value_parser = super::parse_size)]
     size: (u32, u32),
     /// Timed frames per variant and scene, in rounds of one frame of each variant (after a
     /// warm-up frame); a variant stops after 1 s of timed frames. Median and min–max are shown.
