@@ -22,6 +22,8 @@ struct Cli {
 enum Command {
     /// Render a built-in scene or a scene file to a PNG still.
     Render(commands::render::RenderArgs),
+    /// Render every built-in scene to a still and a contact sheet of them all.
+    Gallery(commands::gallery::GalleryArgs),
     /// Check pattern files, scene files and images without rendering.
     Check(commands::check::CheckArgs),
     /// Time every quality preset and knob on standard scenes and measure their error against
@@ -60,6 +62,7 @@ fn run(cli: Cli) -> Result<(), Error> {
     match cli.command {
         Some(Command::Render(args)) => commands::render::run(args),
         Some(Command::Check(args)) => commands::check::run(args),
+        Some(Command::Gallery(args)) => commands::gallery::run(args),
         Some(Command::View(args)) => commands::view::run(args),
         Some(Command::Bench(args)) => commands::bench::run(args),
         None => commands::view::run(Default::default()),

@@ -237,7 +237,28 @@ fn failed_renders_leave_no_file_and_say_why() {
         &bumpwork(&["render", "--from", broken.to_str().unwrap(), "-o", out]),
         "PNG",
     );
-    assert_eq!(leftovers(&dir, &["bad.toml"]), Vec::<String>::new());
+    // An image whose header asks for more memory than the texture limit allows.
+    std::fs::write(
+        dir.join("huge.ppm"),
+        b"P6\n100000 100000\n255\n\x00\x00\x00",
+    )
+    .unwrap();
+    let greedy = dir.join("greedy.toml");
+    std::fs::write(
+        &greedy,
+        "[camera]\neye = [0, 0, 5]\ntarget = [0, 0, 0]\n\
+         [[object]]\nsurface = { sphere = { center = [0, 0, 0], radius = 1 } }\n\
+         texture = { image = \"huge.ppm\", mapping = \"spherical\" }\n",
+    )
+    .unwrap();
+    assert_user_error(
+        &bumpwork(&["render", greedy.to_str().unwrap(), "-o", out]),
+        "huge.ppm",
+    );
+    assert_eq!(
+        leftovers(&dir, &["bad.toml", "huge.ppm", "greedy.toml"]),
+        Vec::<String>::new()
+    );
 }
 
 #[test]
@@ -280,4 +301,57 @@ fn an_interrupted_export_leaves_no_partial_file() {
         stderr(&output)
     );
     assert_eq!(leftovers(&dir, &[]), Vec::<String>::new());
+}
+
+#[test]
+fn the_gallery_writes_each_scene_and_a_contact_sheet_of_them() {
+    let dir = temp_dir("gallery");
+    let out = bumpwork(&[
+        "gallery",
+        "-o",
+        dir.to_str().unwrap(),
+        "--scenes",
+        "plane-dimples,textured-sphere",
+        "--size",
+        "64x48",
+        "--samples",
+        "1",
+        "--thumbnail",
+        "32x24",
+        "--columns",
+        "2",
+    ]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let mut names = leftovers(&dir, &[]);
+    names.sort();
+    assert_eq!(
+        names,
+        [
+            "contact-sheet.png",
+            "plane-dimples.png",
+            "textured-sphere.png"
+        ]
+    );
+    assert_eq!(
+        recipe_of(&dir.join("textured-sphere.png")).source,
+        "textured-sphere"
+    );
+    // Two 32-wide cells with 8-pixel gaps; one row of 24 + a 22-pixel label.
+    let (w, h, sheet) = decode_png(&dir.join("contact-sheet.png"));
+    assert_eq!((w, h), (2 * 40 + 8, 24 + 22 + 8 + 8));
+    // The first thumbnail's middle is the first still's middle, scaled down by 2.
+    let (sw, _, still) = decode_png(&dir.join("plane-dimples.png"));
+    let at =
+        |pixels: &[u8], width: u32, x: u32, y: u32| pixels[3 * (y * width + x) as usize] as i32;
+    assert!((at(&sheet, w, 8 + 16, 8 + 12) - at(&still, sw, 32, 24)).abs() < 40);
+    assert_user_error(
+        &bumpwork(&[
+            "gallery",
+            "-o",
+            dir.to_str().unwrap(),
+            "--scenes",
+            "no-such-scene",
+        ]),
+        "unknown scene 'no-such-scene'",
+    );
 }

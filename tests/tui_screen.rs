@@ -1,8 +1,13 @@
 //! The workbench's screen without a terminal: frames are drawn only when something changed, tiny
 //! and empty screens do not panic, and the export key writes a PNG.
 
+use bumpwork::export::metadata::{RECIPE, SCENE, read_png_text};
+use bumpwork::export::read_png_rgb8;
+use bumpwork::still::Recipe;
 use bumpwork::term::{ColorChoice, ColorMode, SYNC_BEGIN, SYNC_END};
 use bumpwork::tui::{Action, App, Message, Screen, WorkbenchOptions};
+use std::path::Path;
+use std::time::{Duration, Instant};
 
 fn app() -> App {
     let options = WorkbenchOptions {
@@ -80,19 +85,78 @@ fn every_view_mode_glyph_set_and_colour_mode_draws() {
 }
 
 #[test]
-fn the_export_key_writes_a_png_and_names_it() {
+fn the_export_key_writes_the_live_view_in_the_background_and_from_makes_it_again() {
     let mut app = app();
     let dir = std::env::temp_dir().join(format!("bumpwork-tui-export-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
     app.export_dir = dir.clone();
     app.export_size = (64, 36);
+    app.export_samples = 4;
+    // Live edits a still must carry: the camera, a light, a pattern parameter, the bump.
+    app.apply(Action::Orbit(0.3, 0.1));
+    app.apply(Action::MoveLight(0.5, 0.0));
+    app.apply(Action::AdjustParam(10.0));
+    app.apply(Action::ScaleBump(2.0));
     app.apply(Action::Export);
     let Message::Info(text) = &app.message else {
         panic!("{:?}", app.message);
     };
-    let path = text.strip_prefix("exported ").unwrap();
-    let png = std::fs::read(path).unwrap();
-    assert_eq!(&png[1..4], b"PNG");
+    assert!(text.starts_with("exporting "), "{text}");
+    assert!(app.export_job.is_some());
+    let started = Instant::now();
+    while app.export_job.is_some() && started.elapsed() < Duration::from_secs(30) {
+        app.poll_export();
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    let Message::Info(text) = &app.message else {
+        panic!("{:?}", app.message);
+    };
+    let path = Path::new(text.strip_prefix("exported ").unwrap());
+    let texts = read_png_text(path).unwrap();
+    let recipe_text = &texts.iter().find(|(k, _)| k == RECIPE).unwrap().1;
+    let recipe = Recipe::parse(recipe_text, "export").unwrap();
+    assert_eq!((recipe.width, recipe.height, recipe.samples), (64, 36, 4));
+    let scene = recipe
+        .scene(&texts.iter().find(|(k, _)| k == SCENE).unwrap().1)
+        .unwrap();
+    assert_eq!(scene.camera, app.camera());
+    assert_eq!(scene.lights, app.scene().lights);
+    assert_eq!(scene.objects[0].material, app.scene().objects[0].material);
+
+    let again = dir.join("again.png");
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_bumpwork"))
+        .args([
+            "render",
+            "--from",
+            path.to_str().unwrap(),
+            "-o",
+            again.to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert_eq!(read_png_rgb8(&again).unwrap(), read_png_rgb8(path).unwrap());
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn quitting_during_an_export_leaves_no_file() {
+    let mut app = app();
+    let dir = std::env::temp_dir().join(format!("bumpwork-tui-cancel-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    app.export_dir = dir.clone();
+    app.export_size = (4000, 3000);
+    app.export_samples = 64;
+    app.apply(Action::Export);
+    std::thread::sleep(Duration::from_millis(200));
+    drop(app);
+    assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 0);
     std::fs::remove_dir_all(&dir).unwrap();
 }
 

@@ -2,6 +2,7 @@
 
 pub mod bench;
 pub mod check;
+pub mod gallery;
 mod interrupt;
 mod progress;
 pub mod render;

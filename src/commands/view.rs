@@ -29,6 +29,10 @@ pub struct ViewArgs {
     /// Size of PNGs the export key writes, WIDTHxHEIGHT.
     #[arg(long, default_value = "1920x1080", value_parser = super::parse_size)]
     export_size: Option<(u32, u32)>,
+    /// Samples per pixel of PNGs the export key writes.
+    #[arg(long, default_value_t = 4,
+          value_parser = clap::value_parser!(u32).range(1..=bumpwork::still::MAX_SAMPLES as i64))]
+    export_samples: u32,
 }
 
 pub fn run(args: ViewArgs) -> Result<(), Error> {
@@ -48,6 +52,11 @@ pub fn run(args: ViewArgs) -> Result<(), Error> {
         },
         mouse: !args.no_mouse,
         export_size: args.export_size.unwrap_or(defaults.export_size),
+        export_samples: if args.export_samples == 0 {
+            defaults.export_samples
+        } else {
+            args.export_samples
+        },
         watch: !args.no_watch,
         quality: args.quality.unwrap_or_default(),
     };

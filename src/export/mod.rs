@@ -2,12 +2,15 @@
 //! atomically.
 
 mod atomic;
+mod contact_sheet;
+mod label_font;
 pub mod metadata;
 mod png_file;
 mod ppm_file;
 mod still_file;
 
 pub use atomic::AtomicFile;
-pub use png_file::{PngStill, write_png, write_png_with_text};
+pub use contact_sheet::{SheetLayout, SheetPicture, draw_sheet, write_sheet};
+pub use png_file::{PngStill, read_png_rgb8, write_png, write_png_with_text};
 pub use ppm_file::PpmStill;
 pub use still_file::{BAND_BUDGET_BYTES, StillFormat, StillRequest, write_still};

@@ -71,3 +71,23 @@ pub fn write_png_with_text(
         .map_err(|reason| Error::write(path, reason))?;
     png.finish()
 }
+
+/// Reads an 8-bit RGB PNG back (as written by `PngStill`): (width, height, rows).
+pub fn read_png_rgb8(path: &Path) -> Result<(u32, u32, Vec<u8>), Error> {
+    let file = File::open(path).map_err(|e| Error::read(path, e))?;
+    let fail = |e: png::DecodingError| Error::read(path, e);
+    let mut reader = png::Decoder::new(std::io::BufReader::new(file))
+        .read_info()
+        .map_err(fail)?;
+    let info = reader.info();
+    if (info.color_type, info.bit_depth) != (png::ColorType::Rgb, png::BitDepth::Eight) {
+        return Err(Error::read(path, "not an 8-bit RGB PNG"));
+    }
+    let size = reader
+        .output_buffer_size()
+        .ok_or_else(|| Error::read(path, "image too large"))?;
+    let mut rgb = vec![0; size];
+    let frame = reader.next_frame(&mut rgb).map_err(fail)?;
+    rgb.truncate(frame.buffer_size());
+    Ok((frame.width, frame.height, rgb))
+}

@@ -46,7 +46,7 @@ pub struct CameraFile {
     pub far: Option<Positive>,
 }
 
-#[derive(Clone, Debug, Serialize, Deserialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, rename_all = "kebab-case")]
 pub enum LightFile {
     Point {
@@ -310,7 +310,21 @@ impl CameraFile {
 }
 
 impl LightFile {
-    fn to_light(&self) -> Light {
+    /// The light as a scene file writes it.
+    pub fn of(light: &Light) -> LightFile {
+        match *light {
+            Light::Point { position, color } => LightFile::Point {
+                position: Point(position),
+                color: Rgb(color),
+            },
+            Light::Directional { towards, color } => LightFile::Directional {
+                towards: Direction(towards),
+                color: Rgb(color),
+            },
+        }
+    }
+
+    pub fn to_light(&self) -> Light {
         match *self {
             LightFile::Point { position, color } => Light::Point {
                 position: position.0,

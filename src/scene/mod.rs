@@ -8,7 +8,9 @@ mod presets;
 mod source;
 
 pub use binding_file::{BindingFile, FilterFile, MappingKind, WrapFile};
-pub use file::{Finite, MAX_SCENE_FILE_BYTES, Positive, SceneFile, load_scene_file, parse_scene};
+pub use file::{
+    Finite, LightFile, MAX_SCENE_FILE_BYTES, Positive, SceneFile, load_scene_file, parse_scene,
+};
 pub use material::{
     Bump, BumpSource, ImageHeight, ImageTexture, Material, PatternBinding, Placement, Texturing,
 };

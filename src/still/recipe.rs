@@ -1,12 +1,13 @@
 //! What a still was made from, carried in its own PNG so `render --from` can make it again: the
 //! scene's source and text, every object's live bump and texture patterns with their parameter
-//! values, the camera, the render settings, and a content hash of each file the scene reads.
+//! values, the camera and lights, the render settings, and a content hash of each file the scene reads.
 
 use super::samples::{MAX_SAMPLES, ResolveFilter, Supersampling};
 use crate::Error;
 use crate::raster::{Camera, Interpolation};
 use crate::scene::{
-    BindingFile, BumpSource, Finite, Material, PatternBinding, Positive, Scene, Texturing,
+    BindingFile, BumpSource, Finite, LightFile, Material, PatternBinding, Positive, Scene,
+    Texturing,
 };
 use crate::shade::ViewMode;
 use crate::surface::Tessellation;
@@ -36,6 +37,9 @@ pub struct Recipe {
     pub time: f64,
     pub mode: String,
     pub camera: RecipeCamera,
+    /// The lights as they were (the workbench moves them).
+    #[serde(default, rename = "light")]
+    pub lights: Vec<LightFile>,
     #[serde(default, rename = "object")]
     pub objects: Vec<ObjectState>,
     #[serde(default, rename = "file")]
@@ -110,6 +114,7 @@ impl Recipe {
             time: settings.time,
             mode: settings.mode.name().into(),
             camera: RecipeCamera::of(camera),
+            lights: scene.lights.iter().map(LightFile::of).collect(),
             files: file_hashes(scene, &base),
             objects,
         }
@@ -201,6 +206,7 @@ impl Recipe {
                 .map_err(|e| Error::Diagnostic(format!("recipe object {}: {}", index + 1, e)))?;
         }
         scene.camera = self.camera.to_camera()?;
+        scene.lights = self.lights.iter().map(LightFile::to_light).collect();
         Ok(scene)
     }
 

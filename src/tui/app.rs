@@ -3,7 +3,7 @@
 
 use super::action::Action;
 use super::clock::Clock;
-use super::export::export_view;
+use super::export::ExportJob;
 use super::light::move_lights;
 use super::material_controls as controls;
 use super::options::WorkbenchOptions;
@@ -37,7 +37,10 @@ pub struct App {
     pub message: Message,
     pub report: FrameReport,
     pub export_size: (u32, u32),
+    pub export_samples: u32,
     pub export_dir: PathBuf,
+    /// The export rendering in the background, if any.
+    pub export_job: Option<ExportJob>,
     pub dirty: Dirty,
     /// Watches the current scene's files; None for built-in scenes.
     reloader: Option<Reloader>,
@@ -109,7 +112,9 @@ impl App {
             message: Message::None,
             report: FrameReport::default(),
             export_size: options.export_size,
+            export_samples: options.export_samples,
             export_dir: PathBuf::from("."),
+            export_job: None,
             dirty: Dirty::ALL,
             reloader,
         })
@@ -295,10 +300,38 @@ impl App {
     }
 
     fn export(&mut self) {
-        self.message = match export_view(self, self.export_size, &self.export_dir) {
-            Ok(path) => Message::Info(format!("exported {}", path.display())),
+        if let Some(job) = &self.export_job {
+            let path = job.path.display().to_string();
+            self.message = Message::Info(format!("still exporting {path}"));
+            return;
+        }
+        let job = ExportJob::start(
+            self,
+            self.export_size,
+            self.export_samples,
+            &self.export_dir,
+        );
+        let (w, h) = self.export_size;
+        let path = job.path.display();
+        self.message = Message::Info(format!(
+            "exporting {path} ({w}x{h}, {} spp)…",
+            self.export_samples
+        ));
+        self.export_job = Some(job);
+        self.dirty.text = true;
+    }
+
+    /// Reports a background export once it has finished.
+    pub fn poll_export(&mut self) {
+        let Some(outcome) = self.export_job.as_mut().and_then(ExportJob::finished) else {
+            return;
+        };
+        let job = self.export_job.take().expect("a finished job");
+        self.message = match outcome {
+            Ok(()) => Message::Info(format!("exported {}", job.path.display())),
             Err(e) => Message::Error(e.to_string()),
         };
+        self.dirty.text = true;
     }
 
     /// Marks everything for redrawing, as after a resize.

@@ -37,6 +37,7 @@ fn event_loop(app: &mut App, signals: &ShutdownSignals) -> io::Result<()> {
     let mut last_frame = Instant::now();
     while !app.quit && signals.received().is_none() {
         app.reload_if_changed();
+        app.poll_export();
         if app.animates()
             && app.clock.is_running()
             && last_frame.elapsed() >= app.clock.frame_interval()

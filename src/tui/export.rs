@@ -1,20 +1,149 @@
-//! The export key: the current view, camera and view mode included, as a PNG under a new name.
+//! The export key: the current view (camera, time, view mode and live pattern parameters) as a
+//! still under a new name, rendered on a background thread through the same band pipeline as
+//! `bumpwork render`, with its recipe, so `render --from` makes it again at any size.
 
 use super::app::App;
 use super::render::{View, empty_framebuffer, render_frame};
+use super::view_mode::ViewMode;
 use crate::Error;
+use crate::export::{StillFormat, StillRequest, write_png, write_still};
+use crate::quality::Quality;
+use crate::raster::{Camera, PreparedScene};
+use crate::scene::Scene;
+use crate::still::{Recipe, StillSettings, Supersampling};
+use crate::surface::Tessellation;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::mpsc::{Receiver, TryRecvError, channel};
+use std::thread::JoinHandle;
 use std::time::{SystemTime, UNIX_EPOCH};
 
-/// Renders the app's current view at `size` and writes it to a new file in `dir`; returns its path.
-pub fn export_view(app: &App, size: (u32, u32), dir: &Path) -> Result<PathBuf, Error> {
-    let view = View::of(app);
-    let mut framebuffer = empty_framebuffer();
-    render_frame(&view, size.0, size.1, &mut framebuffer);
-    let stem = format!("bumpwork-{}-{}", slug(&app.scene().name), view.mode.name());
-    let path = unique_path(dir, &stem);
-    crate::export::write_png(&framebuffer, &path)?;
-    Ok(path)
+/// What an export needs, owned, so it can render while the workbench goes on.
+struct ExportOrder {
+    source: String,
+    scene: Scene,
+    camera: Camera,
+    mode: ViewMode,
+    quality: Quality,
+    settings: StillSettings,
+    path: PathBuf,
+}
+
+/// An export rendering in the background. Dropped while running (quit, panic), it is cancelled
+/// and waited for, so its temporary file is removed and no partial file is left.
+pub struct ExportJob {
+    pub path: PathBuf,
+    cancel: Arc<AtomicBool>,
+    done: Receiver<Result<(), Error>>,
+    thread: Option<JoinHandle<()>>,
+}
+
+impl ExportJob {
+    /// Starts exporting the app's current view at `size` with `samples` into a new file in `dir`.
+    pub fn start(app: &App, size: (u32, u32), samples: u32, dir: &Path) -> ExportJob {
+        let view = View::of(app);
+        let stem = format!("bumpwork-{}-{}", slug(&app.scene().name), view.mode.name());
+        // The recipe records the preset's base density and interpolation; its shading knobs
+        // reach the picture only in the views drawn by `render_frame` (wireframe, error).
+        let order = ExportOrder {
+            source: app.scenes[app.scene_index].clone(),
+            scene: app.scene().clone(),
+            camera: view.camera.clone(),
+            mode: view.mode,
+            quality: view.quality,
+            settings: StillSettings {
+                size,
+                supersampling: Supersampling {
+                    samples,
+                    ..Supersampling::default()
+                },
+                tessellation: Tessellation {
+                    density: view.quality.tessellation,
+                },
+                interpolation: view.quality.interpolation,
+                time: view.time,
+                mode: view.mode.shader_mode(),
+            },
+            path: unique_path(dir, &stem),
+        };
+        let cancel = Arc::new(AtomicBool::new(false));
+        let (sender, done) = channel();
+        let path = order.path.clone();
+        let stop = Arc::clone(&cancel);
+        let thread = std::thread::spawn(move || {
+            let _ = sender.send(export(order, &stop));
+        });
+        ExportJob {
+            path,
+            cancel,
+            done,
+            thread: Some(thread),
+        }
+    }
+
+    /// The outcome once the export has finished.
+    pub fn finished(&mut self) -> Option<Result<(), Error>> {
+        match self.done.try_recv() {
+            Ok(result) => Some(result),
+            Err(TryRecvError::Empty) => None,
+            Err(TryRecvError::Disconnected) => Some(Err(Error::write(
+                &self.path,
+                "the export stopped unexpectedly",
+            ))),
+        }
+    }
+}
+
+impl Drop for ExportJob {
+    fn drop(&mut self) {
+        self.cancel.store(true, Ordering::Relaxed);
+        if let Some(thread) = self.thread.take() {
+            let _ = thread.join();
+        }
+    }
+}
+
+fn export(order: ExportOrder, cancel: &AtomicBool) -> Result<(), Error> {
+    let prepared = PreparedScene::new(order.scene, order.settings.tessellation);
+    if matches!(order.mode, ViewMode::Wireframe | ViewMode::Error) {
+        // The wireframe is drawn over the picture and the error view is a heat map against the
+        // reference, not shading: no recipe can make them again.
+        let view = View {
+            prepared: &prepared,
+            camera: order.camera,
+            mode: order.mode,
+            time: order.settings.time,
+            quality: order.quality,
+        };
+        let mut framebuffer = empty_framebuffer();
+        let (width, height) = order.settings.size;
+        render_frame(&view, width, height, &mut framebuffer);
+        return write_png(&framebuffer, &order.path);
+    }
+    let recipe = Recipe::capture(
+        &order.source,
+        &prepared.scene,
+        &order.camera,
+        &order.settings,
+    );
+    let scene_text = crate::scene::source_text(&order.source)?;
+    let request = StillRequest {
+        prepared: &prepared,
+        camera: &order.camera,
+        settings: order.settings,
+        scene_text: &scene_text,
+        recipe: &recipe,
+    };
+    let interrupted = || cancel.load(Ordering::Relaxed).then_some(0);
+    write_still(
+        &request,
+        &order.path,
+        StillFormat::Png,
+        &mut |_| {},
+        &interrupted,
+    )?;
+    Ok(())
 }
 
 /// `dir/stem-SECONDS.png`, or with `-2`, `-3`… added if that exists: never overwrites a file.

@@ -14,6 +14,8 @@ pub struct WorkbenchOptions {
     pub mouse: bool,
     /// Pixel size of exported PNGs.
     pub export_size: (u32, u32),
+    /// Samples per pixel of exported PNGs.
+    pub export_samples: u32,
     /// Reload scene, pattern and image files when they change on disk.
     pub watch: bool,
     /// The quality preset to start with (`Q` cycles them).
@@ -32,6 +34,7 @@ impl Default for WorkbenchOptions {
             fps: 30,
             mouse: true,
             export_size: (1920, 1080),
+            export_samples: 4,
             watch: true,
             quality: QualityPreset::default(),
         }

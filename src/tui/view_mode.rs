@@ -48,7 +48,7 @@ impl ViewMode {
     }
 
     /// The scene shader's mode that draws this view (the wireframe is drawn over shading).
-    fn shader_mode(self) -> ShaderMode {
+    pub(crate) fn shader_mode(self) -> ShaderMode {
         match self {
             ViewMode::Shaded | ViewMode::Wireframe | ViewMode::Error => ShaderMode::Shaded,
             ViewMode::Height => ShaderMode::Height,

@@ -1,0 +1,131 @@
+//! `bumpwork gallery`: every built-in scene (the seed's figures) as a still carrying its recipe,
+//! and a contact sheet of them all.
+
+use super::interrupt::Interrupt;
+use super::progress::RenderProgress;
+use bumpwork::Error;
+use bumpwork::export::{
+    SheetLayout, SheetPicture, StillFormat, StillRequest, draw_sheet, read_png_rgb8, write_sheet,
+    write_still,
+};
+use bumpwork::raster::{Interpolation, PreparedScene};
+use bumpwork::shade::ViewMode;
+use bumpwork::still::{MAX_SAMPLES, Recipe, StillSettings, Supersampling};
+use bumpwork::surface::Tessellation;
+use std::path::{Path, PathBuf};
+
+pub const SHEET_NAME: &str = "contact-sheet.png";
+
+#[derive(clap::Args)]
+pub struct GalleryArgs {
+    /// The directory to write into (made if missing).
+    #[arg(short, long)]
+    output: PathBuf,
+    /// Size of each still, WIDTHxHEIGHT.
+    #[arg(long, default_value = "640x480", value_parser = super::parse_size)]
+    size: (u32, u32),
+    /// Samples per pixel of each still.
+    #[arg(long, default_value_t = 4,
+          value_parser = clap::value_parser!(u32).range(1..=MAX_SAMPLES as i64))]
+    samples: u32,
+    /// Size of each thumbnail on the contact sheet, WIDTHxHEIGHT.
+    #[arg(long, default_value = "240x180", value_parser = super::parse_size)]
+    thumbnail: (u32, u32),
+    /// Thumbnails across the contact sheet.
+    #[arg(long, default_value_t = 7, value_parser = clap::value_parser!(u32).range(1..=64))]
+    columns: u32,
+    /// Only these built-in scenes, comma-separated [default: all].
+    #[arg(long, value_delimiter = ',')]
+    scenes: Vec<String>,
+}
+
+pub fn run(args: GalleryArgs) -> Result<(), Error> {
+    let names = scene_names(&args.scenes)?;
+    std::fs::create_dir_all(&args.output).map_err(|e| Error::write(&args.output, e))?;
+    let interrupt = Interrupt::watch();
+    let mut progress = RenderProgress::new("gallery");
+    let mut pictures = Vec::new();
+    for (i, name) in names.iter().enumerate() {
+        let path = args.output.join(format!("{name}.png"));
+        let mut report = |f: f64| progress.update((i as f64 + f) / names.len() as f64);
+        render_scene(name, &args, &path, &mut report, &interrupt)?;
+        let (width, height, rgb) = read_png_rgb8(&path)?;
+        pictures.push(SheetPicture {
+            label: name.clone(),
+            width,
+            height,
+            rgb,
+        });
+    }
+    progress.finish();
+    let layout = SheetLayout {
+        thumbnail: args.thumbnail,
+        columns: args.columns,
+    };
+    let sheet_path = args.output.join(SHEET_NAME);
+    let sheet = draw_sheet(&pictures, layout)
+        .ok_or_else(|| Error::write(&sheet_path, "the contact sheet is too large"))?;
+    write_sheet(&sheet, &sheet_path)?;
+    println!(
+        "{} stills and {} in {}",
+        names.len(),
+        SHEET_NAME,
+        super::sanitized(&args.output.display().to_string())
+    );
+    Ok(())
+}
+
+fn scene_names(asked: &[String]) -> Result<Vec<String>, Error> {
+    if asked.is_empty() {
+        return Ok(bumpwork::scene::PRESET_NAMES
+            .iter()
+            .map(|s| s.to_string())
+            .collect());
+    }
+    asked
+        .iter()
+        .map(|name| match bumpwork::scene::preset(name) {
+            Some(_) => Ok(name.clone()),
+            None => Err(Error::UnknownScene {
+                name: name.clone(),
+                suggestion: None,
+            }),
+        })
+        .collect()
+}
+
+fn render_scene(
+    name: &str,
+    args: &GalleryArgs,
+    path: &Path,
+    progress: &mut dyn FnMut(f64),
+    interrupt: &Interrupt,
+) -> Result<(), Error> {
+    let scene = bumpwork::scene::load_source(name)?;
+    let camera = scene.camera.clone();
+    let settings = StillSettings {
+        size: args.size,
+        supersampling: Supersampling {
+            samples: args.samples,
+            ..Supersampling::default()
+        },
+        tessellation: Tessellation::default(),
+        interpolation: Interpolation::PerspectiveCorrect,
+        time: 0.0,
+        mode: ViewMode::Shaded,
+    };
+    let prepared = PreparedScene::new(scene, settings.tessellation);
+    let recipe = Recipe::capture(name, &prepared.scene, &camera, &settings);
+    let scene_text = bumpwork::scene::source_text(name)?;
+    let request = StillRequest {
+        prepared: &prepared,
+        camera: &camera,
+        settings,
+        scene_text: &scene_text,
+        recipe: &recipe,
+    };
+    write_still(&request, path, StillFormat::Png, progress, &|| {
+        interrupt.received()
+    })?;
+    Ok(())
+}

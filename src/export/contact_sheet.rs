@@ -1,0 +1,116 @@
+//! The gallery's contact sheet: every still as a labelled thumbnail in one grid, scaled with
+//! tiny-skia's filtered pixmap drawing (bicubic) so thumbnails do not alias.
+
+use super::label_font::{GLYPH_HEIGHT, text_pixels, text_width};
+use super::{PngStill, metadata::SOFTWARE};
+use crate::Error;
+use crate::still::RowSink;
+use std::path::Path;
+use tiny_skia::{Color, FilterQuality, IntSize, Pixmap, PixmapPaint, Transform};
+
+/// One picture for the sheet: 8-bit sRGB rows.
+pub struct SheetPicture {
+    pub label: String,
+    pub width: u32,
+    pub height: u32,
+    pub rgb: Vec<u8>,
+}
+
+/// The sheet's layout: thumbnail size and columns.
+#[derive(Clone, Copy, Debug)]
+pub struct SheetLayout {
+    pub thumbnail: (u32, u32),
+    pub columns: u32,
+}
+
+const GAP: u32 = 8;
+const LABEL_SCALE: u32 = 2;
+const LABEL_HEIGHT: u32 = GLYPH_HEIGHT * LABEL_SCALE + 2 * 4;
+
+/// Draws the sheet in memory: `columns` thumbnails across, labels under each.
+pub fn draw_sheet(pictures: &[SheetPicture], layout: SheetLayout) -> Option<Pixmap> {
+    let (tw, th) = layout.thumbnail;
+    let columns = layout.columns.clamp(1, pictures.len().max(1) as u32);
+    let rows = (pictures.len() as u32).div_ceil(columns).max(1);
+    let cell = (tw + GAP, th + LABEL_HEIGHT + GAP);
+    let mut sheet = Pixmap::new(columns * cell.0 + GAP, rows * cell.1 + GAP)?;
+    sheet.fill(Color::from_rgba8(24, 24, 24, 255));
+    for (i, picture) in pictures.iter().enumerate() {
+        let (col, row) = (i as u32 % columns, i as u32 / columns);
+        let (x, y) = (GAP + col * cell.0, GAP + row * cell.1);
+        draw_thumbnail(&mut sheet, picture, (x, y), (tw, th))?;
+        draw_label(&mut sheet, &picture.label, (x, y + th + 4), tw);
+    }
+    Some(sheet)
+}
+
+/// Scales `picture` to fit `size` (keeping its aspect) and centres it in the box at `at`.
+fn draw_thumbnail(
+    sheet: &mut Pixmap,
+    picture: &SheetPicture,
+    at: (u32, u32),
+    size: (u32, u32),
+) -> Option<()> {
+    let source = rgba_pixmap(picture)?;
+    let scale = (size.0 as f32 / picture.width as f32).min(size.1 as f32 / picture.height as f32);
+    let drawn = (picture.width as f32 * scale, picture.height as f32 * scale);
+    let left = at.0 as f32 + (size.0 as f32 - drawn.0) / 2.0;
+    let top = at.1 as f32 + (size.1 as f32 - drawn.1) / 2.0;
+    let paint = PixmapPaint {
+        quality: FilterQuality::Bicubic,
+        ..PixmapPaint::default()
+    };
+    let transform = Transform::from_row(scale, 0.0, 0.0, scale, left, top);
+    sheet.draw_pixmap(0, 0, source.as_ref(), &paint, transform, None);
+    Some(())
+}
+
+fn rgba_pixmap(picture: &SheetPicture) -> Option<Pixmap> {
+    let rgba = picture
+        .rgb
+        .chunks_exact(3)
+        .flat_map(|p| [p[0], p[1], p[2], 255])
+        .collect();
+    Pixmap::from_vec(rgba, IntSize::from_wh(picture.width, picture.height)?)
+}
+
+/// The label centred under its thumbnail: at half size if that makes it fit, else cut.
+fn draw_label(sheet: &mut Pixmap, label: &str, at: (u32, u32), width: u32) {
+    let scale = if text_width(label, LABEL_SCALE) <= width {
+        LABEL_SCALE
+    } else {
+        1
+    };
+    let fits: String = label
+        .chars()
+        .take(((width / scale + 1) / 6) as usize)
+        .collect();
+    let top = at.1 + (GLYPH_HEIGHT * (LABEL_SCALE - scale)) / 2;
+    let left = at.0 + (width.saturating_sub(text_width(&fits, scale))) / 2;
+    let (sheet_w, sheet_h) = (sheet.width(), sheet.height());
+    let data = sheet.data_mut();
+    for (dx, dy) in text_pixels(&fits, scale) {
+        let (x, y) = (left + dx, top + dy);
+        if x < sheet_w && y < sheet_h {
+            let i = 4 * (y * sheet_w + x) as usize;
+            data[i..i + 4].copy_from_slice(&[230, 230, 230, 255]);
+        }
+    }
+}
+
+/// Writes the sheet as an RGB PNG, atomically.
+pub fn write_sheet(sheet: &Pixmap, path: &Path) -> Result<(), Error> {
+    let rgb: Vec<u8> = sheet
+        .data()
+        .chunks_exact(4)
+        .flat_map(|p| [p[0], p[1], p[2]])
+        .collect();
+    let program = format!("bumpwork {}", env!("CARGO_PKG_VERSION"));
+    let mut png = PngStill::create(
+        path,
+        (sheet.width(), sheet.height()),
+        &[(SOFTWARE, program)],
+    )?;
+    png.write_rows(&rgb).map_err(|e| Error::write(path, e))?;
+    png.finish()
+}
