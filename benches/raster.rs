@@ -4,15 +4,17 @@
 //!
 //! Run: `cargo bench --bench raster`.
 
+mod bench_support;
+
+use bench_support::sphere_scene;
 use bumpwork::measure::Timing;
 use bumpwork::raster::{
-    Camera, Fragment, FrameObject, Framebuffer, PerFragment, PreparedScene, RenderTarget, Viewport,
+    Fragment, FrameObject, Framebuffer, PerFragment, PreparedScene, RenderTarget, Viewport,
     frame_objects, render_into, screen_triangles,
 };
-use bumpwork::scene::{Light, Material, Object, Scene};
 use bumpwork::shade::LitShader;
-use bumpwork::surface::{Sphere, Surface, Tessellation};
-use glam::{DVec3, Vec3};
+use bumpwork::surface::Tessellation;
+use glam::Vec3;
 
 /// Frames per measurement; `BUMPWORK_BENCH_RUNS=1` makes a single-frame run for callgrind.
 fn runs() -> usize {
@@ -20,41 +22,6 @@ fn runs() -> usize {
         .ok()
         .and_then(|r| r.parse().ok())
         .unwrap_or(31)
-}
-
-fn sphere_scene() -> Scene {
-    // r / d = sin(atan(0.5·tan 20°)) puts the 1-unit sphere 540 of 1080 pixels high at fov 40°.
-    let half_angle = (0.5 * 20f64.to_radians().tan()).atan();
-    let distance = 1.0 / half_angle.sin();
-    Scene {
-        name: "bench-sphere".into(),
-        camera: Camera {
-            eye: DVec3::new(0.0, 0.0, distance),
-            target: DVec3::ZERO,
-            up: Vec3::Y,
-            vfov_degrees: 40.0,
-            near: 0.1,
-            far: 100.0,
-        },
-        background: Vec3::ZERO,
-        ambient: Vec3::splat(0.05),
-        lights: vec![Light::Point {
-            position: DVec3::new(-4.0, 4.0, 6.0),
-            color: Vec3::ONE,
-        }],
-        objects: vec![Object {
-            surface: Surface::Sphere(Sphere {
-                center: DVec3::ZERO,
-                radius: 1.0,
-            }),
-            material: Material {
-                color: Vec3::new(0.8, 0.5, 0.3),
-                specular: 0.4,
-                shininess: 32.0,
-                ..Material::default()
-            },
-        }],
-    }
 }
 
 fn main() {

@@ -34,11 +34,18 @@ fn triangle_scene() -> (PreparedScene, Camera) {
     (PreparedScene::new(scene, Tessellation::default()), camera)
 }
 
-fn white() -> PerFragment<impl Fn(&FrameObject, &Fragment) -> Vec3 + Sync> {
-    PerFragment(|_: &FrameObject, _: &Fragment| Vec3::ONE)
+type Shader = fn(&FrameObject, &Fragment) -> Vec3;
+
+fn white() -> PerFragment<Shader> {
+    PerFragment(|_, _| Vec3::ONE)
 }
 
-fn render(samples: u32, filter: ResolveFilter, full: Viewport) -> Framebuffer {
+/// Runs `work` on a band job over the white triangle.
+fn with_job<R>(
+    full: Viewport,
+    supersampling: Supersampling,
+    work: impl FnOnce(&BandJob<PerFragment<Shader>>) -> R,
+) -> R {
     let (prepared, camera) = triangle_scene();
     let shader = white();
     let job = BandJob {
@@ -46,10 +53,17 @@ fn render(samples: u32, filter: ResolveFilter, full: Viewport) -> Framebuffer {
         camera: &camera,
         full,
         shader: &shader,
-        supersampling: Supersampling { samples, filter },
+        supersampling,
         interpolation: Interpolation::PerspectiveCorrect,
     };
-    render_supersampled(&job, &mut BandBuffers::default()).0
+    work(&job)
+}
+
+fn render(samples: u32, filter: ResolveFilter, full: Viewport) -> Framebuffer {
+    let supersampling = Supersampling { samples, filter };
+    with_job(full, supersampling, |job| {
+        render_supersampled(job, &mut BandBuffers::default()).0
+    })
 }
 
 const VIEW: Viewport = Viewport {
@@ -104,60 +118,43 @@ fn a_still_streamed_in_narrow_bands_matches_the_whole_render() {
         width: 150,
         height: 200,
     };
-    let (prepared, camera) = triangle_scene();
-    let shader = white();
-    let job = BandJob {
-        prepared: &prepared,
-        camera: &camera,
-        full,
-        shader: &shader,
-        supersampling: Supersampling {
-            samples: 4,
-            filter: ResolveFilter::Tent,
-        },
-        interpolation: Interpolation::PerspectiveCorrect,
+    let supersampling = Supersampling {
+        samples: 4,
+        filter: ResolveFilter::Tent,
     };
-    let whole = render_supersampled(&job, &mut BandBuffers::default()).0;
-    let mut rows = Rows(Vec::new());
-    let mut fractions = Vec::new();
-    // A budget for a single 64-row band: 200 rows take 4 bands (the last one short).
-    let budget = 150 * 64 * 28;
-    let stats = stream_still(&job, budget, &mut rows, &mut |f| fractions.push(f), &|| {
-        true
+    with_job(full, supersampling, |job| {
+        let whole = render_supersampled(job, &mut BandBuffers::default()).0;
+        let mut rows = Rows(Vec::new());
+        let mut fractions = Vec::new();
+        // A budget for a single 64-row band: 200 rows take 4 bands (the last one short).
+        let budget = 150 * 64 * 28;
+        let stats = stream_still(job, budget, &mut rows, &mut |f| fractions.push(f), &|| true);
+        assert!(stats.is_ok());
+        assert_eq!(fractions.len(), 4 * 4, "one report per pass");
+        assert_eq!(fractions.last(), Some(&1.0));
+        let expected: Vec<u8> = whole.to_srgb8().into_iter().flatten().collect();
+        assert_eq!(rows.0.len(), expected.len());
+        let differing = rows
+            .0
+            .iter()
+            .zip(&expected)
+            .filter(|(a, b)| a.abs_diff(**b) > 1)
+            .count();
+        // Bands see the same projection; only float rounding of the window transform can move an
+        // edge sample, and then by one level of one sample.
+        assert!(
+            differing <= expected.len() / 1000,
+            "{differing} bytes differ"
+        );
     });
-    assert!(stats.is_ok());
-    assert_eq!(fractions.len(), 4 * 4, "one report per pass");
-    assert_eq!(fractions.last(), Some(&1.0));
-    let expected: Vec<u8> = whole.to_srgb8().into_iter().flatten().collect();
-    assert_eq!(rows.0.len(), expected.len());
-    let differing = rows
-        .0
-        .iter()
-        .zip(&expected)
-        .filter(|(a, b)| a.abs_diff(**b) > 1)
-        .count();
-    // Bands see the same projection; only float rounding of the window transform can move an
-    // edge sample, and then by one level of one sample.
-    assert!(
-        differing <= expected.len() / 1000,
-        "{differing} bytes differ"
-    );
 }
 
 #[test]
 fn a_cancelled_still_stops_before_writing() {
-    let (prepared, camera) = triangle_scene();
-    let shader = white();
-    let job = BandJob {
-        prepared: &prepared,
-        camera: &camera,
-        full: VIEW,
-        shader: &shader,
-        supersampling: Supersampling::default(),
-        interpolation: Interpolation::PerspectiveCorrect,
-    };
-    let mut rows = Rows(Vec::new());
-    let result = stream_still(&job, 1 << 20, &mut rows, &mut |_| {}, &|| false);
-    assert!(result.is_err());
-    assert!(rows.0.is_empty());
+    with_job(VIEW, Supersampling::default(), |job| {
+        let mut rows = Rows(Vec::new());
+        let result = stream_still(job, 1 << 20, &mut rows, &mut |_| {}, &|| false);
+        assert!(result.is_err());
+        assert!(rows.0.is_empty());
+    });
 }

@@ -1,0 +1,179 @@
+//! bumpwork against euc (crates.io), a Rust software rasterizer, on the same frame: a lit,
+//! textured 128×64 sphere 540 pixels high at 1920×1080, the chelsea photograph sampled bilinearly
+//! (both through bumpwork's sampler, so the rasterizers and pipelines are what differ) and
+//! per-pixel Blinn-Phong with one point light. euc is single-threaded; bumpwork is measured on one
+//! thread and on all. Medians with min–max spread over the same number of frames, in one run.
+//!
+//! Run: `cargo bench --bench peer_euc`.
+
+mod bench_support;
+
+use bench_support::sphere_scene;
+use bumpwork::measure::Timing;
+use bumpwork::raster::{
+    Framebuffer, PreparedScene, RenderTarget, Viewport, linear_to_srgb8, render_into,
+};
+use bumpwork::scene::{ImageTexture, Light, Texturing};
+use bumpwork::shade::LitShader;
+use bumpwork::surface::{Mesh, Tessellation};
+use bumpwork::texture::{
+    Filter, Footprint, Mapping, Sampler, Spherical, Texture, Wrap, load_texture,
+};
+use euc::buffer::Buffer2d;
+use euc::rasterizer::{BackfaceCullingDisabled, Triangles};
+use euc::{DepthStrategy, Pipeline};
+use glam::{Mat4, Vec2, Vec3};
+use std::path::Path;
+use std::sync::Arc;
+
+const WIDTH: usize = 1920;
+const HEIGHT: usize = 1080;
+
+fn runs() -> usize {
+    std::env::var("BUMPWORK_BENCH_RUNS")
+        .ok()
+        .and_then(|r| r.parse().ok())
+        .unwrap_or(15)
+}
+
+fn bilinear() -> Sampler {
+    Sampler {
+        filter: Filter::Bilinear,
+        wrap_s: Wrap::Repeat,
+        wrap_t: Wrap::Clamp,
+    }
+}
+
+/// The textured sphere as euc sees it: indexed vertices, per-pixel lighting.
+struct EucSphere<'a> {
+    view_projection: Mat4,
+    mesh: &'a Mesh,
+    /// The eye relative to the sphere's centre.
+    eye: Vec3,
+    light: Vec3,
+    texture: &'a Texture,
+    ambient: Vec3,
+    specular: f32,
+    shininess: f32,
+}
+
+impl Pipeline for EucSphere<'_> {
+    type Vertex = u32;
+    /// Normal, position, (s,t).
+    type VsOut = (vek::Vec3<f32>, vek::Vec3<f32>, vek::Vec2<f32>);
+    type Pixel = u32;
+
+    fn vert(&self, index: &u32) -> ([f32; 4], Self::VsOut) {
+        let p = self.mesh.positions[*index as usize];
+        let uv = self.mesh.uvs[*index as usize];
+        let clip = self.view_projection * (p - self.eye).extend(1.0);
+        let st = vek::Vec2::new(uv.x / 720.0, uv.y / 360.0);
+        (
+            clip.to_array(),
+            (
+                vek::Vec3::from(p.to_array()),
+                vek::Vec3::from(p.to_array()),
+                st,
+            ),
+        )
+    }
+
+    fn get_depth_strategy(&self) -> DepthStrategy {
+        DepthStrategy::IfLessWrite
+    }
+
+    fn frag(&self, (normal, position, st): &Self::VsOut) -> u32 {
+        let n = Vec3::from_array(normal.into_array()).normalize_or_zero();
+        let p = Vec3::from_array(position.into_array());
+        let texel = self
+            .texture
+            .sample(&bilinear(), Vec2::new(st.x, st.y), Footprint::POINT);
+        let albedo = texel.truncate();
+        let to_light = (self.light - p).normalize_or_zero();
+        let to_eye = (self.eye - p).normalize_or_zero();
+        let half = (to_light + to_eye).normalize_or_zero();
+        let diffuse = n.dot(to_light).max(0.0);
+        let specular = n.dot(half).max(0.0).powf(self.shininess) * self.specular;
+        let c = albedo * (self.ambient + Vec3::splat(diffuse)) + Vec3::splat(specular);
+        let [r, g, b] = c.to_array().map(linear_to_srgb8);
+        u32::from_be_bytes([255, r, g, b])
+    }
+}
+
+fn main() {
+    let texture = Arc::new(load_texture("chelsea", Path::new(".")).expect("chelsea"));
+    let mut scene = sphere_scene();
+    scene.objects[0].material.texture = Some(Texturing::Image(ImageTexture {
+        name: "chelsea".into(),
+        texture: Arc::clone(&texture),
+        mapping: Mapping::Spherical(Spherical::new(Vec3::ZERO)),
+        sampler: bilinear(),
+    }));
+    let camera = scene.camera.clone();
+    let Light::Point { position, .. } = scene.lights[0] else {
+        unreachable!("the bench sphere has a point light")
+    };
+    let material = scene.objects[0].material.clone();
+    let ambient = scene.ambient;
+    let prepared = PreparedScene::new(scene, Tessellation { density: 64 });
+    let viewport = Viewport {
+        width: WIDTH as u32,
+        height: HEIGHT as u32,
+    };
+    let target = RenderTarget::new(&camera, viewport);
+    let shader = LitShader::new(&prepared.scene, &camera);
+    let mut framebuffer = Framebuffer::new(0, 0, Vec3::ZERO);
+
+    let mesh = &prepared.objects[0].mesh;
+    let indices: Vec<u32> = mesh.indices.iter().flatten().copied().collect();
+    let euc_sphere = EucSphere {
+        view_projection: camera.view_projection(viewport.aspect()),
+        mesh,
+        eye: camera.eye.as_vec3(),
+        light: position.as_vec3(),
+        texture: &texture,
+        ambient,
+        specular: material.specular,
+        shininess: material.shininess,
+    };
+    let mut color = Buffer2d::new([WIDTH, HEIGHT], 0u32);
+    let mut depth = Buffer2d::new([WIDTH, HEIGHT], 1.0f32);
+    let euc = Timing::measure(2, runs(), || {
+        euc::Target::clear(&mut color, 0);
+        euc::Target::clear(&mut depth, 1.0);
+        euc_sphere.draw::<Triangles<'_, Buffer2d<f32>, BackfaceCullingDisabled>, _>(
+            &indices,
+            &mut color,
+            Some(&mut depth),
+        );
+    });
+    let euc_pixels = color.as_ref().iter().filter(|&&c| c != 0).count();
+
+    println!(
+        "textured lit 128x64 sphere at {WIDTH}x{HEIGHT}, bilinear, {} frames each",
+        runs()
+    );
+    println!(
+        "  euc 0.5 (1 thread):      {}  ({euc_pixels} pixels drawn)",
+        euc.summary_ms()
+    );
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+    for threads in [1, cores] {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .expect("thread pool");
+        let mut fragments = 0;
+        let ours = pool.install(|| {
+            Timing::measure(2, runs(), || {
+                fragments = render_into(&prepared, &target, &shader, &mut framebuffer).fragments;
+            })
+        });
+        let ratio = euc.median.as_secs_f64() / ours.median.as_secs_f64();
+        println!(
+            "  bumpwork ({threads} thread{}):  {}  ({fragments} pixels shaded) — {ratio:.2}x euc's speed",
+            if threads == 1 { "" } else { "s" },
+            ours.summary_ms()
+        );
+    }
+}
