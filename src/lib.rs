@@ -1,10 +1,12 @@
 //! bumpwork: a CPU rasterizer and terminal workbench for Blinn bump maps and texture maps.
 
+pub mod bench;
 pub mod diagnostic;
 mod error;
 pub mod export;
 pub mod measure;
 pub mod pattern;
+pub mod quality;
 pub mod raster;
 pub mod reference;
 pub mod scene;

@@ -26,6 +26,9 @@ enum Command {
     Gallery(commands::gallery::GalleryArgs),
     /// Check pattern files, scene files and images without rendering.
     Check(commands::check::CheckArgs),
+    /// Time every quality preset and knob on standard scenes and measure their error against
+    /// the exact reference.
+    Bench(commands::bench::BenchArgs),
     /// Open the terminal workbench on scenes (default: every built-in scene).
     View(commands::view::ViewArgs),
 }
@@ -61,6 +64,7 @@ fn run(cli: Cli) -> Result<(), Error> {
         Some(Command::Check(args)) => commands::check::run(args),
         Some(Command::Gallery(args)) => commands::gallery::run(args),
         Some(Command::View(args)) => commands::view::run(args),
+        Some(Command::Bench(args)) => commands::bench::run(args),
         None => commands::view::run(Default::default()),
     }
 }

@@ -1,5 +1,6 @@
 //! One file per subcommand; `main.rs` only parses and dispatches.
 
+pub mod bench;
 pub mod check;
 pub mod gallery;
 mod interrupt;

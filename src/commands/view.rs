@@ -2,7 +2,7 @@
 
 use bumpwork::Error;
 use bumpwork::term::{ColorChoice, GlyphSet};
-use bumpwork::tui::WorkbenchOptions;
+use bumpwork::tui::{QualityPreset, WorkbenchOptions};
 
 #[derive(clap::Args, Default)]
 pub struct ViewArgs {
@@ -23,6 +23,9 @@ pub struct ViewArgs {
     /// Do not reload scene, pattern and image files when they change on disk.
     #[arg(long)]
     no_watch: bool,
+    /// Quality preset to start with: draft, interactive, high or exact (`Q` cycles them).
+    #[arg(long, default_value = "interactive", value_parser = QualityPreset::named)]
+    quality: Option<QualityPreset>,
     /// Size of PNGs the export key writes, WIDTHxHEIGHT.
     #[arg(long, default_value = "1920x1080", value_parser = super::parse_size)]
     export_size: Option<(u32, u32)>,
@@ -55,6 +58,7 @@ pub fn run(args: ViewArgs) -> Result<(), Error> {
             args.export_samples
         },
         watch: !args.no_watch,
+        quality: args.quality.unwrap_or_default(),
     };
     bumpwork::tui::run(&options)
 }

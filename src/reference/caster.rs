@@ -40,12 +40,24 @@ pub fn render_reference_into(
     shader: &impl FragmentShader,
     framebuffer: &mut Framebuffer,
 ) -> ReferenceStats {
+    let rays = ViewRays::new(camera, viewport);
+    render_rays_into(prepared, camera, viewport, rays, shader, framebuffer)
+}
+
+/// Ray casts a frame through `rays` (pixel centres, or one sample position of each pixel).
+pub fn render_rays_into(
+    prepared: &PreparedScene,
+    camera: &Camera,
+    viewport: Viewport,
+    rays: ViewRays,
+    shader: &impl FragmentShader,
+    framebuffer: &mut Framebuffer,
+) -> ReferenceStats {
     framebuffer.resize(viewport.width, viewport.height);
     if viewport.width == 0 || viewport.height == 0 {
         return ReferenceStats::default();
     }
     let objects = frame_objects(prepared, camera);
-    let rays = ViewRays::new(camera, viewport);
     let background = prepared.scene.background;
     let width = viewport.width as usize;
     let (fragments, flattened) = framebuffer
@@ -129,11 +141,12 @@ fn fragment_at(
     let surface = &objects[index].prepared.surface;
     let frame = surface.frame(hit.uv.x, hit.uv.y);
     let domain = surface.domain();
+    let step = |per_pixel: DVec3| per_pixel * rays.footprint;
     Fragment {
         object: index as u32,
         uv: hit.uv,
-        duv_dx: uv_derivatives(&frame, hit.t, direction, rays.per_pixel_x, domain),
-        duv_dy: uv_derivatives(&frame, hit.t, direction, rays.per_pixel_y, domain),
+        duv_dx: uv_derivatives(&frame, hit.t, direction, step(rays.per_pixel_x), domain),
+        duv_dy: uv_derivatives(&frame, hit.t, direction, step(rays.per_pixel_y), domain),
         depth: hit.t as f32,
         x,
         y,

@@ -25,7 +25,9 @@ mod triangle;
 mod view_rays;
 mod wave;
 
-pub use caster::{ReferenceStats, cast_pixel, render_reference, render_reference_into};
+pub use caster::{
+    ReferenceStats, cast_pixel, render_rays_into, render_reference, render_reference_into,
+};
 pub use differentials::uv_derivatives;
 pub use heat_map::error_heat_map;
 pub use intersect::{intersect, surface_uv};

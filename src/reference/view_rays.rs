@@ -12,8 +12,11 @@ pub struct ViewRays {
     /// One pixel to the right and one pixel down, as changes of the scaled direction.
     pub per_pixel_x: DVec3,
     pub per_pixel_y: DVec3,
-    /// The direction through the image's top-left corner.
+    /// The direction through the image's top-left corner (shifted with the sample offset).
     top_left: DVec3,
+    /// Scales the per-pixel steps used for texture footprints: 1 at one sample per pixel, the
+    /// sample spacing when supersampling (as `RenderTarget::footprint` does for the rasterizer).
+    pub footprint: f64,
 }
 
 impl ViewRays {
@@ -36,6 +39,17 @@ impl ViewRays {
             per_pixel_x,
             per_pixel_y,
             top_left: forward.as_dvec3() - right * half_w + up * half_h,
+            footprint: 1.0,
+        }
+    }
+
+    /// The rays through each pixel's centre moved by `offset` pixels (right, down), with texture
+    /// footprints scaled by `footprint`: one pass of a supersampled reference.
+    pub fn at_sample(self, offset: glam::DVec2, footprint: f64) -> ViewRays {
+        ViewRays {
+            top_left: self.top_left + self.per_pixel_x * offset.x + self.per_pixel_y * offset.y,
+            footprint,
+            ..self
         }
     }
 

@@ -3,13 +3,17 @@
 
 mod bake;
 mod bump;
+mod gradient;
 mod lighting;
 mod pattern_batch;
 mod scene_shader;
+mod vertex_normals;
 mod view_mode;
 
 pub use bake::{bake_color, bake_height};
 pub use bump::{NormalForm, bumped_normal};
+pub use gradient::GradientMethod;
 pub use lighting::{FrameLights, blinn_phong, facing_sign};
 pub use scene_shader::{LitShader, ShadeScratch};
+pub use vertex_normals::{Interpolated, VertexNormals};
 pub use view_mode::ViewMode;

@@ -3,14 +3,18 @@
 //! Work the scene does not need is skipped: no texture, no sampling; no bump, no perturbation.
 
 use super::bump::{NormalForm, bumped_normal};
+use super::gradient::{GradientMethod, central_difference, shifted_fragments};
 use super::lighting::{FrameLights, blinn_phong, facing_sign};
 use super::pattern_batch::PatternBatch;
+use super::vertex_normals::VertexNormals;
 use super::view_mode::ViewMode;
+use crate::pattern::OutputKind;
 use crate::raster::{Camera, Fragment, FragmentShader, FrameObject};
 use crate::scene::{BumpSource, Scene, Texturing};
 use crate::surface::Frame;
 use crate::texture::{SurfacePoint, TextureMapping};
 use glam::{Vec2, Vec3};
+use std::sync::Arc;
 
 /// The default program for a scene: Blinn-Phong with textures and bump maps.
 pub struct LitShader {
@@ -19,6 +23,10 @@ pub struct LitShader {
     pub time: f64,
     pub mode: ViewMode,
     pub normal_form: NormalForm,
+    pub gradient: GradientMethod,
+    /// Per object of the prepared scene: shade with the tessellation's interpolated position and
+    /// normal instead of the exact surface frame (`None`: the exact frame).
+    pub vertex_normals: Option<Arc<[VertexNormals]>>,
     /// Depth that the depth view shows as mid-grey.
     pub depth_scale: f32,
 }
@@ -30,6 +38,8 @@ impl LitShader {
             time: 0.0,
             mode: ViewMode::Shaded,
             normal_form: NormalForm::Blinn,
+            gradient: GradientMethod::Exact,
+            vertex_normals: None,
             depth_scale: (camera.target - camera.eye).length() as f32,
         }
     }
@@ -46,6 +56,19 @@ pub struct ShadeScratch {
     heights: Vec<f32>,
     gradients: Vec<Vec2>,
     patterns: PatternBatch,
+    /// Inputs and outputs of shifted height evaluations (central differences, the seed lattice).
+    shifted: Shifted,
+}
+
+#[derive(Default)]
+struct Shifted {
+    fragments: Vec<Fragment>,
+    identity: Vec<u32>,
+    frames: Vec<Frame>,
+    heights: Vec<f32>,
+    gradients: Vec<Vec2>,
+    /// Heights at +u, −u, +v, −v.
+    around: [Vec<f32>; 4],
 }
 
 impl FragmentShader for LitShader {
@@ -76,7 +99,9 @@ impl FragmentShader for LitShader {
                 scratch.group_starts[object_index + 1],
             );
             if start < end {
-                flattened += self.shade_object(object, fragments, &order[start..end], scratch, out);
+                let group = &order[start..end];
+                flattened +=
+                    self.shade_object(object_index, object, fragments, group, scratch, out);
             }
         }
         scratch.order = order;
@@ -87,6 +112,7 @@ impl FragmentShader for LitShader {
 impl LitShader {
     fn shade_object(
         &self,
+        object_index: usize,
         object: &FrameObject,
         fragments: &[Fragment],
         group: &[u32],
@@ -100,6 +126,14 @@ impl LitShader {
             let uv = fragments[i as usize].uv;
             surface.frame(uv.x, uv.y)
         }));
+        if let Some(normals) = &self.vertex_normals {
+            interpolate_frames(
+                &normals[object_index],
+                fragments,
+                group,
+                &mut scratch.frames,
+            );
+        }
         let mut flattened = self.base_colors(object, fragments, group, scratch);
         flattened += self.bump_gradients(object, fragments, group, scratch);
         for (k, &i) in group.iter().enumerate() {
@@ -166,8 +200,8 @@ impl LitShader {
         }
     }
 
-    /// The bump height and its (u,v) gradient per fragment, into `scratch.heights` and
-    /// `scratch.gradients` (zero without a bump).
+    /// The bump height and its (u,v) gradient per fragment, by the shader's gradient method,
+    /// into `scratch.heights` and `scratch.gradients` (zero without a bump).
     fn bump_gradients(
         &self,
         object: &FrameObject,
@@ -175,47 +209,149 @@ impl LitShader {
         group: &[u32],
         scratch: &mut ShadeScratch,
     ) -> usize {
-        scratch.heights.clear();
-        scratch.heights.resize(group.len(), 0.0);
-        scratch.gradients.clear();
-        scratch.gradients.resize(group.len(), Vec2::ZERO);
+        let Some(bump) = &object.prepared.material.bump else {
+            reset(&mut scratch.heights, group.len(), 0.0);
+            reset(&mut scratch.gradients, group.len(), Vec2::ZERO);
+            return 0;
+        };
+        let gives_slope = matches!(&bump.source,
+            BumpSource::Pattern(b) if b.pattern.output() == OutputKind::Slope);
+        let flattened = match self.gradient {
+            GradientMethod::SeedLattice => {
+                let shifted = &mut scratch.shifted;
+                shifted_fragments(fragments, group, Vec2::floor, &mut shifted.fragments);
+                let flattened = self.shifted_bump(object, shifted, &mut scratch.patterns);
+                std::mem::swap(&mut scratch.heights, &mut shifted.heights);
+                std::mem::swap(&mut scratch.gradients, &mut shifted.gradients);
+                flattened
+            }
+            GradientMethod::CentralDifference { step } if !gives_slope => {
+                let flattened = self.bump_samples(object, fragments, group, scratch);
+                self.central_gradients(object, fragments, group, step, scratch);
+                flattened
+            }
+            _ => self.bump_samples(object, fragments, group, scratch),
+        };
+        let scale = bump.scale();
+        for (h, g) in scratch.heights.iter_mut().zip(&mut scratch.gradients) {
+            *h *= scale;
+            *g *= scale;
+        }
+        flattened
+    }
+
+    /// Replaces `scratch.gradients` by central differences of heights a `step` away.
+    fn central_gradients(
+        &self,
+        object: &FrameObject,
+        fragments: &[Fragment],
+        group: &[u32],
+        step: f32,
+        scratch: &mut ShadeScratch,
+    ) {
+        let shifts = [
+            Vec2::new(step, 0.0),
+            Vec2::new(-step, 0.0),
+            Vec2::new(0.0, step),
+            Vec2::new(0.0, -step),
+        ];
+        let shifted = &mut scratch.shifted;
+        for (k, shift) in shifts.into_iter().enumerate() {
+            shifted_fragments(fragments, group, |uv| uv + shift, &mut shifted.fragments);
+            self.shifted_bump(object, shifted, &mut scratch.patterns);
+            std::mem::swap(&mut shifted.around[k], &mut shifted.heights);
+        }
+        let around = &shifted.around;
+        for (k, g) in scratch.gradients.iter_mut().enumerate() {
+            let heights = [around[0][k], around[1][k], around[2][k], around[3][k]];
+            *g = central_difference(heights, step);
+        }
+    }
+
+    /// Heights and exact gradients at `shifted.fragments` (each with its own surface frame),
+    /// into `shifted.heights` and `shifted.gradients`.
+    fn shifted_bump(
+        &self,
+        object: &FrameObject,
+        shifted: &mut Shifted,
+        patterns: &mut PatternBatch,
+    ) -> usize {
+        let surface = &object.prepared.surface;
+        let n = shifted.fragments.len();
+        shifted.identity.clear();
+        shifted.identity.extend(0..n as u32);
+        shifted.frames.clear();
+        shifted.frames.extend(
+            shifted
+                .fragments
+                .iter()
+                .map(|f| surface.frame(f.uv.x, f.uv.y)),
+        );
+        let mut output = BumpOutput {
+            frames: &shifted.frames,
+            patterns,
+            heights: &mut shifted.heights,
+            gradients: &mut shifted.gradients,
+        };
+        self.evaluate_bump(object, &shifted.fragments, &shifted.identity, &mut output)
+    }
+
+    /// Unscaled heights and exact gradients of the group at its own (u,v).
+    fn bump_samples(
+        &self,
+        object: &FrameObject,
+        fragments: &[Fragment],
+        group: &[u32],
+        scratch: &mut ShadeScratch,
+    ) -> usize {
+        let mut output = BumpOutput {
+            frames: &scratch.frames,
+            patterns: &mut scratch.patterns,
+            heights: &mut scratch.heights,
+            gradients: &mut scratch.gradients,
+        };
+        self.evaluate_bump(object, fragments, group, &mut output)
+    }
+
+    /// The bump source's height and exact (u,v) gradient, before the bump's strength.
+    fn evaluate_bump(
+        &self,
+        object: &FrameObject,
+        fragments: &[Fragment],
+        group: &[u32],
+        output: &mut BumpOutput,
+    ) -> usize {
+        reset(output.heights, group.len(), 0.0);
+        reset(output.gradients, group.len(), Vec2::ZERO);
         let Some(bump) = &object.prepared.material.bump else {
             return 0;
         };
-        let scale = bump.scale();
-        let flattened = match &bump.source {
+        match &bump.source {
             BumpSource::Pattern(binding) => {
-                let patterns = &mut scratch.patterns;
-                patterns.load(binding, fragments, group, &scratch.frames);
-                patterns.bump(
-                    binding,
-                    self.time,
-                    &mut scratch.heights,
-                    &mut scratch.gradients,
-                )
+                output
+                    .patterns
+                    .load(binding, fragments, group, output.frames);
+                output
+                    .patterns
+                    .bump(binding, self.time, output.heights, output.gradients)
             }
             BumpSource::Image(image) => {
                 for (k, &i) in group.iter().enumerate() {
                     let fragment = &fragments[i as usize];
                     let mapped = image
                         .mapping
-                        .map(&self.surface_point(&scratch.frames[k], fragment));
+                        .map(&self.surface_point(&output.frames[k], fragment));
                     let footprint = mapped.footprint(fragment.duv_dx, fragment.duv_dy);
                     let sample =
                         image
                             .map
                             .sample_gradient(mapped.st, image.wrap_s, image.wrap_t, footprint);
-                    scratch.heights[k] = sample.height;
-                    scratch.gradients[k] = sample.surface_gradient(mapped.jacobian);
+                    output.heights[k] = sample.height;
+                    output.gradients[k] = sample.surface_gradient(mapped.jacobian);
                 }
                 0
             }
-        };
-        for (h, g) in scratch.heights.iter_mut().zip(&mut scratch.gradients) {
-            *h *= scale;
-            *g *= scale;
         }
-        flattened
     }
 
     fn surface_point(&self, frame: &Frame, fragment: &Fragment) -> SurfacePoint {
@@ -225,6 +361,35 @@ impl LitShader {
             pv: frame.pv,
             uv: fragment.uv,
             time: self.time as f32,
+        }
+    }
+}
+
+/// Where one bump evaluation reads its frames and writes its results.
+struct BumpOutput<'a> {
+    frames: &'a [Frame],
+    patterns: &'a mut PatternBatch,
+    heights: &'a mut Vec<f32>,
+    gradients: &'a mut Vec<Vec2>,
+}
+
+fn reset<T: Copy>(values: &mut Vec<T>, len: usize, value: T) {
+    values.clear();
+    values.resize(len, value);
+}
+
+/// Swaps the exact position and normal of each frame for the tessellation's interpolated ones
+/// (the tangents stay exact: they orient the bump, which the mesh does not carry).
+fn interpolate_frames(
+    normals: &VertexNormals,
+    fragments: &[Fragment],
+    group: &[u32],
+    frames: &mut [Frame],
+) {
+    for (frame, &i) in frames.iter_mut().zip(group) {
+        if let Some(at) = normals.at(fragments[i as usize].uv) {
+            frame.p = at.p;
+            frame.n = at.n;
         }
     }
 }

@@ -114,9 +114,10 @@ impl Surface {
         let d = tessellation.density.max(1);
         match self {
             Surface::Plane(_) | Surface::Triangle(_) => tessellate::GridShape::flat(1, 1),
+            // Both poles are fans: a single row would have to be a fan at both ends at once.
             Surface::Sphere(_) => tessellate::GridShape {
                 cells_u: 2 * d,
-                cells_v: d,
+                cells_v: d.max(2),
                 collapsed_v_min: true,
                 collapsed_v_max: true,
             },

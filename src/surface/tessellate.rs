@@ -134,6 +134,17 @@ mod tests {
     }
 
     #[test]
+    fn the_coarsest_densities_give_whole_meshes() {
+        for density in [1, 2, 3] {
+            let mesh = sphere().tessellate(Tessellation { density });
+            assert!(!mesh.indices.is_empty());
+            for tri in &mesh.indices {
+                assert!(tri.iter().all(|&i| (i as usize) < mesh.positions.len()));
+            }
+        }
+    }
+
+    #[test]
     fn triangles_face_outwards() {
         let cone = Surface::Cone(Cone {
             apex: DVec3::ZERO,

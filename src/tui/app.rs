@@ -8,13 +8,12 @@ use super::light::move_lights;
 use super::material_controls as controls;
 use super::options::WorkbenchOptions;
 use super::orbit::Orbit;
-use super::quality::Quality;
+use super::quality::QualityPreset;
 use super::source::open_source;
 use super::view_mode::ViewMode;
 use crate::Error;
-use crate::raster::{Camera, FrameStats, PreparedScene};
+use crate::raster::{Camera, FrameStats, PreparedScene, Viewport};
 use crate::scene::{Material, Scene};
-use crate::surface::Tessellation;
 use crate::term::{ColorMode, GlyphSet};
 use crate::watch::{ReloadOutcome, Reloader};
 use std::path::PathBuf;
@@ -29,7 +28,7 @@ pub struct App {
     pub object: usize,
     pub param: usize,
     pub view_mode: ViewMode,
-    pub quality: Quality,
+    pub quality: QualityPreset,
     pub glyphs: GlyphSet,
     pub colors: ColorMode,
     pub clock: Clock,
@@ -64,6 +63,8 @@ pub struct FrameReport {
     pub render_time: Duration,
     pub stats: FrameStats,
     pub bytes: usize,
+    /// PSNR against the reference, when the error view drew the frame.
+    pub psnr_db: Option<f64>,
 }
 
 /// What must be redrawn: the picture (re-render) or only the text around it.
@@ -91,7 +92,7 @@ impl App {
             crate::scene::load_source(name)?;
         }
         let (scene, reloader) = open_source(&options.scenes[0], options.watch)?;
-        let quality = Quality::default();
+        let quality = options.quality;
         let orbit = Orbit::from_camera(&scene.camera);
         Ok(App {
             scenes: options.scenes.clone(),
@@ -346,9 +347,17 @@ impl App {
     }
 }
 
-fn prepare(scene: Scene, quality: Quality) -> PreparedScene {
-    let density = quality.tessellation_density();
-    PreparedScene::new(scene, Tessellation { density })
+/// The picture size adaptive tessellation plans for: about a 160×50-cell terminal in half
+/// blocks. The terminal's own size changes with every resize and the mesh is kept across them.
+const PLANNED_VIEWPORT: Viewport = Viewport {
+    width: 160,
+    height: 100,
+};
+
+/// Tessellates for the preset, planning adaptive density for the scene's own camera.
+fn prepare(scene: Scene, quality: QualityPreset) -> PreparedScene {
+    let camera = scene.camera.clone();
+    quality.quality().prepare(scene, &camera, PLANNED_VIEWPORT)
 }
 
 /// The first object with a bump map, else the first: what the material keys start on.

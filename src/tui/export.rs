@@ -7,7 +7,8 @@ use super::render::{View, empty_framebuffer, render_frame};
 use super::view_mode::ViewMode;
 use crate::Error;
 use crate::export::{StillFormat, StillRequest, write_png, write_still};
-use crate::raster::{Camera, Interpolation, PreparedScene};
+use crate::quality::Quality;
+use crate::raster::{Camera, PreparedScene};
 use crate::scene::Scene;
 use crate::still::{Recipe, StillSettings, Supersampling};
 use crate::surface::Tessellation;
@@ -24,6 +25,7 @@ struct ExportOrder {
     scene: Scene,
     camera: Camera,
     mode: ViewMode,
+    quality: Quality,
     settings: StillSettings,
     path: PathBuf,
 }
@@ -42,11 +44,14 @@ impl ExportJob {
     pub fn start(app: &App, size: (u32, u32), samples: u32, dir: &Path) -> ExportJob {
         let view = View::of(app);
         let stem = format!("bumpwork-{}-{}", slug(&app.scene().name), view.mode.name());
+        // The recipe records the preset's base density and interpolation; its shading knobs
+        // reach the picture only in the views drawn by `render_frame` (wireframe, error).
         let order = ExportOrder {
             source: app.scenes[app.scene_index].clone(),
             scene: app.scene().clone(),
             camera: view.camera.clone(),
             mode: view.mode,
+            quality: view.quality,
             settings: StillSettings {
                 size,
                 supersampling: Supersampling {
@@ -54,9 +59,9 @@ impl ExportJob {
                     ..Supersampling::default()
                 },
                 tessellation: Tessellation {
-                    density: app.quality.tessellation_density(),
+                    density: view.quality.tessellation,
                 },
-                interpolation: Interpolation::PerspectiveCorrect,
+                interpolation: view.quality.interpolation,
                 time: view.time,
                 mode: view.mode.shader_mode(),
             },
@@ -101,13 +106,15 @@ impl Drop for ExportJob {
 
 fn export(order: ExportOrder, cancel: &AtomicBool) -> Result<(), Error> {
     let prepared = PreparedScene::new(order.scene, order.settings.tessellation);
-    if order.mode == ViewMode::Wireframe {
-        // The wireframe is drawn over the picture, not shaded: no recipe can make it again.
+    if matches!(order.mode, ViewMode::Wireframe | ViewMode::Error) {
+        // The wireframe is drawn over the picture and the error view is a heat map against the
+        // reference, not shading: no recipe can make them again.
         let view = View {
             prepared: &prepared,
             camera: order.camera,
             mode: order.mode,
             time: order.settings.time,
+            quality: order.quality,
         };
         let mut framebuffer = empty_framebuffer();
         let (width, height) = order.settings.size;

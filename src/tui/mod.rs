@@ -8,6 +8,7 @@
 mod action;
 mod app;
 mod clock;
+mod error_view;
 mod event_loop;
 mod export;
 mod help;
@@ -31,7 +32,7 @@ pub use app::{App, Dirty, FrameReport, Message};
 pub use event_loop::run;
 pub use options::WorkbenchOptions;
 pub use orbit::Orbit;
-pub use quality::Quality;
+pub use quality::{MAX_TERMINAL_SAMPLES, QualityPreset};
 pub use render::{View, render_cells, render_frame};
 pub use screen::{Layout, Screen};
-pub use view_mode::ViewMode;
+pub use view_mode::{RenderedFrame, ViewMode};

@@ -1,5 +1,6 @@
 //! How the workbench was asked to start.
 
+use super::quality::QualityPreset;
 use crate::term::{ColorChoice, GlyphSet};
 
 #[derive(Clone, Debug)]
@@ -17,6 +18,8 @@ pub struct WorkbenchOptions {
     pub export_samples: u32,
     /// Reload scene, pattern and image files when they change on disk.
     pub watch: bool,
+    /// The quality preset to start with (`Q` cycles them).
+    pub quality: QualityPreset,
 }
 
 impl Default for WorkbenchOptions {
@@ -33,6 +36,7 @@ impl Default for WorkbenchOptions {
             export_size: (1920, 1080),
             export_samples: 4,
             watch: true,
+            quality: QualityPreset::default(),
         }
     }
 }

@@ -1,46 +1,101 @@
-//! Named trades of speed for accuracy: tessellation density and samples per picture pixel.
+//! The workbench's quality: the crate's named presets (`crate::quality`), cycled by a key.
+//! Samples are capped for the terminal: the workbench supersamples on a square grid, and
+//! `exact`'s 64 samples would make every frame 64 renders, too slow to orbit with.
 
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum Quality {
-    /// Coarse meshes, one sample per pixel: for slow machines and huge terminals.
-    Draft,
-    #[default]
-    Normal,
-    /// Fine meshes and 2×2 samples per pixel: smooth silhouettes and bump detail.
-    Fine,
+use crate::quality::{QUALITY_NAMES, Quality, preset};
+
+/// Most samples per picture pixel the workbench takes: 2×2.
+pub const MAX_TERMINAL_SAMPLES: u32 = 4;
+
+/// One of `QUALITY_NAMES`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct QualityPreset {
+    index: usize,
 }
 
-impl Quality {
+impl Default for QualityPreset {
+    /// `interactive`.
+    fn default() -> Self {
+        QualityPreset { index: 1 }
+    }
+}
+
+impl QualityPreset {
+    /// The preset of this name, or a message listing the names.
+    pub fn named(name: &str) -> Result<QualityPreset, String> {
+        Quality::named(name)?;
+        let index = QUALITY_NAMES.iter().position(|&n| n == name);
+        Ok(QualityPreset {
+            index: index.expect("a preset is listed"),
+        })
+    }
+
     pub fn name(self) -> &'static str {
-        match self {
-            Quality::Draft => "draft",
-            Quality::Normal => "normal",
-            Quality::Fine => "fine",
+        QUALITY_NAMES[self.index]
+    }
+
+    pub fn quality(self) -> Quality {
+        preset(self.name()).expect("every listed name is a preset")
+    }
+
+    pub fn next(self) -> QualityPreset {
+        QualityPreset {
+            index: (self.index + 1) % QUALITY_NAMES.len(),
         }
     }
 
-    pub fn next(self) -> Quality {
-        match self {
-            Quality::Draft => Quality::Normal,
-            Quality::Normal => Quality::Fine,
-            Quality::Fine => Quality::Draft,
-        }
-    }
-
-    /// Cells per half turn of curved surfaces.
-    pub fn tessellation_density(self) -> u32 {
-        match self {
-            Quality::Draft => 16,
-            Quality::Normal => 64,
-            Quality::Fine => 128,
-        }
-    }
-
-    /// Samples per picture pixel along each axis.
+    /// Samples along each axis of a picture pixel: the preset's, capped at
+    /// `MAX_TERMINAL_SAMPLES`, as the largest square grid that fits.
     pub fn supersampling(self) -> usize {
-        match self {
-            Quality::Draft | Quality::Normal => 1,
-            Quality::Fine => 2,
+        let samples = self.quality().samples.clamp(1, MAX_TERMINAL_SAMPLES);
+        (samples as f64).sqrt().floor() as usize
+    }
+
+    /// The name, and the samples taken when the terminal takes fewer than the preset asks.
+    pub fn label(self) -> String {
+        let asked = self.quality().samples;
+        let taken = self.supersampling().pow(2) as u32;
+        if taken < asked {
+            format!("{} ({taken} of {asked} spp)", self.name())
+        } else {
+            self.name().to_string()
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn cycling_visits_every_preset_from_interactive() {
+        let mut preset = QualityPreset::default();
+        assert_eq!(preset.name(), "interactive");
+        let mut seen = Vec::new();
+        for _ in 0..QUALITY_NAMES.len() {
+            preset = preset.next();
+            seen.push(preset.name());
+        }
+        assert_eq!(seen, ["high", "exact", "draft", "interactive"]);
+    }
+
+    #[test]
+    fn presets_are_found_by_name() {
+        assert_eq!(QualityPreset::named("exact").unwrap().name(), "exact");
+        assert!(
+            QualityPreset::named("normal")
+                .unwrap_err()
+                .contains("draft")
+        );
+    }
+
+    #[test]
+    fn samples_are_capped_and_the_label_says_so() {
+        let exact = QualityPreset { index: 3 };
+        assert_eq!(exact.supersampling(), 2);
+        assert_eq!(exact.label(), "exact (4 of 64 spp)");
+        let interactive = QualityPreset::default();
+        assert_eq!(interactive.supersampling(), 1);
+        assert_eq!(interactive.label(), "interactive");
     }
 }

@@ -2,9 +2,10 @@
 
 use super::app::App;
 use super::resample::resample_to_srgb;
-use super::view_mode::{ViewMode, render_view_mode};
+use super::view_mode::{RenderedFrame, ViewMode, render_view_mode};
 use super::wireframe::draw_wireframe;
-use crate::raster::{Camera, FrameStats, Framebuffer, PreparedScene, RenderTarget, Viewport};
+use crate::quality::Quality;
+use crate::raster::{Camera, Framebuffer, PreparedScene, Viewport};
 use crate::term::{CellGrid, EncodeOptions, GlyphSet, Picture, encode};
 use glam::Vec3;
 
@@ -15,6 +16,8 @@ pub struct View<'a> {
     pub mode: ViewMode,
     /// Scene time in seconds, for animated patterns and scrolling images.
     pub time: f64,
+    /// The shading and interpolation knobs (the mesh was made with the same quality).
+    pub quality: Quality,
 }
 
 impl<'a> View<'a> {
@@ -24,6 +27,7 @@ impl<'a> View<'a> {
             camera: app.camera(),
             mode: app.view_mode,
             time: app.clock.time(),
+            quality: app.quality.quality(),
         }
     }
 }
@@ -34,13 +38,22 @@ pub fn render_frame(
     width: u32,
     height: u32,
     framebuffer: &mut Framebuffer,
-) -> FrameStats {
-    let target = RenderTarget::new(&view.camera, Viewport { width, height });
-    let stats = render_view_mode(view.mode, view.time, view.prepared, &target, framebuffer);
+) -> RenderedFrame {
+    let target = view
+        .quality
+        .target(&view.camera, Viewport { width, height });
+    let rendered = render_view_mode(
+        view.mode,
+        view.time,
+        &view.quality,
+        view.prepared,
+        &target,
+        framebuffer,
+    );
     if view.mode == ViewMode::Wireframe {
         draw_wireframe(view.prepared, &target, framebuffer);
     }
-    stats
+    rendered
 }
 
 /// Renders `view` to fill `cols` × `rows` cells of `options.glyphs`, with `supersampling`² samples
@@ -51,16 +64,16 @@ pub fn render_cells(
     options: EncodeOptions,
     supersampling: usize,
     framebuffer: &mut Framebuffer,
-) -> (CellGrid, FrameStats) {
+) -> (CellGrid, RenderedFrame) {
     if cols == 0 || rows == 0 {
-        return (CellGrid::new(cols, rows), FrameStats::default());
+        return (CellGrid::new(cols, rows), RenderedFrame::default());
     }
     let (width, height) = options.glyphs.picture_size(cols, rows);
     let (render_w, render_h) = square_render_size(options.glyphs, cols, rows, supersampling);
-    let stats = render_frame(view, render_w as u32, render_h as u32, framebuffer);
+    let rendered = render_frame(view, render_w as u32, render_h as u32, framebuffer);
     let pixels = resample_to_srgb(framebuffer, width, height);
     let picture = Picture::new(&pixels, width, height).expect("resampled to the picture size");
-    (encode(&picture, options), stats)
+    (encode(&picture, options), rendered)
 }
 
 /// The render size in square pixels for cells twice as tall as wide: sub-pixels of quadrant and

@@ -100,7 +100,7 @@ impl Screen {
         let size = (self.layout.cols as usize, self.layout.picture_rows as usize);
         let options = EncodeOptions::new(app.colors, app.glyphs);
         let supersampling = app.quality.supersampling();
-        let (picture, stats) = render_cells(
+        let (picture, rendered) = render_cells(
             &View::of(app),
             size,
             options,
@@ -108,7 +108,8 @@ impl Screen {
             &mut self.framebuffer,
         );
         self.picture = picture;
-        app.report.stats = stats;
+        app.report.stats = rendered.stats;
+        app.report.psnr_db = rendered.psnr_db;
     }
 
     /// The screen: picture, then the status line and the help drawn over it with ratatui.

@@ -31,6 +31,15 @@ pub fn status_line(app: &App, width: usize) -> String {
     }
 }
 
+/// The error view's figure: PSNR of the frame against the exact reference.
+fn psnr_text(db: f64) -> String {
+    if db.is_finite() {
+        format!("PSNR {db:.1} dB vs reference")
+    } else {
+        "identical to reference".into()
+    }
+}
+
 fn segments(app: &App) -> Vec<Segment> {
     let report = &app.report;
     let mut list = vec![
@@ -49,7 +58,7 @@ fn segments(app: &App) -> Vec<Segment> {
             3,
             format!(
                 "{} {} {}",
-                app.quality.name(),
+                app.quality.label(),
                 glyphs_name(app.glyphs),
                 colors_name(app.colors)
             ),
@@ -68,6 +77,9 @@ fn segments(app: &App) -> Vec<Segment> {
         ),
         segment(4, format!("{} B", si(report.bytes))),
     ];
+    if let Some(db) = report.psnr_db {
+        list.insert(2, segment(1, psnr_text(db)));
+    }
     if !app.clock.is_running() {
         list.push(segment(3, format!("paused t={:.2}s", app.clock.time())));
     }

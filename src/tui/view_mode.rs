@@ -1,8 +1,10 @@
 //! What the picture shows: the scene shader's own view modes (shaded, height, normals, uv,
-//! depth), plus the tessellation drawn over the shaded picture.
+//! depth), the tessellation drawn over the shaded picture, and the error against the reference.
 
+use super::error_view::render_error_view;
+use crate::quality::Quality;
 use crate::raster::{FrameStats, Framebuffer, PreparedScene, RenderTarget, render_into};
-use crate::shade::{LitShader, ViewMode as ShaderMode};
+use crate::shade::ViewMode as ShaderMode;
 
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum ViewMode {
@@ -17,21 +19,25 @@ pub enum ViewMode {
     Depth,
     /// Shaded, with the tessellation's triangle edges drawn over it.
     Wireframe,
+    /// The per-pixel difference to the exact reference as a heat map (PSNR in the status line).
+    Error,
 }
 
 impl ViewMode {
-    pub const ALL: [ViewMode; 6] = [
+    pub const ALL: [ViewMode; 7] = [
         ViewMode::Shaded,
         ViewMode::Height,
         ViewMode::Normals,
         ViewMode::Uv,
         ViewMode::Depth,
         ViewMode::Wireframe,
+        ViewMode::Error,
     ];
 
     pub fn name(self) -> &'static str {
         match self {
             ViewMode::Wireframe => "wireframe",
+            ViewMode::Error => "error",
             mode => mode.shader_mode().name(),
         }
     }
@@ -44,7 +50,7 @@ impl ViewMode {
     /// The scene shader's mode that draws this view (the wireframe is drawn over shading).
     pub(crate) fn shader_mode(self) -> ShaderMode {
         match self {
-            ViewMode::Shaded | ViewMode::Wireframe => ShaderMode::Shaded,
+            ViewMode::Shaded | ViewMode::Wireframe | ViewMode::Error => ShaderMode::Shaded,
             ViewMode::Height => ShaderMode::Height,
             ViewMode::Normals => ShaderMode::Normals,
             ViewMode::Uv => ShaderMode::Uv,
@@ -53,18 +59,38 @@ impl ViewMode {
     }
 }
 
-/// Renders `prepared` as `mode` at scene time `time` (seconds) into `framebuffer`.
+/// What rendering a view mode produced besides the picture.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct RenderedFrame {
+    pub stats: FrameStats,
+    /// The frame's PSNR against the reference, in the error view.
+    pub psnr_db: Option<f64>,
+}
+
+/// Renders `prepared` as `mode` at scene time `time` (seconds), with `quality`'s shading, into
+/// `framebuffer`.
 pub fn render_view_mode(
     mode: ViewMode,
     time: f64,
+    quality: &Quality,
     prepared: &PreparedScene,
     target: &RenderTarget,
     framebuffer: &mut Framebuffer,
-) -> FrameStats {
-    let mut shader = LitShader::new(&prepared.scene, target.camera);
+) -> RenderedFrame {
+    if mode == ViewMode::Error {
+        let (stats, psnr_db) = render_error_view(time, quality, prepared, target, framebuffer);
+        return RenderedFrame {
+            stats,
+            psnr_db: Some(psnr_db),
+        };
+    }
+    let mut shader = quality.shader(prepared, target.camera);
     shader.mode = mode.shader_mode();
     shader.time = time;
-    render_into(prepared, target, &shader, framebuffer)
+    RenderedFrame {
+        stats: render_into(prepared, target, &shader, framebuffer),
+        psnr_db: None,
+    }
 }
 
 #[cfg(test)]
@@ -78,7 +104,7 @@ mod tests {
             mode = mode.cycled(1);
         }
         assert_eq!(mode, ViewMode::Shaded);
-        assert_eq!(ViewMode::Shaded.cycled(-1), ViewMode::Wireframe);
+        assert_eq!(ViewMode::Shaded.cycled(-1), ViewMode::Error);
         assert_eq!(ViewMode::Height.name(), "height");
     }
 }

@@ -1,0 +1,106 @@
+//! What the bench runs: the presets, then `interactive` with one knob changed at a time.
+
+use crate::quality::{NormalSource, QUALITY_NAMES, Quality, preset};
+use crate::raster::Interpolation;
+use crate::shade::{GradientMethod, NormalForm};
+use crate::texture::Filter;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum VariantKind {
+    Preset,
+    /// `interactive` with one knob changed.
+    Knob,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Variant {
+    pub name: String,
+    pub kind: VariantKind,
+    pub quality: Quality,
+}
+
+/// Every preset, then every single-knob variation of `interactive`.
+pub fn variants() -> Vec<Variant> {
+    let presets = QUALITY_NAMES.iter().map(|&name| Variant {
+        name: name.to_string(),
+        kind: VariantKind::Preset,
+        quality: preset(name).expect("every listed name is a preset"),
+    });
+    let knobs = knob_variations()
+        .into_iter()
+        .map(|(name, quality)| Variant {
+            name: name.to_string(),
+            kind: VariantKind::Knob,
+            quality,
+        });
+    presets.chain(knobs).collect()
+}
+
+fn knob_variations() -> Vec<(&'static str, Quality)> {
+    let base = Quality::interactive();
+    let with = |change: fn(&mut Quality)| {
+        let mut quality = base;
+        change(&mut quality);
+        quality
+    };
+    vec![
+        ("tessellation=16", with(|q| q.tessellation = 16)),
+        ("tessellation=256", with(|q| q.tessellation = 256)),
+        (
+            "adaptive<0.5px",
+            with(|q| q.adaptive_tolerance_px = Some(0.5)),
+        ),
+        ("samples=4", with(|q| q.samples = 4)),
+        ("filter=nearest", with(|q| q.filter = Some(Filter::Nearest))),
+        (
+            "filter=bilinear",
+            with(|q| q.filter = Some(Filter::Bilinear)),
+        ),
+        (
+            "filter=trilinear",
+            with(|q| q.filter = Some(Filter::Trilinear)),
+        ),
+        (
+            "gradient=central(h=0.5)",
+            with(|q| q.gradient = GradientMethod::CentralDifference { step: 0.5 }),
+        ),
+        (
+            "gradient=seed-lattice",
+            with(|q| q.gradient = GradientMethod::SeedLattice),
+        ),
+        ("normal=seed", with(|q| q.normal_form = NormalForm::Seed)),
+        ("normal=full", with(|q| q.normal_form = NormalForm::Full)),
+        (
+            "normals=interpolated",
+            with(|q| q.normals = NormalSource::InterpolatedVertex),
+        ),
+        (
+            "uv=affine",
+            with(|q| q.interpolation = Interpolation::Affine),
+        ),
+    ]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn each_knob_variation_changes_exactly_one_field_of_interactive() {
+        let base = Quality::interactive();
+        for (name, q) in knob_variations() {
+            let changed = [
+                q.tessellation != base.tessellation,
+                q.adaptive_tolerance_px != base.adaptive_tolerance_px,
+                q.samples != base.samples,
+                q.filter != base.filter,
+                q.gradient != base.gradient,
+                q.normal_form != base.normal_form,
+                q.normals != base.normals,
+                q.interpolation != base.interpolation,
+            ];
+            let count = changed.iter().filter(|&&c| c).count();
+            assert_eq!(count, 1, "{name} changes {count} knobs");
+        }
+    }
+}

@@ -1,0 +1,268 @@
+//! Every knob that trades speed for accuracy, settable one by one, and the named presets.
+//!
+//! A `Quality` turns a scene into what the renderer needs: the prepared meshes (tessellation,
+//! fixed or adaptive to the view; texture filter override), the render target (interpolation)
+//! and the fragment program (normal form, gradient method, exact frame or vertex normals).
+//! Samples per pixel are carried here for the supersampled renderer to read.
+
+mod adaptive;
+
+pub use adaptive::{MAX_ADAPTIVE_DENSITY, adaptive_density, projected_chord_error};
+
+use crate::raster::{Camera, Interpolation, PreparedObject, PreparedScene, RenderTarget, Viewport};
+use crate::scene::{Scene, Texturing};
+use crate::shade::{GradientMethod, LitShader, NormalForm, VertexNormals};
+use crate::surface::Tessellation;
+use crate::texture::Filter;
+use rayon::prelude::*;
+use std::sync::Arc;
+
+/// The normal the shader starts from before the bump perturbs it.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum NormalSource {
+    /// The surface's exact frame at the fragment's (u,v).
+    #[default]
+    ExactFrame,
+    /// Position and normal interpolated across each triangle from its vertices (Phong shading).
+    InterpolatedVertex,
+}
+
+/// One setting of every speed/accuracy knob.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Quality {
+    /// Cells per half turn of curved surfaces, for every object (where refinement starts when
+    /// `adaptive_tolerance_px` is set).
+    pub tessellation: u32,
+    /// Screen-space adaptive tessellation: each object's density is refined from `tessellation`
+    /// until its chords deviate from the surface by at most this many pixels in this view.
+    pub adaptive_tolerance_px: Option<f32>,
+    /// Samples per pixel (1, 4, 16, …), averaged in linear light by the supersampled renderer.
+    pub samples: u32,
+    /// Texture filter for every image texture; `None` keeps each scene's own.
+    pub filter: Option<Filter>,
+    pub gradient: GradientMethod,
+    pub normal_form: NormalForm,
+    pub normals: NormalSource,
+    pub interpolation: Interpolation,
+}
+
+/// The preset names, cheapest first.
+pub const QUALITY_NAMES: [&str; 4] = ["draft", "interactive", "high", "exact"];
+
+/// The named preset, if there is one.
+pub fn preset(name: &str) -> Option<Quality> {
+    match name {
+        "draft" => Some(Quality::draft()),
+        "interactive" => Some(Quality::interactive()),
+        "high" => Some(Quality::high()),
+        "exact" => Some(Quality::exact()),
+        _ => None,
+    }
+}
+
+impl Default for Quality {
+    fn default() -> Self {
+        Quality::interactive()
+    }
+}
+
+impl Quality {
+    /// Coarse meshes and nearest texels, for slow machines and huge terminals. It keeps
+    /// perspective-correct (u,v): affine costs no measurable time here and is off by whole
+    /// pattern periods on the two-triangle planes (17.8 against 45.5 dB on sphere-on-plane-
+    /// dimples in `bumpwork bench`); and the exact frame: interpolated vertex normals measure
+    /// slower, a point location per fragment against two `sincos`.
+    pub fn draft() -> Quality {
+        Quality {
+            tessellation: 16,
+            filter: Some(Filter::Nearest),
+            ..Quality::interactive()
+        }
+    }
+
+    /// What the renderer does by default: density 64, one sample, each scene's filter, exact
+    /// frame and derivatives, Blinn's first-order normal, perspective-correct (u,v).
+    pub fn interactive() -> Quality {
+        Quality {
+            tessellation: Tessellation::default().density,
+            adaptive_tolerance_px: None,
+            samples: 1,
+            filter: None,
+            gradient: GradientMethod::Exact,
+            normal_form: NormalForm::Blinn,
+            normals: NormalSource::ExactFrame,
+            interpolation: Interpolation::PerspectiveCorrect,
+        }
+    }
+
+    /// Density 128, refined where silhouettes would be off by more than half a pixel; 16
+    /// samples, the exact normal of the bumped surface.
+    pub fn high() -> Quality {
+        Quality {
+            tessellation: 128,
+            adaptive_tolerance_px: Some(0.5),
+            samples: 16,
+            normal_form: NormalForm::Full,
+            ..Quality::interactive()
+        }
+    }
+
+    /// Density 256, refined until silhouettes are within a tenth of a pixel; 64 samples and the
+    /// reference's shading: the closest the rasterizer gets to the ray-cast reference. (The
+    /// (u,v) error inside a silhouette shifts pattern edges; it shrinks with density, not with
+    /// the silhouette tolerance, hence the high base density.)
+    pub fn exact() -> Quality {
+        Quality {
+            tessellation: 256,
+            adaptive_tolerance_px: Some(0.1),
+            samples: 64,
+            ..Quality::high()
+        }
+    }
+
+    /// A preset by name, or a message listing the names (a command-line value parser).
+    pub fn named(name: &str) -> Result<Quality, String> {
+        preset(name).ok_or_else(|| {
+            format!(
+                "unknown quality preset '{}'; the presets are {}",
+                crate::diagnostic::sanitize(name),
+                QUALITY_NAMES.join(", ")
+            )
+        })
+    }
+
+    /// Tessellates the scene for this view (after applying the filter override).
+    pub fn prepare(&self, mut scene: Scene, camera: &Camera, viewport: Viewport) -> PreparedScene {
+        if let Some(filter) = self.filter {
+            override_filter(&mut scene, filter);
+        }
+        let objects = scene
+            .objects
+            .par_iter()
+            .map(|o| {
+                let density = self.density_for(&o.surface, camera, viewport);
+                PreparedObject {
+                    surface: o.surface.clone(),
+                    material: o.material.clone(),
+                    mesh: o.surface.tessellate(Tessellation { density }),
+                }
+            })
+            .collect();
+        PreparedScene { scene, objects }
+    }
+
+    /// The tessellation density this quality gives a surface in this view.
+    pub fn density_for(
+        &self,
+        surface: &crate::surface::Surface,
+        camera: &Camera,
+        viewport: Viewport,
+    ) -> u32 {
+        match self.adaptive_tolerance_px {
+            Some(tolerance) => {
+                let start = self.tessellation;
+                adaptive_density(surface, camera, viewport, tolerance, start)
+            }
+            None => self.tessellation,
+        }
+    }
+
+    /// The whole `viewport`, one sample per pixel centre, with this quality's interpolation.
+    pub fn target<'a>(&self, camera: &'a Camera, viewport: Viewport) -> RenderTarget<'a> {
+        RenderTarget::new(camera, viewport).with_interpolation(self.interpolation)
+    }
+
+    /// The scene's fragment program with this quality's shading knobs.
+    pub fn shader(&self, prepared: &PreparedScene, camera: &Camera) -> LitShader {
+        let mut shader = LitShader::new(&prepared.scene, camera);
+        self.configure(&mut shader, prepared);
+        shader
+    }
+
+    /// Sets the shading knobs of an existing program (keeping its mode and time).
+    pub fn configure(&self, shader: &mut LitShader, prepared: &PreparedScene) {
+        shader.normal_form = self.normal_form;
+        shader.gradient = self.gradient;
+        shader.vertex_normals = match self.normals {
+            NormalSource::ExactFrame => None,
+            NormalSource::InterpolatedVertex => Some(vertex_normals(prepared)),
+        };
+    }
+
+    /// Every knob on one line, for tables and status lines.
+    pub fn describe(&self) -> String {
+        let tessellation = match self.adaptive_tolerance_px {
+            Some(px) => format!("adaptive<{px}px"),
+            None => format!("density {}", self.tessellation),
+        };
+        let filter = self
+            .filter
+            .map_or("scene".to_string(), |f| format!("{f:?}"));
+        format!(
+            "{tessellation}, {} spp, filter {}, gradient {}, {:?} normal, {:?}, {:?}",
+            self.samples,
+            filter.to_lowercase(),
+            self.gradient.name(),
+            self.normal_form,
+            self.normals,
+            self.interpolation
+        )
+    }
+}
+
+fn override_filter(scene: &mut Scene, filter: Filter) {
+    for object in &mut scene.objects {
+        if let Some(Texturing::Image(image)) = &mut object.material.texture {
+            image.sampler.filter = filter;
+        }
+    }
+}
+
+fn vertex_normals(prepared: &PreparedScene) -> Arc<[VertexNormals]> {
+    prepared
+        .objects
+        .par_iter()
+        .map(|o| VertexNormals::new(&o.surface, &o.mesh))
+        .collect::<Vec<_>>()
+        .into()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_preset_parses_by_name_and_they_differ() {
+        let presets: Vec<Quality> = QUALITY_NAMES.iter().map(|n| preset(n).unwrap()).collect();
+        for (i, a) in presets.iter().enumerate() {
+            for b in &presets[i + 1..] {
+                assert_ne!(a, b);
+            }
+        }
+        assert_eq!(Quality::default(), Quality::interactive());
+    }
+
+    #[test]
+    fn presets_grow_in_samples_and_shrink_in_tolerance() {
+        let [draft, interactive, high, exact] = QUALITY_NAMES.map(|n| preset(n).unwrap());
+        assert!(draft.tessellation < interactive.tessellation);
+        assert!(draft.samples <= interactive.samples);
+        assert!(interactive.samples < high.samples && high.samples < exact.samples);
+        assert!(exact.adaptive_tolerance_px < high.adaptive_tolerance_px);
+        assert!(interactive.tessellation < high.tessellation);
+        assert!(high.tessellation < exact.tessellation);
+        assert_eq!(draft.filter, Some(Filter::Nearest));
+        assert_eq!(exact.normal_form, NormalForm::Full);
+        assert_eq!(exact.gradient, GradientMethod::Exact);
+    }
+
+    #[test]
+    fn an_unknown_name_lists_the_presets() {
+        assert_eq!(preset("ultra"), None);
+        let message = Quality::named("ultra").unwrap_err();
+        assert!(message.contains("'ultra'"), "{message}");
+        for name in QUALITY_NAMES {
+            assert!(message.contains(name), "{message}");
+        }
+    }
+}
