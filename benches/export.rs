@@ -8,10 +8,11 @@
 
 use bumpwork::export::{StillFormat, StillRequest, write_png, write_still};
 use bumpwork::measure::Timing;
-use bumpwork::raster::{Interpolation, PreparedScene, RenderTarget, Viewport, render};
+use bumpwork::quality::Quality;
+use bumpwork::raster::{PreparedScene, RenderTarget, Viewport, render};
 use bumpwork::scene::{BindingFile, MappingKind, load_scene_file, preset_file};
 use bumpwork::shade::ViewMode;
-use bumpwork::still::{Recipe, StillSettings, Supersampling};
+use bumpwork::still::{Recipe, ResolveFilter, StillSettings};
 use bumpwork::surface::Tessellation;
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -39,12 +40,11 @@ fn write_scene(dir: &Path) -> PathBuf {
 fn settings(samples: u32) -> StillSettings {
     StillSettings {
         size: (1920, 1080),
-        supersampling: Supersampling {
+        quality: Quality {
             samples,
-            ..Supersampling::default()
+            ..Quality::interactive()
         },
-        tessellation: Tessellation::default(),
-        interpolation: Interpolation::PerspectiveCorrect,
+        resolve: ResolveFilter::default(),
         time: 0.0,
         mode: ViewMode::Shaded,
     }

@@ -18,7 +18,8 @@ use rayon::prelude::*;
 use std::sync::Arc;
 
 /// The normal the shader starts from before the bump perturbs it.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "kebab-case")]
 pub enum NormalSource {
     /// The surface's exact frame at the fragment's (u,v).
     #[default]
@@ -27,8 +28,9 @@ pub enum NormalSource {
     InterpolatedVertex,
 }
 
-/// One setting of every speed/accuracy knob.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// One setting of every speed/accuracy knob (a still's recipe records it as a TOML table).
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "kebab-case", deny_unknown_fields)]
 pub struct Quality {
     /// Cells per half turn of curved surfaces, for every object (where refinement starts when
     /// `adaptive_tolerance_px` is set).

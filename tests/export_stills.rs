@@ -43,13 +43,23 @@ fn a_still_carries_its_recipe_and_from_makes_the_same_pixels() {
         "1.5",
         "--tessellation",
         "24",
+        "--quality",
+        "high",
     ]);
     assert!(out.status.success(), "{}", stderr(&out));
     let (w, h, pixels) = decode_png(&first);
     assert_eq!((w, h), (96, 64));
     let recipe = recipe_of(&first);
     assert_eq!((recipe.width, recipe.height), (96, 64));
-    assert_eq!((recipe.samples, recipe.tessellation), (4, 24));
+    // The preset's shading knobs, with the explicit options over it.
+    let high = bumpwork::quality::Quality::high();
+    let expected = bumpwork::quality::Quality {
+        samples: 4,
+        tessellation: 24,
+        adaptive_tolerance_px: None,
+        ..high
+    };
+    assert_eq!(recipe.quality, expected);
     assert_eq!(recipe.time, 1.5);
     assert_eq!(recipe.source, "sphere-on-plane-dimples");
     assert!(recipe.program.starts_with("bumpwork "));

@@ -8,10 +8,9 @@ use bumpwork::export::{
     SheetLayout, SheetPicture, StillFormat, StillRequest, draw_sheet, read_png_rgb8, write_sheet,
     write_still,
 };
-use bumpwork::raster::{Interpolation, PreparedScene};
+use bumpwork::quality::Quality;
 use bumpwork::shade::ViewMode;
-use bumpwork::still::{MAX_SAMPLES, Recipe, StillSettings, Supersampling};
-use bumpwork::surface::Tessellation;
+use bumpwork::still::{MAX_SAMPLES, Recipe, ResolveFilter, StillSettings};
 use std::path::{Path, PathBuf};
 
 pub const SHEET_NAME: &str = "contact-sheet.png";
@@ -105,16 +104,15 @@ fn render_scene(
     let camera = scene.camera.clone();
     let settings = StillSettings {
         size: args.size,
-        supersampling: Supersampling {
+        quality: Quality {
             samples: args.samples,
-            ..Supersampling::default()
+            ..Quality::interactive()
         },
-        tessellation: Tessellation::default(),
-        interpolation: Interpolation::PerspectiveCorrect,
+        resolve: ResolveFilter::default(),
         time: 0.0,
         mode: ViewMode::Shaded,
     };
-    let prepared = PreparedScene::new(scene, settings.tessellation);
+    let prepared = settings.prepare(scene, &camera);
     let recipe = Recipe::capture(name, &prepared.scene, &camera, &settings);
     let scene_text = bumpwork::scene::source_text(name)?;
     let request = StillRequest {

@@ -6,11 +6,10 @@ use super::progress::RenderProgress;
 use bumpwork::Error;
 use bumpwork::export::metadata::{RECIPE, SCENE, read_png_text, text_of};
 use bumpwork::export::{StillFormat, StillRequest, write_still};
-use bumpwork::raster::{Interpolation, PreparedScene};
+use bumpwork::quality::Quality;
 use bumpwork::scene::Scene;
 use bumpwork::shade::ViewMode;
-use bumpwork::still::{MAX_SAMPLES, Recipe, ResolveFilter, StillSettings, Supersampling};
-use bumpwork::surface::Tessellation;
+use bumpwork::still::{MAX_DENSITY, MAX_SAMPLES, Recipe, ResolveFilter, StillSettings};
 use std::path::{Path, PathBuf};
 
 #[derive(clap::Args)]
@@ -28,14 +27,20 @@ pub struct RenderArgs {
     /// Output size in pixels, WIDTHxHEIGHT [default: 800x600].
     #[arg(long, value_parser = super::parse_size)]
     size: Option<(u32, u32)>,
-    /// Samples per pixel, spread over the pixel and resolved in linear light [default: 1].
+    /// A quality preset: draft, interactive, high or exact (tessellation, samples and shading
+    /// knobs; `bumpwork bench` measures them) [default: interactive].
+    #[arg(long, value_parser = Quality::named)]
+    quality: Option<Quality>,
+    /// Samples per pixel, spread over the pixel and resolved in linear light [default: the
+    /// quality's, 1 for interactive].
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=MAX_SAMPLES as i64))]
     samples: Option<u32>,
     /// How samples are resolved [default: tent].
     #[arg(long, value_parser = clap::builder::PossibleValuesParser::new(ResolveFilter::NAMES))]
     filter: Option<String>,
-    /// Tessellation density: cells per half turn of a curved surface [default: 64].
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=4096))]
+    /// Tessellation density: cells per half turn of a curved surface, fixed (no adaptive
+    /// refinement) [default: the quality's, 64 for interactive].
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=MAX_DENSITY as i64))]
     tessellation: Option<u32>,
     /// Scene time in seconds, for animated patterns and scrolling images [default: 0].
     #[arg(long, allow_negative_numbers = true, value_parser = parse_time)]
@@ -74,7 +79,7 @@ pub fn run(args: RenderArgs) -> Result<(), Error> {
     };
     let settings = override_settings(start.settings, &args);
     let camera = start.scene.camera.clone();
-    let prepared = PreparedScene::new(start.scene, settings.tessellation);
+    let prepared = settings.prepare(start.scene, &camera);
     let interrupt = Interrupt::watch();
     for (time, path) in frames(&args, settings.time, &output)? {
         let settings = StillSettings { time, ..settings };
@@ -106,9 +111,8 @@ fn from_source(name: &str) -> Result<Start, Error> {
         scene_text: bumpwork::scene::source_text(name)?,
         settings: StillSettings {
             size: (800, 600),
-            supersampling: Supersampling::default(),
-            tessellation: Tessellation::default(),
-            interpolation: Interpolation::PerspectiveCorrect,
+            quality: Quality::default(),
+            resolve: ResolveFilter::default(),
             time: 0.0,
             mode: ViewMode::Shaded,
         },
@@ -143,20 +147,22 @@ fn from_still(still: &Path) -> Result<Start, Error> {
 }
 
 fn override_settings(base: StillSettings, args: &RenderArgs) -> StillSettings {
+    let mut quality = args.quality.unwrap_or(base.quality);
+    if let Some(samples) = args.samples {
+        quality.samples = samples;
+    }
+    if let Some(density) = args.tessellation {
+        quality.tessellation = density;
+        quality.adaptive_tolerance_px = None;
+    }
     StillSettings {
         size: args.size.unwrap_or(base.size),
-        supersampling: Supersampling {
-            samples: args.samples.unwrap_or(base.supersampling.samples),
-            filter: args
-                .filter
-                .as_deref()
-                .and_then(ResolveFilter::parse)
-                .unwrap_or(base.supersampling.filter),
-        },
-        tessellation: args
-            .tessellation
-            .map_or(base.tessellation, |density| Tessellation { density }),
-        interpolation: base.interpolation,
+        quality,
+        resolve: args
+            .filter
+            .as_deref()
+            .and_then(ResolveFilter::parse)
+            .unwrap_or(base.resolve),
         time: args.time.unwrap_or(base.time),
         mode: args
             .mode
@@ -205,10 +211,9 @@ fn render_one(
     if format == StillFormat::Pov {
         let settings = &request.settings;
         let warnings = bumpwork::export::write_pov(
-            &request.prepared.scene,
+            request.prepared,
             request.camera,
             settings.size,
-            settings.tessellation,
             settings.time,
             path,
         )?;

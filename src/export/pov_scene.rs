@@ -8,10 +8,9 @@
 use super::atomic::AtomicFile;
 use super::png_file::PngStill;
 use crate::Error;
-use crate::raster::Camera;
+use crate::raster::{Camera, PreparedObject, PreparedScene};
 use crate::scene::{Light, Object, Scene};
 use crate::still::RowSink;
-use crate::surface::Tessellation;
 use glam::{DVec3, Vec2, Vec3};
 use std::fmt::Write as _;
 use std::io::Write as _;
@@ -23,18 +22,18 @@ pub const BAKE_SIDE: u32 = 1024;
 /// Writes `path` (the .pov file) and its baked images beside it; returns warnings for what
 /// POV-Ray cannot be given.
 pub fn write_pov(
-    scene: &Scene,
+    prepared: &PreparedScene,
     camera: &Camera,
     size: (u32, u32),
-    tessellation: Tessellation,
     time: f64,
     path: &Path,
 ) -> Result<Vec<String>, Error> {
+    let scene = &prepared.scene;
     let mut sdl = header(scene, camera, size);
     let mut warnings = Vec::new();
-    for (index, object) in scene.objects.iter().enumerate() {
-        let maps = bake_maps(object, index, time, path, &mut warnings)?;
-        write_object(&mut sdl, object, scene.ambient, tessellation, &maps);
+    for (index, object) in prepared.objects.iter().enumerate() {
+        let maps = bake_maps(&scene.objects[index], index, time, path, &mut warnings)?;
+        write_object(&mut sdl, object, scene.ambient, &maps);
     }
     let (file, mut handle) = AtomicFile::create(path)?;
     handle
@@ -197,15 +196,9 @@ fn write_height_png(path: &Path, heights: &[f32]) -> Result<f32, Error> {
 }
 
 /// One object as a mesh2; without normal and uv indices POV-Ray uses the face indices for both.
-fn write_object(
-    sdl: &mut String,
-    object: &Object,
-    ambient: Vec3,
-    tessellation: Tessellation,
-    maps: &BakedMaps,
-) {
+fn write_object(sdl: &mut String, object: &PreparedObject, ambient: Vec3, maps: &BakedMaps) {
     let surface = &object.surface;
-    let mesh = surface.tessellate(tessellation);
+    let mesh = &object.mesh;
     let origin = surface.origin();
     let domain = surface.domain();
     let extent = domain.max - domain.min;

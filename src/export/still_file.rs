@@ -5,7 +5,6 @@ use super::metadata::{RECIPE, SCENE, SOFTWARE};
 use super::{PngStill, PpmStill};
 use crate::Error;
 use crate::raster::{Camera, FrameStats, PreparedScene, Viewport};
-use crate::shade::LitShader;
 use crate::still::{BandJob, Recipe, RowSink, StillSettings, StillStop, stream_still};
 use std::path::Path;
 
@@ -26,6 +25,7 @@ pub enum StillFormat {
 
 /// What to render and what to record about it.
 pub struct StillRequest<'a> {
+    /// The scene as `settings.quality` prepares it for this camera and size.
     pub prepared: &'a PreparedScene,
     pub camera: &'a Camera,
     pub settings: StillSettings,
@@ -44,7 +44,7 @@ pub fn write_still(
     interrupted: &dyn Fn() -> Option<i32>,
 ) -> Result<FrameStats, Error> {
     let settings = &request.settings;
-    let mut shader = LitShader::new(&request.prepared.scene, request.camera);
+    let mut shader = settings.quality.shader(request.prepared, request.camera);
     shader.mode = settings.mode;
     shader.time = settings.time;
     let job = BandJob {
@@ -55,8 +55,8 @@ pub fn write_still(
             height: settings.size.1,
         },
         shader: &shader,
-        supersampling: settings.supersampling,
-        interpolation: settings.interpolation,
+        supersampling: settings.supersampling(),
+        interpolation: settings.quality.interpolation,
     };
     let keep_going = || interrupted().is_none();
     let mut stream = |sink: &mut dyn RowSink| {

@@ -10,7 +10,8 @@ use crate::surface::{Frame, Surface, normalize_or};
 use glam::{Vec2, Vec3};
 
 /// Which normal the bump produces: the trade between speed and exactness.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "kebab-case")]
 pub enum NormalForm {
     /// Blinn's first-order normal N + Bu·(n × Pv) − Bv·(n × Pu).
     #[default]

@@ -6,7 +6,8 @@ use glam::Vec2;
 
 /// Where (Bu, Bv) comes from. Slope patterns (`slope = (BU, BV)`) give the gradient directly and
 /// have no height to difference, so every method uses their slope as written.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "kebab-case", deny_unknown_fields)]
 pub enum GradientMethod {
     /// The exact derivative: automatic differentiation of height patterns, the differentiated
     /// bicubic reconstruction of height images.

@@ -7,6 +7,8 @@ mod samples;
 mod stream;
 
 pub use bands::{BandBuffers, BandJob, band_rows, render_supersampled};
-pub use recipe::{FileHash, MAX_SIDE, ObjectState, Recipe, RecipeCamera, StillSettings};
+pub use recipe::{
+    FileHash, MAX_DENSITY, MAX_SIDE, ObjectState, Recipe, RecipeCamera, StillSettings,
+};
 pub use samples::{MAX_SAMPLES, ResolveFilter, Supersampling};
 pub use stream::{RowSink, StillStop, stream_still};

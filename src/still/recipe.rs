@@ -4,19 +4,21 @@
 
 use super::samples::{MAX_SAMPLES, ResolveFilter, Supersampling};
 use crate::Error;
-use crate::raster::{Camera, Interpolation};
+use crate::quality::Quality;
+use crate::raster::Camera;
 use crate::scene::{
     BindingFile, BumpSource, Finite, LightFile, Material, PatternBinding, Positive, Scene,
     Texturing,
 };
-use crate::shade::ViewMode;
-use crate::surface::Tessellation;
+use crate::shade::{GradientMethod, ViewMode};
 use glam::{DVec3, Vec3};
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
 
 /// The largest still side in pixels.
 pub const MAX_SIDE: u32 = 16384;
+/// The largest tessellation density (cells per half turn).
+pub const MAX_DENSITY: u32 = 4096;
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, rename_all = "kebab-case")]
@@ -27,15 +29,13 @@ pub struct Recipe {
     pub source: String,
     pub width: u32,
     pub height: u32,
-    pub samples: u32,
+    /// How samples are resolved: "box" or "tent".
     pub filter: String,
-    pub tessellation: u32,
-    /// Affine (rather than perspective-correct) texture coordinates.
-    #[serde(default)]
-    pub affine: bool,
     /// Scene time in seconds (animated patterns, scrolling images).
     pub time: f64,
     pub mode: String,
+    /// Every speed/accuracy knob, samples per pixel included.
+    pub quality: Quality,
     pub camera: RecipeCamera,
     /// The lights as they were (the workbench moves them).
     #[serde(default, rename = "light")]
@@ -81,11 +81,30 @@ pub struct FileHash {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct StillSettings {
     pub size: (u32, u32),
-    pub supersampling: Supersampling,
-    pub tessellation: Tessellation,
-    pub interpolation: Interpolation,
+    /// Tessellation, samples per pixel and the shading knobs.
+    pub quality: Quality,
+    /// How the samples of a pixel are resolved.
+    pub resolve: ResolveFilter,
     pub time: f64,
     pub mode: ViewMode,
+}
+
+impl StillSettings {
+    /// The scene tessellated (and texture filters set) as the quality asks, for this camera at
+    /// this size.
+    pub fn prepare(&self, scene: Scene, camera: &Camera) -> crate::raster::PreparedScene {
+        let (width, height) = self.size;
+        let full = crate::raster::Viewport { width, height };
+        self.quality.prepare(scene, camera, full)
+    }
+
+    /// The supersampling these settings ask for.
+    pub fn supersampling(&self) -> Supersampling {
+        Supersampling {
+            samples: self.quality.samples,
+            filter: self.resolve,
+        }
+    }
 }
 
 impl Recipe {
@@ -107,10 +126,8 @@ impl Recipe {
             source: absolute_source(source),
             width: settings.size.0,
             height: settings.size.1,
-            samples: settings.supersampling.samples,
-            filter: settings.supersampling.filter.name().into(),
-            tessellation: settings.tessellation.density,
-            affine: settings.interpolation == Interpolation::Affine,
+            filter: settings.resolve.name().into(),
+            quality: settings.quality,
             time: settings.time,
             mode: settings.mode.name().into(),
             camera: RecipeCamera::of(camera),
@@ -145,18 +162,7 @@ impl Recipe {
                 self.width, self.height
             ));
         }
-        if !(1..=MAX_SAMPLES).contains(&self.samples) {
-            return Err(format!(
-                "samples {} is outside 1..={MAX_SAMPLES}",
-                self.samples
-            ));
-        }
-        if !(1..=4096).contains(&self.tessellation) {
-            return Err(format!(
-                "tessellation {} is outside 1..=4096",
-                self.tessellation
-            ));
-        }
+        check_quality(&self.quality)?;
         if !self.time.is_finite() {
             return Err("time is not a finite number".into());
         }
@@ -168,18 +174,8 @@ impl Recipe {
             .ok_or_else(|| format!("unknown view mode '{}'", self.mode))?;
         Ok(StillSettings {
             size: (self.width, self.height),
-            supersampling: Supersampling {
-                samples: self.samples,
-                filter,
-            },
-            tessellation: Tessellation {
-                density: self.tessellation,
-            },
-            interpolation: if self.affine {
-                Interpolation::Affine
-            } else {
-                Interpolation::PerspectiveCorrect
-            },
+            quality: self.quality,
+            resolve: filter,
             time: self.time,
             mode,
         })
@@ -222,6 +218,32 @@ impl Recipe {
             .map(|m| crate::diagnostic::sanitize(&m).into_owned())
             .collect()
     }
+}
+
+/// The ranges the command line enforces, for a quality read from a file.
+fn check_quality(quality: &Quality) -> Result<(), String> {
+    if !(1..=MAX_SAMPLES).contains(&quality.samples) {
+        return Err(format!(
+            "samples {} is outside 1..={MAX_SAMPLES}",
+            quality.samples
+        ));
+    }
+    if !(1..=MAX_DENSITY).contains(&quality.tessellation) {
+        return Err(format!(
+            "tessellation {} is outside 1..={MAX_DENSITY}",
+            quality.tessellation
+        ));
+    }
+    let positive = |x: f32| x.is_finite() && x > 0.0;
+    if quality.adaptive_tolerance_px.is_some_and(|t| !positive(t)) {
+        return Err("the adaptive tolerance must be a positive number of pixels".into());
+    }
+    if let GradientMethod::CentralDifference { step } = quality.gradient
+        && !positive(step)
+    {
+        return Err("the central-difference step must be positive".into());
+    }
+    Ok(())
 }
 
 impl RecipeCamera {

@@ -7,7 +7,8 @@ use super::raster::Raster;
 use super::wrap::{Wrap, floor};
 
 /// How texels are combined into one value.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "kebab-case")]
 pub enum Filter {
     /// The texel containing the point, from the full-size level.
     Nearest,

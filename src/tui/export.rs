@@ -8,10 +8,9 @@ use super::view_mode::ViewMode;
 use crate::Error;
 use crate::export::{StillFormat, StillRequest, write_png, write_still};
 use crate::quality::Quality;
-use crate::raster::{Camera, PreparedScene};
+use crate::raster::Camera;
 use crate::scene::Scene;
-use crate::still::{Recipe, StillSettings, Supersampling};
-use crate::surface::Tessellation;
+use crate::still::{Recipe, ResolveFilter, StillSettings};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -25,7 +24,6 @@ struct ExportOrder {
     scene: Scene,
     camera: Camera,
     mode: ViewMode,
-    quality: Quality,
     settings: StillSettings,
     path: PathBuf,
 }
@@ -44,24 +42,18 @@ impl ExportJob {
     pub fn start(app: &App, size: (u32, u32), samples: u32, dir: &Path) -> ExportJob {
         let view = View::of(app);
         let stem = format!("bumpwork-{}-{}", slug(&app.scene().name), view.mode.name());
-        // The recipe records the preset's base density and interpolation; its shading knobs
-        // reach the picture only in the views drawn by `render_frame` (wireframe, error).
         let order = ExportOrder {
             source: app.scenes[app.scene_index].clone(),
             scene: app.scene().clone(),
             camera: view.camera.clone(),
             mode: view.mode,
-            quality: view.quality,
             settings: StillSettings {
                 size,
-                supersampling: Supersampling {
+                quality: Quality {
                     samples,
-                    ..Supersampling::default()
+                    ..view.quality
                 },
-                tessellation: Tessellation {
-                    density: view.quality.tessellation,
-                },
-                interpolation: view.quality.interpolation,
+                resolve: ResolveFilter::default(),
                 time: view.time,
                 mode: view.mode.shader_mode(),
             },
@@ -105,7 +97,7 @@ impl Drop for ExportJob {
 }
 
 fn export(order: ExportOrder, cancel: &AtomicBool) -> Result<(), Error> {
-    let prepared = PreparedScene::new(order.scene, order.settings.tessellation);
+    let prepared = order.settings.prepare(order.scene, &order.camera);
     if matches!(order.mode, ViewMode::Wireframe | ViewMode::Error) {
         // The wireframe is drawn over the picture and the error view is a heat map against the
         // reference, not shading: no recipe can make them again.
@@ -114,7 +106,7 @@ fn export(order: ExportOrder, cancel: &AtomicBool) -> Result<(), Error> {
             camera: order.camera,
             mode: order.mode,
             time: order.settings.time,
-            quality: order.quality,
+            quality: order.settings.quality,
         };
         let mut framebuffer = empty_framebuffer();
         let (width, height) = order.settings.size;
