@@ -27,6 +27,7 @@ impl PngStill {
         encoder.set_color(png::ColorType::Rgb);
         encoder.set_depth(png::BitDepth::Eight);
         encoder.set_source_srgb(png::SrgbRenderingIntent::Perceptual);
+        encoder.set_compression(png::Compression::Fast);
         for (keyword, text) in texts {
             encoder
                 .add_itxt_chunk(keyword.to_string(), text.clone())
