@@ -20,6 +20,9 @@ pub mod watch;
 
 pub use error::Error;
 
+/// The program and version, as stills and exported scenes record it.
+pub const PROGRAM: &str = concat!("bumpwork ", env!("CARGO_PKG_VERSION"));
+
 use std::io::Read;
 use std::path::Path;
 

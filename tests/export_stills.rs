@@ -420,3 +420,45 @@ fn a_pov_ray_scene_carries_every_object_and_its_baked_maps() {
     );
     assert_eq!(decode_png(&dir.join("scene.png")).0, 64);
 }
+
+#[test]
+fn a_recipe_from_another_version_that_cannot_be_read_says_which_version_made_it() {
+    let dir = temp_dir("still-old-recipe");
+    let first = dir.join("first.png");
+    let old = dir.join("old.png");
+    let out = bumpwork(&[
+        "render",
+        "big-sphere-squares",
+        "-o",
+        first.to_str().unwrap(),
+        "--size",
+        "16x16",
+    ]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let texts = read_png_text(&first).unwrap();
+    let text_of = |key: &str| texts.iter().find(|(k, _)| k == key).unwrap().1.clone();
+    let recipe = text_of(RECIPE)
+        .replace(bumpwork::PROGRAM, "bumpwork 0.0.1")
+        .replace("[quality]", "[quality]\naffine = true");
+    let framebuffer = bumpwork::raster::Framebuffer::new(16, 16, glam::Vec3::ZERO);
+    bumpwork::export::write_png_with_text(
+        &framebuffer,
+        &old,
+        &[(SCENE, text_of(SCENE)), (RECIPE, recipe)],
+    )
+    .unwrap();
+
+    let out = bumpwork(&[
+        "render",
+        "--from",
+        old.to_str().unwrap(),
+        "-o",
+        dir.join("again.png").to_str().unwrap(),
+    ]);
+    assert_user_error(&out, "unknown field `affine`");
+    assert_user_error(&out, "made by bumpwork 0.0.1, this is bumpwork ");
+    assert_eq!(
+        leftovers(&dir, &["first.png", "old.png"]),
+        Vec::<String>::new()
+    );
+}

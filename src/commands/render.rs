@@ -128,16 +128,16 @@ fn from_still(still: &Path) -> Result<Start, Error> {
     for change in recipe.changed_files() {
         eprintln!("bumpwork: warning: {change}; the picture may differ");
     }
-    let program = format!("bumpwork {}", env!("CARGO_PKG_VERSION"));
-    if recipe.program != program {
+    if recipe.program != bumpwork::PROGRAM {
         eprintln!(
-            "bumpwork: warning: the still was made by {}, this is {program}",
-            bumpwork::diagnostic::sanitize(&recipe.program)
+            "bumpwork: warning: the still was made by {}, this is {}",
+            bumpwork::diagnostic::sanitize(&recipe.program),
+            bumpwork::PROGRAM
         );
     }
-    let settings = recipe
-        .settings()
-        .map_err(|m| Error::Diagnostic(format!("{origin}: {m}")))?;
+    let settings = recipe.settings().map_err(|m| {
+        Error::Diagnostic(format!("{}: {m}", bumpwork::diagnostic::sanitize(&origin)))
+    })?;
     Ok(Start {
         scene: recipe.scene(&scene_text)?,
         source: recipe.source,

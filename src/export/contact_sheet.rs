@@ -105,11 +105,10 @@ pub fn write_sheet(sheet: &Pixmap, path: &Path) -> Result<(), Error> {
         .chunks_exact(4)
         .flat_map(|p| [p[0], p[1], p[2]])
         .collect();
-    let program = format!("bumpwork {}", env!("CARGO_PKG_VERSION"));
     let mut png = PngStill::create(
         path,
         (sheet.width(), sheet.height()),
-        &[(SOFTWARE, program)],
+        &[(SOFTWARE, crate::PROGRAM.to_string())],
     )?;
     png.write_rows(&rgb).map_err(|e| Error::write(path, e))?;
     png.finish()

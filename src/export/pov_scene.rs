@@ -57,12 +57,7 @@ fn header(scene: &Scene, camera: &Camera, (width, height): (u32, u32)) -> String
     let half_v = (camera.vfov_degrees as f64).to_radians() / 2.0;
     let hfov = 2.0 * (half_v.tan() * aspect).atan();
     let mut sdl = String::new();
-    let _ = writeln!(
-        sdl,
-        "// {} — written by bumpwork {}",
-        scene.name,
-        env!("CARGO_PKG_VERSION")
-    );
+    let _ = writeln!(sdl, "// {} — written by {}", scene.name, crate::PROGRAM);
     let _ = writeln!(
         sdl,
         "// povray +W{width} +H{height} (+A0.3 for antialiasing)"

@@ -122,7 +122,7 @@ impl Recipe {
             .map(|o| object_state(&o.material, &base))
             .collect();
         Recipe {
-            program: program(),
+            program: crate::PROGRAM.into(),
             source: absolute_source(source),
             width: settings.size.0,
             height: settings.size.1,
@@ -145,7 +145,8 @@ impl Recipe {
     pub fn parse(text: &str, origin: &str) -> Result<Recipe, Error> {
         let recipe: Recipe = toml::from_str(text).map_err(|e| {
             let offset = e.span().map_or(0, |s| s.start);
-            Error::Diagnostic(crate::diagnostic::render(origin, text, offset, e.message()))
+            let message = format!("{}{}", e.message(), other_program_note(text));
+            Error::Diagnostic(crate::diagnostic::render(origin, text, offset, &message))
         })?;
         recipe
             .settings()
@@ -283,8 +284,18 @@ impl RecipeCamera {
     }
 }
 
-fn program() -> String {
-    format!("bumpwork {}", env!("CARGO_PKG_VERSION"))
+/// A recipe this version cannot read may simply be from another version: say so.
+fn other_program_note(text: &str) -> String {
+    let table: Option<toml::Table> = text.parse().ok();
+    match table.as_ref().and_then(|t| t.get("program")?.as_str()) {
+        Some(program) if program != crate::PROGRAM => {
+            format!(
+                " (the still was made by {program}, this is {})",
+                crate::PROGRAM
+            )
+        }
+        _ => String::new(),
+    }
 }
 
 /// A built-in name stays as it is; a file becomes an absolute path.
