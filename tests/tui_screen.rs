@@ -5,7 +5,7 @@ use bumpwork::export::metadata::{RECIPE, SCENE, read_png_text};
 use bumpwork::export::read_png_rgb8;
 use bumpwork::still::Recipe;
 use bumpwork::term::{ColorChoice, ColorMode, SYNC_BEGIN, SYNC_END};
-use bumpwork::tui::{Action, App, Message, Screen, WorkbenchOptions};
+use bumpwork::tui::{Action, App, Message, Screen, ViewMode, WorkbenchOptions};
 use std::path::Path;
 use std::time::{Duration, Instant};
 
@@ -84,6 +84,49 @@ fn every_view_mode_glyph_set_and_colour_mode_draws() {
     }
 }
 
+/// Waits for the export the app started and returns its final status message.
+fn finished_export_message(app: &mut App) -> String {
+    assert!(app.export_job.is_some());
+    let started = Instant::now();
+    while app.export_job.is_some() && started.elapsed() < Duration::from_secs(30) {
+        app.poll_export();
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    match &app.message {
+        Message::Info(text) => text.clone(),
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn a_wireframe_export_is_a_picture_and_says_it_carries_no_recipe() {
+    let mut app = app();
+    let dir = std::env::temp_dir().join(format!("bumpwork-tui-wire-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    app.export_dir = dir.clone();
+    app.export_size = (48, 32);
+    while app.view_mode != ViewMode::Wireframe {
+        app.apply(Action::NextViewMode);
+    }
+    app.apply(Action::Export);
+    let text = finished_export_message(&mut app);
+    let (path, note) = text
+        .strip_prefix("exported ")
+        .and_then(|t| t.split_once(" (a picture only"))
+        .unwrap_or_else(|| panic!("{text}"));
+    let (width, height, _) = read_png_rgb8(Path::new(path)).unwrap();
+    assert_eq!((width, height), (48, 32));
+    assert!(note.contains("no recipe"), "{note}");
+    assert!(
+        read_png_text(Path::new(path))
+            .unwrap()
+            .iter()
+            .all(|(k, _)| k != RECIPE)
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
 #[test]
 fn the_export_key_writes_the_live_view_in_the_background_and_from_makes_it_again() {
     let mut app = app();
@@ -103,15 +146,7 @@ fn the_export_key_writes_the_live_view_in_the_background_and_from_makes_it_again
         panic!("{:?}", app.message);
     };
     assert!(text.starts_with("exporting "), "{text}");
-    assert!(app.export_job.is_some());
-    let started = Instant::now();
-    while app.export_job.is_some() && started.elapsed() < Duration::from_secs(30) {
-        app.poll_export();
-        std::thread::sleep(Duration::from_millis(10));
-    }
-    let Message::Info(text) = &app.message else {
-        panic!("{:?}", app.message);
-    };
+    let text = finished_export_message(&mut app);
     let path = Path::new(text.strip_prefix("exported ").unwrap());
     let texts = read_png_text(path).unwrap();
     let recipe_text = &texts.iter().find(|(k, _)| k == RECIPE).unwrap().1;

@@ -46,7 +46,10 @@ pub fn text_of<'a>(
         .ok_or_else(|| {
             Error::read(
                 path,
-                format!("no '{keyword}' text chunk: not a still made by bumpwork render"),
+                format!(
+                    "no '{keyword}' text chunk: not a still bumpwork can make again \
+                     (contact sheets and the workbench's wireframe and error views carry none)"
+                ),
             )
         })
 }

@@ -328,7 +328,11 @@ impl App {
         };
         let job = self.export_job.take().expect("a finished job");
         self.message = match outcome {
-            Ok(()) => Message::Info(format!("exported {}", job.path.display())),
+            Ok(()) if job.has_recipe => Message::Info(format!("exported {}", job.path.display())),
+            Ok(()) => Message::Info(format!(
+                "exported {} (a picture only: this view carries no recipe for render --from)",
+                job.path.display()
+            )),
             Err(e) => Message::Error(e.to_string()),
         };
         self.dirty.text = true;

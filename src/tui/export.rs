@@ -32,6 +32,8 @@ struct ExportOrder {
 /// and waited for, so its temporary file is removed and no partial file is left.
 pub struct ExportJob {
     pub path: PathBuf,
+    /// Whether the still carries a recipe (`render --from` can make it again).
+    pub has_recipe: bool,
     cancel: Arc<AtomicBool>,
     done: Receiver<Result<(), Error>>,
     thread: Option<JoinHandle<()>>,
@@ -62,12 +64,14 @@ impl ExportJob {
         let cancel = Arc::new(AtomicBool::new(false));
         let (sender, done) = channel();
         let path = order.path.clone();
+        let has_recipe = carries_recipe(order.mode);
         let stop = Arc::clone(&cancel);
         let thread = std::thread::spawn(move || {
             let _ = sender.send(export(order, &stop));
         });
         ExportJob {
             path,
+            has_recipe,
             cancel,
             done,
             thread: Some(thread),
@@ -96,11 +100,15 @@ impl Drop for ExportJob {
     }
 }
 
+/// The wireframe is drawn over the picture and the error view is a heat map against the
+/// reference, not shading: no recipe can make them again.
+fn carries_recipe(mode: ViewMode) -> bool {
+    !matches!(mode, ViewMode::Wireframe | ViewMode::Error)
+}
+
 fn export(order: ExportOrder, cancel: &AtomicBool) -> Result<(), Error> {
     let prepared = order.settings.prepare(order.scene, &order.camera);
-    if matches!(order.mode, ViewMode::Wireframe | ViewMode::Error) {
-        // The wireframe is drawn over the picture and the error view is a heat map against the
-        // reference, not shading: no recipe can make them again.
+    if !carries_recipe(order.mode) {
         let view = View {
             prepared: &prepared,
             camera: order.camera,
