@@ -96,19 +96,29 @@ fn json_on_one_scene_has_finite_figures_and_exact_is_the_most_accurate_preset() 
     let _ = std::fs::remove_dir_all(dir);
 }
 
-/// The chart is a whole PNG with the Pareto front's red line on white.
+/// The chart is a whole PNG with the Pareto front's red line on white, and a legend to the right
+/// of the 800-pixel plot naming the presets in their dots' blue.
 fn assert_chart_decodes(path: &std::path::Path) {
     let decoder = png::Decoder::new(std::io::BufReader::new(std::fs::File::open(path).unwrap()));
     let mut reader = decoder.read_info().expect("PNG header");
     let mut pixels = vec![0; reader.output_buffer_size().unwrap()];
     let info = reader.next_frame(&mut pixels).expect("PNG data");
-    assert_eq!((info.width, info.height), (800, 500));
+    assert_eq!((info.width, info.height), (1140, 500));
     assert_eq!(info.color_type, png::ColorType::Rgb);
     let reddish = pixels
         .chunks_exact(3)
         .filter(|p| p[0] > 180 && p[1] < 120 && p[2] < 120)
         .count();
     assert!(reddish > 50, "no Pareto front drawn ({reddish} red pixels)");
+    let legend_blue = pixels
+        .chunks_exact(3)
+        .enumerate()
+        .filter(|(i, p)| i % 1140 >= 800 && p[2] > 150 && p[0] < 80)
+        .count();
+    assert!(
+        legend_blue > 100,
+        "no preset names in the legend ({legend_blue} blue pixels)"
+    );
 }
 
 #[test]

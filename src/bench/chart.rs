@@ -1,10 +1,11 @@
 //! The bench chart: frame time (log scale) against error, one dot per variant, the Pareto front
-//! drawn through the dots nothing beats. Numbered like the summary table; no text library, so
-//! labels are digits from a 3×5 bitmap font.
+//! drawn through the dots nothing beats. Numbered like the summary table, with a legend of the
+//! numbers' variants beside the plot, in the contact sheet's 5×7 bitmap font.
 
 use super::Summary;
 use super::pareto::pareto_front;
 use super::variants::VariantKind;
+use crate::export::label_font::{GLYPH_HEIGHT, text_pixels};
 use crate::raster::Framebuffer;
 use crate::texture::srgb_to_linear;
 use glam::Vec3;
@@ -19,10 +20,13 @@ pub enum ChartMetric {
     NormalDegrees,
 }
 
-const WIDTH: u32 = 800;
+/// The plot's square of the image; the legend is to its right.
+const PLOT_WIDTH: u32 = 800;
+const LEGEND_WIDTH: u32 = 340;
+const WIDTH: u32 = PLOT_WIDTH + LEGEND_WIDTH;
 const HEIGHT: u32 = 500;
 const MARGIN: f32 = 60.0;
-const GLYPH_SCALE: f32 = 2.0;
+const GLYPH_SCALE: u32 = 2;
 
 /// The chart, WIDTH × HEIGHT, as a framebuffer for the PNG writer (its 8-bit sRGB pixels decoded
 /// to linear light, which the writer encodes back to the same bytes).
@@ -46,8 +50,9 @@ pub fn draw_chart(summaries: &[Summary], metric: ChartMetric) -> Framebuffer {
         let on_front = front.contains(&i);
         draw_point(&mut pixmap, &axes, point, summary.variant.kind, on_front);
         let (x, y) = axes.to_pixel(point);
-        draw_number(&mut pixmap, x + 6.0, y - 12.0, i as u32 + 1, [40, 40, 40]);
+        draw_number(&mut pixmap, x + 6.0, y - 16.0, i as u32 + 1, [40, 40, 40]);
     }
+    draw_legend(&mut pixmap, summaries, &front);
     to_framebuffer(&pixmap)
 }
 
@@ -67,13 +72,31 @@ fn to_framebuffer(pixmap: &Pixmap) -> Framebuffer {
     }
 }
 
+/// "1 draft", "2 interactive", … beside the plot, in the dots' colours; `*` marks the front.
+/// Rows shrink to fit when there are many variants.
+fn draw_legend(pixmap: &mut Pixmap, summaries: &[Summary], front: &[usize]) {
+    let rows = summaries.len().max(1) as f32;
+    let row_height = ((HEIGHT as f32 - 2.0 * MARGIN) / rows).min(20.0);
+    let scale = if row_height >= 18.0 { GLYPH_SCALE } else { 1 };
+    for (i, summary) in summaries.iter().enumerate() {
+        let mark = if front.contains(&i) { "*" } else { "" };
+        let text = format!("{:>2}{mark} {}", i + 1, summary.variant.name);
+        let rgb = match summary.variant.kind {
+            VariantKind::Preset => [30, 90, 200],
+            VariantKind::Knob => [40, 40, 40],
+        };
+        let y = MARGIN + i as f32 * row_height;
+        draw_text_scaled(pixmap, PLOT_WIDTH as f32 + 8.0, y, &text, rgb, scale);
+    }
+}
+
 /// "ms" under the time axis, "dB" or "deg" over the error axis.
 fn draw_units(pixmap: &mut Pixmap, metric: ChartMetric) {
-    let (w, h) = (WIDTH as f32, HEIGHT as f32);
+    let (w, h) = (PLOT_WIDTH as f32, HEIGHT as f32);
     draw_text(
         pixmap,
         w - MARGIN - 16.0,
-        h - MARGIN + 28.0,
+        h - MARGIN + 30.0,
         "ms",
         [0, 0, 0],
     );
@@ -122,7 +145,7 @@ impl Axes {
     fn to_pixel(&self, (x, y): (f64, f64)) -> (f32, f32) {
         let fx = (x - self.x.0) / (self.x.1 - self.x.0);
         let fy = (y - self.y.0) / (self.y.1 - self.y.0);
-        let plot_w = WIDTH as f32 - 2.0 * MARGIN;
+        let plot_w = PLOT_WIDTH as f32 - 2.0 * MARGIN;
         let plot_h = HEIGHT as f32 - 2.0 * MARGIN;
         (
             MARGIN + fx as f32 * plot_w,
@@ -136,7 +159,7 @@ impl Axes {
     fn draw(&self, pixmap: &mut Pixmap) {
         let grey = paint([200, 200, 200]);
         let black = paint([0, 0, 0]);
-        let (w, h) = (WIDTH as f32, HEIGHT as f32);
+        let (w, h) = (PLOT_WIDTH as f32, HEIGHT as f32);
         let frame = Rect::from_ltrb(MARGIN, MARGIN, w - MARGIN, h - MARGIN).expect("valid");
         let path = PathBuilder::from_rect(frame);
         pixmap.stroke_path(&path, &black, &stroke(1.5), Transform::identity(), None);
@@ -160,7 +183,13 @@ impl Axes {
             let (_, py) = self.to_pixel((self.x.0, value));
             line(pixmap, (MARGIN, py), (w - MARGIN, py), &grey, 1.0);
             if step >= 1.0 {
-                draw_number(pixmap, 8.0, py - 5.0, value.abs().round() as u32, [0, 0, 0]);
+                draw_number(
+                    pixmap,
+                    8.0,
+                    py - (GLYPH_HEIGHT * GLYPH_SCALE) as f32 / 2.0,
+                    value.abs().round() as u32,
+                    [0, 0, 0],
+                );
             }
             value += step;
         }
@@ -235,57 +264,21 @@ fn stroke(width: f32) -> Stroke {
     }
 }
 
-/// 3×5 digits, one row per 3 bits (high bit left), top row first.
-const DIGITS: [[u8; 5]; 10] = [
-    [7, 5, 5, 5, 7],
-    [2, 6, 2, 2, 7],
-    [7, 1, 7, 4, 7],
-    [7, 1, 7, 1, 7],
-    [5, 5, 7, 1, 1],
-    [7, 4, 7, 1, 7],
-    [7, 4, 7, 5, 7],
-    [7, 1, 1, 1, 1],
-    [7, 5, 7, 5, 7],
-    [7, 5, 7, 1, 7],
-];
-
-/// The few letters the axis units need, in the same 3×5 form.
-const LETTERS: [(char, [u8; 5]); 6] = [
-    ('m', [0, 7, 7, 5, 5]),
-    ('s', [0, 7, 4, 1, 7]),
-    ('d', [1, 1, 7, 5, 7]),
-    ('B', [6, 5, 6, 5, 6]),
-    ('e', [7, 5, 7, 4, 7]),
-    ('g', [7, 5, 7, 1, 6]),
-];
-
-fn glyph(c: char) -> Option<[u8; 5]> {
-    match c.to_digit(10) {
-        Some(d) => Some(DIGITS[d as usize]),
-        None => LETTERS.iter().find(|(l, _)| *l == c).map(|(_, g)| *g),
-    }
-}
-
 fn draw_number(pixmap: &mut Pixmap, x: f32, y: f32, number: u32, rgb: [u8; 3]) {
     draw_text(pixmap, x, y, &number.to_string(), rgb);
 }
 
-/// Digits and the letters of `LETTERS`; other characters leave a gap.
 fn draw_text(pixmap: &mut Pixmap, x: f32, y: f32, text: &str, rgb: [u8; 3]) {
-    let paint = paint(rgb);
-    for (k, c) in text.chars().enumerate() {
-        let Some(glyph) = glyph(c) else { continue };
-        let left = x + k as f32 * 4.0 * GLYPH_SCALE;
-        for (row, bits) in glyph.iter().enumerate() {
-            for col in 0..3 {
-                if bits & (4 >> col) != 0 {
-                    let px = left + col as f32 * GLYPH_SCALE;
-                    let py = y + row as f32 * GLYPH_SCALE;
-                    if let Some(rect) = Rect::from_xywh(px, py, GLYPH_SCALE, GLYPH_SCALE) {
-                        pixmap.fill_rect(rect, &paint, Transform::identity(), None);
-                    }
-                }
-            }
+    draw_text_scaled(pixmap, x, y, text, rgb, GLYPH_SCALE);
+}
+
+/// `text` with its top-left corner at (x, y), `scale` image pixels per font pixel.
+fn draw_text_scaled(pixmap: &mut Pixmap, x: f32, y: f32, text: &str, rgb: [u8; 3], scale: u32) {
+    let mut paint = paint(rgb);
+    paint.anti_alias = false;
+    for (dx, dy) in text_pixels(text, scale) {
+        if let Some(rect) = Rect::from_xywh(x + dx as f32, y + dy as f32, 1.0, 1.0) {
+            pixmap.fill_rect(rect, &paint, Transform::identity(), None);
         }
     }
 }
@@ -299,13 +292,6 @@ mod tests {
         for code in 0..=255u8 {
             let linear = srgb_to_linear(code as f32 / 255.0);
             assert_eq!(crate::raster::linear_to_srgb8(linear), code);
-        }
-    }
-
-    #[test]
-    fn every_unit_letter_has_a_glyph() {
-        for c in "0123456789msdBdeg".chars() {
-            assert!(glyph(c).is_some(), "{c}");
         }
     }
 

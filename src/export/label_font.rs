@@ -1,5 +1,6 @@
-//! A 5×7 pixel font for the contact sheet's labels (scene names: lower-case letters, digits and
-//! '-'); anything else draws as a blank. Each glyph is 7 rows, bit 4 the leftmost column.
+//! A 5×7 pixel font for the labels of the contact sheet (scene names) and the bench chart
+//! (variant names, axis numbers): letters drawn lower-case, digits and `- . = < ( ) *`; anything
+//! else draws as a blank. Each glyph is 7 rows, bit 4 the leftmost column.
 
 pub const GLYPH_WIDTH: u32 = 5;
 pub const GLYPH_HEIGHT: u32 = 7;
@@ -44,6 +45,11 @@ pub fn glyph(c: char) -> [u8; 7] {
         '9' => [0x0E, 0x11, 0x11, 0x0F, 0x01, 0x02, 0x0C],
         '-' => [0x00, 0x00, 0x00, 0x1F, 0x00, 0x00, 0x00],
         '.' => [0x00, 0x00, 0x00, 0x00, 0x00, 0x0C, 0x0C],
+        '=' => [0x00, 0x00, 0x1F, 0x00, 0x1F, 0x00, 0x00],
+        '<' => [0x02, 0x04, 0x08, 0x10, 0x08, 0x04, 0x02],
+        '(' => [0x02, 0x04, 0x08, 0x08, 0x08, 0x04, 0x02],
+        ')' => [0x08, 0x04, 0x02, 0x02, 0x02, 0x04, 0x08],
+        '*' => [0x00, 0x04, 0x15, 0x0E, 0x15, 0x04, 0x00],
         _ => [0; 7],
     }
 }
@@ -66,4 +72,19 @@ pub fn text_pixels(text: &str, scale: u32) -> impl Iterator<Item = (u32, u32)> +
 /// The width of `text` in pixels at `scale`.
 pub fn text_width(text: &str, scale: u32) -> u32 {
     (text.chars().count() as u32 * (GLYPH_WIDTH + 1)).saturating_sub(1) * scale
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_bench_variant_name_and_unit_draws_without_blanks() {
+        let names = crate::bench::variants().into_iter().map(|v| v.name);
+        for text in names.chain(["ms", "db", "deg", "0123456789*"].map(String::from)) {
+            for c in text.chars() {
+                assert_ne!(glyph(c), [0; 7], "'{c}' of {text}");
+            }
+        }
+    }
 }

@@ -3,7 +3,7 @@
 
 mod atomic;
 mod contact_sheet;
-mod label_font;
+pub mod label_font;
 pub mod metadata;
 mod png_file;
 mod pov_scene;
