@@ -218,7 +218,10 @@ fn render_one(
             path,
         )?;
         for warning in warnings {
-            eprintln!("bumpwork: warning: {warning}");
+            eprintln!(
+                "bumpwork: warning: {}",
+                bumpwork::diagnostic::sanitize_lines(&warning.to_string())
+            );
         }
         return Ok(());
     }

@@ -114,8 +114,21 @@ pub fn decode_image(
 /// trusted, since devices and pipes report 0 and would otherwise be read forever.
 fn read_file(path: &Path, limits: &Limits) -> Result<Vec<u8>, Reason> {
     let file = std::fs::File::open(path).map_err(io_reason)?;
-    if file.metadata().map_err(io_reason)?.is_dir() {
+    let metadata = file.metadata().map_err(io_reason)?;
+    if metadata.is_dir() {
         return Err(Reason::Unreadable("it is a directory".into()));
+    }
+    if is_device(&metadata) {
+        return Err(Reason::Unreadable("it is a device, not a file".into()));
+    }
+    if metadata.is_file() && metadata.len() > limits.max_bytes {
+        return Err(Reason::Oversized {
+            detail: format!(
+                "the file is {} MiB, over the {} MiB limit",
+                metadata.len() >> 20,
+                limits.max_bytes >> 20
+            ),
+        });
     }
     let mut bytes = Vec::new();
     file.take(limits.max_bytes.saturating_add(1))
@@ -127,6 +140,19 @@ fn read_file(path: &Path, limits: &Limits) -> Result<Vec<u8>, Reason> {
         });
     }
     Ok(bytes)
+}
+
+/// Character and block devices (`/dev/zero`, `/dev/urandom`, a disk) are never images; reading
+/// one would only fill memory up to the limit. Pipes are read, up to the limit.
+#[cfg(unix)]
+fn is_device(metadata: &std::fs::Metadata) -> bool {
+    use std::os::unix::fs::FileTypeExt;
+    metadata.file_type().is_char_device() || metadata.file_type().is_block_device()
+}
+
+#[cfg(not(unix))]
+fn is_device(_: &std::fs::Metadata) -> bool {
+    false
 }
 
 fn io_reason(error: io::Error) -> Reason {
