@@ -442,11 +442,6 @@ const FNV_OFFSET: u64 = 0xcbf2_9ce4_8422_2325;
 
 /// FNV-1a, 64 bits: stable across builds and platforms (unlike std's hasher), enough to notice
 /// an edited file.
-#[cfg(test)]
-fn fnv1a64(bytes: &[u8]) -> u64 {
-    fnv1a64_from(FNV_OFFSET, bytes)
-}
-
 /// Continues a hash over more bytes.
 fn fnv1a64_from(hash: u64, bytes: &[u8]) -> u64 {
     bytes.iter().fold(hash, |hash, &b| {
@@ -461,6 +456,10 @@ fn hex(value: u64) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn fnv1a64(bytes: &[u8]) -> u64 {
+        fnv1a64_from(FNV_OFFSET, bytes)
+    }
 
     #[test]
     fn fnv1a64_matches_the_published_test_vectors() {
