@@ -87,3 +87,38 @@ fn a_still_never_replaces_a_pattern_or_scene_file() {
         assert_eq!(std::fs::read_to_string(&path).unwrap(), "precious\n");
     }
 }
+
+/// A crash mid-export (SIGKILL: no handler runs) never leaves a partial file under the
+/// destination's name; what it can leave is the hidden temporary file it was writing.
+#[test]
+fn a_killed_export_leaves_no_partial_file_at_the_destination() {
+    let dir = temp_dir("nothing-lost-kill");
+    let out = dir.join("big.png");
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_bumpwork"))
+        .args(["render", "sphere-on-plane-dimples", "-o"])
+        .arg(&out)
+        .args(["--size", "4000x3000", "--samples", "64"])
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    let names = || -> Vec<String> {
+        std::fs::read_dir(&dir)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .collect()
+    };
+    // Generous: the temporary file appears as soon as the render starts.
+    let started = std::time::Instant::now();
+    while names().is_empty() && started.elapsed() < std::time::Duration::from_secs(60) {
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    child.kill().unwrap();
+    child.wait().unwrap();
+    let left = names();
+    assert!(!out.exists(), "a partial still under its own name");
+    assert!(
+        left.iter()
+            .all(|n| n.starts_with(".big.png.") && n.ends_with(".tmp")),
+        "{left:?}"
+    );
+}

@@ -131,8 +131,8 @@ pub fn image(data: &[u8]) {
     match decode_image(bytes, name, &IMAGE_LIMITS, Encoding::Srgb) {
         Ok(image) => {
             let (width, height) = (image.info.width, image.info.height);
-            assert!(width >= 1 && width <= IMAGE_LIMITS.max_width);
-            assert!(height >= 1 && height <= IMAGE_LIMITS.max_height);
+            assert!((1..=IMAGE_LIMITS.max_width).contains(&width));
+            assert!((1..=IMAGE_LIMITS.max_height).contains(&height));
             assert_eq!(
                 (image.texels.width(), image.texels.height()),
                 (width, height)
