@@ -153,7 +153,15 @@ fn session(name: &str, remote: impl Fn(&Path) -> String) {
         .unwrap();
     assert!(killed.success(), "kill the ssh client {client}");
     let gone = eventually(DEADLINE, || processes_with(&marker).is_empty());
-    assert!(gone, "the remote workbench outlived its session");
+    if !gone {
+        // Leave no stray workbench behind the failure.
+        for pid in processes_with(&marker) {
+            let _ = Command::new("kill")
+                .args(["-KILL", &pid.to_string()])
+                .status();
+        }
+        panic!("the remote workbench outlived its session");
+    }
 }
 
 /// `ssh host bumpwork`: the workbench leads the remote session, so the hang-up is its own.
