@@ -13,26 +13,65 @@ pub fn line_column(source: &str, offset: usize) -> (usize, usize) {
     (line, source[line_start..offset].chars().count() + 1)
 }
 
-/// Renders `file:line:column: message`, the offending line and a caret under the spot.
+/// Renders `file:line:column: message`, the offending line (a window of it when it is long) and a
+/// caret under the spot.
 pub fn render(file: &str, source: &str, offset: usize, message: &str) -> String {
     let (line, column) = line_column(source, offset);
-    let text = source.lines().nth(line - 1).unwrap_or("");
+    let offset = floor_char_boundary(source, offset.min(source.len()));
+    let line_start = source[..offset].rfind('\n').map_or(0, |i| i + 1);
+    let line_end = source[offset..]
+        .find('\n')
+        .map_or(source.len(), |i| offset + i);
+    let (code, caret) = snippet(&source[line_start..offset], &source[offset..line_end]);
     let gutter = line.to_string().len();
-    let shown: String = text
-        .chars()
-        .map(|c| if c == '\t' { ' ' } else { c })
-        .collect();
     format!(
-        "{file}:{line}:{column}: {message}\n{pad} |\n{line} | {code}\n{pad} | {caret:>column$}",
+        "{file}:{line}:{column}: {message}\n{pad} |\n{line} | {code}\n{pad} | {space}^",
         file = sanitize(file),
         message = sanitize(message),
         pad = " ".repeat(gutter),
-        code = sanitize(&shown),
-        caret = "^",
+        space = " ".repeat(caret),
     )
 }
 
-fn floor_char_boundary(s: &str, mut i: usize) -> usize {
+/// Characters of context shown on each side of the spot in a long line.
+const CONTEXT: usize = 60;
+
+/// The escaped source line around a spot (`before` and `after` it on its line; long lines are
+/// cut to `CONTEXT` characters each side, marked with `…`) and the caret's display column in it.
+pub fn snippet(before: &str, after: &str) -> (String, usize) {
+    let before: Vec<char> = before.chars().collect();
+    let after = after.trim_end_matches('\r');
+    let mut left: String = before[before.len().saturating_sub(CONTEXT)..]
+        .iter()
+        .collect();
+    if before.len() > CONTEXT {
+        left.insert(0, '…');
+    }
+    let mut right: String = after.chars().take(CONTEXT).collect();
+    if after.chars().nth(CONTEXT).is_some() {
+        right.push('…');
+    }
+    let left = escape_line(&left);
+    let caret = left.chars().count();
+    (left + &escape_line(&right), caret)
+}
+
+/// A line of a file made safe to show: control characters (and bidi overrides, which reorder what
+/// a terminal shows) escaped, tabs as one space so a caret below stays aligned.
+pub fn escape_line(text: &str) -> String {
+    sanitize(&text.replace('\t', " ")).into_owned()
+}
+
+/// Each line of `text` sanitised, line breaks kept: for messages of several lines (diagnostics
+/// with a caret) on their last way to the terminal.
+pub fn sanitize_lines(text: &str) -> String {
+    text.split('\n')
+        .map(|line| sanitize(line))
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+pub fn floor_char_boundary(s: &str, mut i: usize) -> usize {
     while !s.is_char_boundary(i) {
         i -= 1;
     }
@@ -66,5 +105,28 @@ mod tests {
         let caret_line = message.lines().last().unwrap();
         let code_line = message.lines().nth(2).unwrap();
         assert_eq!(caret_line.find('^'), code_line.find("-1"));
+    }
+
+    #[test]
+    fn shows_a_window_of_a_long_line_with_the_caret_on_the_spot() {
+        let src = format!(
+            "key = \"{}\x1b]0;x\x07{}\"",
+            "a".repeat(5000),
+            "b".repeat(5000)
+        );
+        let offset = src.find('\x1b').unwrap();
+        let message = render("s.toml", &src, offset, "bad");
+        assert!(message.len() < 400, "{} bytes", message.len());
+        assert!(!message.contains('\x1b') && !message.contains('\x07'));
+        let code_line = message.lines().nth(2).unwrap();
+        let caret_line = message.lines().last().unwrap();
+        let caret = caret_line.chars().position(|c| c == '^').unwrap();
+        let shown: String = code_line.chars().skip(caret).take(2).collect();
+        assert_eq!(shown, "\\e");
+    }
+
+    #[test]
+    fn sanitize_lines_keeps_line_breaks_only() {
+        assert_eq!(sanitize_lines("a\x1b[2J\nb\rc"), "a\\e[2J\nb\\rc");
     }
 }

@@ -4,6 +4,7 @@
 mod commands;
 
 use bumpwork::Error;
+use bumpwork::diagnostic::sanitize_lines;
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
 
@@ -41,7 +42,8 @@ fn main() -> ExitCode {
             return ExitCode::SUCCESS;
         }
         Err(e) => {
-            let _ = e.print();
+            // Plain text (no styling), escaped: an argument may hold terminal controls.
+            eprint!("{}", sanitize_lines(&e.render().to_string()));
             return ExitCode::FAILURE;
         }
     };
@@ -52,13 +54,15 @@ fn main() -> ExitCode {
             ExitCode::from(128 + signal as u8)
         }
         Err(e) => {
-            eprintln!("bumpwork: error: {e}");
+            // Messages escape what they quote; this is the backstop for any that does not.
+            eprintln!("bumpwork: error: {}", sanitize_lines(&e.to_string()));
             ExitCode::FAILURE
         }
     }
 }
 
 fn run(cli: Cli) -> Result<(), Error> {
+    bumpwork::texture::check_image_budget().map_err(Error::InvalidArgument)?;
     match cli.command {
         Some(Command::Render(args)) => commands::render::run(args),
         Some(Command::Check(args)) => commands::check::run(args),

@@ -184,7 +184,7 @@ fn configured_limits_reject_a_file_the_defaults_accept() {
 }
 
 #[test]
-fn an_endless_device_is_cut_off_at_the_byte_limit() {
+fn a_device_is_refused_and_an_endless_pipe_is_cut_off_at_the_byte_limit() {
     let zero = Path::new("/dev/zero");
     if !zero.exists() {
         return; // not a Unix system: nothing to check
@@ -194,5 +194,26 @@ fn an_endless_device_is_cut_off_at_the_byte_limit() {
         ..Limits::default()
     };
     let error = load_image(zero, &limits, Encoding::Srgb).unwrap_err();
+    assert!(error.to_string().contains("it is a device"), "{error}");
+
+    let dir = tempfile::tempdir().unwrap();
+    let fifo = dir.path().join("endless.png");
+    let made = std::process::Command::new("mkfifo").arg(&fifo).status();
+    if !made.is_ok_and(|s| s.success()) {
+        return; // no mkfifo: the device case above is the check
+    }
+    let writer_end = fifo.clone();
+    let writer = std::thread::spawn(move || {
+        use std::io::Write;
+        let mut pipe = std::fs::OpenOptions::new()
+            .write(true)
+            .open(writer_end)
+            .unwrap();
+        let block = vec![0u8; 1 << 16];
+        // Ends when the reader closes its end (EPIPE).
+        while pipe.write_all(&block).is_ok() {}
+    });
+    let error = load_image(&fifo, &limits, Encoding::Srgb).unwrap_err();
     assert!(matches!(error.reason, Reason::Oversized { .. }), "{error}");
+    writer.join().unwrap();
 }

@@ -23,7 +23,7 @@ pub fn run(args: CheckArgs) -> Result<(), Error> {
         match check(path) {
             Ok(summary) => println!("{}: ok: {summary}", sanitize(&path.display().to_string())),
             Err(message) => {
-                eprintln!("{message}");
+                eprintln!("{}", bumpwork::diagnostic::sanitize_lines(&message));
                 bad += 1;
             }
         }

@@ -73,6 +73,7 @@ pub fn run(args: RenderArgs) -> Result<(), Error> {
         return Ok(());
     }
     let output = args.output.clone().expect("clap requires -o unless --list");
+    refuse_to_overwrite_sources(&output)?;
     let start = match &args.from {
         Some(still) => from_still(still)?,
         None => from_source(args.scene.as_deref().expect("clap requires a scene"))?,
@@ -92,6 +93,21 @@ pub fn run(args: RenderArgs) -> Result<(), Error> {
             recipe: &recipe,
         };
         render_one(&request, &path, args.format, &interrupt)?;
+    }
+    Ok(())
+}
+
+/// Pattern and scene files are the user's work: a still never replaces one, whatever `-o` says.
+fn refuse_to_overwrite_sources(output: &Path) -> Result<(), Error> {
+    let extension = output
+        .extension()
+        .map(|e| e.to_string_lossy().to_ascii_lowercase());
+    if matches!(extension.as_deref(), Some("pat" | "toml")) {
+        return Err(Error::InvalidArgument(format!(
+            "refusing to write a still to {}: pattern (.pat) and scene (.toml) files are never \
+             overwritten; name a .png, .ppm or .pov file",
+            bumpwork::diagnostic::sanitize(&output.display().to_string())
+        )));
     }
     Ok(())
 }
@@ -218,7 +234,10 @@ fn render_one(
             path,
         )?;
         for warning in warnings {
-            eprintln!("bumpwork: warning: {warning}");
+            eprintln!(
+                "bumpwork: warning: {}",
+                bumpwork::diagnostic::sanitize_lines(&warning.to_string())
+            );
         }
         return Ok(());
     }

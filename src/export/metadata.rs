@@ -1,7 +1,7 @@
 //! The text chunks a still carries, and reading them back from any PNG.
 
 use crate::Error;
-use std::io::BufReader;
+use std::io::{BufRead, BufReader, Seek};
 use std::path::Path;
 
 /// The program and version (a registered PNG keyword).
@@ -14,8 +14,13 @@ pub const RECIPE: &str = "bumpwork-recipe";
 /// A PNG's text chunks (tEXt, zTXt and iTXt) as (keyword, text), in file order by kind.
 pub fn read_png_text(path: &Path) -> Result<Vec<(String, String)>, Error> {
     let file = std::fs::File::open(path).map_err(|e| Error::read(path, e))?;
+    png_text(BufReader::new(file), path)
+}
+
+/// The text chunks of a PNG read from `png`; `path` names it in messages.
+pub fn png_text(png: impl BufRead + Seek, path: &Path) -> Result<Vec<(String, String)>, Error> {
     let fail = |e: png::DecodingError| Error::read(path, format!("not a readable PNG: {e}"));
-    let mut decoder = png::Decoder::new(BufReader::new(file));
+    let mut decoder = png::Decoder::new(png);
     decoder.set_ignore_text_chunk(false);
     let reader = decoder.read_info().map_err(fail)?;
     let info = reader.info();

@@ -1,5 +1,6 @@
 //! `PatternError`: every problem in a pattern file, with its place and a rustc-like snippet.
 
+use crate::diagnostic::{escape_line as escape_for_terminal, floor_char_boundary, snippet};
 use std::fmt;
 
 /// A byte range in the source text.
@@ -88,43 +89,6 @@ impl fmt::Display for PatternError {
 }
 
 impl std::error::Error for PatternError {}
-
-/// Characters of context shown on each side of the error in a long line.
-const CONTEXT: usize = 60;
-
-/// The escaped source line around the error (long lines are cut to `CONTEXT` characters each
-/// side, marked with `…`) and the caret's display column in it.
-fn snippet(before: &str, after: &str) -> (String, usize) {
-    let before: Vec<char> = before.chars().collect();
-    let after = after.trim_end_matches('\r');
-    let mut left: String = before[before.len().saturating_sub(CONTEXT)..]
-        .iter()
-        .collect();
-    if before.len() > CONTEXT {
-        left.insert(0, '…');
-    }
-    let mut right: String = after.chars().take(CONTEXT).collect();
-    if after.chars().nth(CONTEXT).is_some() {
-        right.push('…');
-    }
-    let left = escape_for_terminal(&left);
-    let caret = left.chars().count();
-    (left + &escape_for_terminal(&right), caret)
-}
-
-fn floor_char_boundary(s: &str, mut i: usize) -> usize {
-    while !s.is_char_boundary(i) {
-        i -= 1;
-    }
-    i
-}
-
-/// Escapes control characters (and bidi overrides, which reorder what a terminal shows) so that
-/// text echoed from a pattern file can never drive the terminal. Tabs become one space so the
-/// caret stays aligned.
-pub fn escape_for_terminal(text: &str) -> String {
-    crate::term::sanitize(&text.replace('\t', " ")).into_owned()
-}
 
 #[cfg(test)]
 mod tests {

@@ -46,11 +46,16 @@ pub fn noise3(x: f64, y: f64, z: f64) -> (f64, [f64; 3]) {
     (value, gradient)
 }
 
+/// Beyond this the lattice stops: every coordinate past ±2⁶² falls in the last cell, so `cell + 1`
+/// cannot overflow (found by fuzzing: a plain `as i64` saturates at 2⁶³ − 1 and the next corner
+/// overflowed).
+const LAST_CELL: f64 = (1u64 << 62) as f64;
+
 /// Lattice cell and position inside it. Coordinates beyond ±2⁶² share cells; noise there is
 /// still finite.
 fn split(x: f64) -> (i64, f64) {
     let cell = x.floor();
-    (cell as i64, x - cell)
+    (cell.clamp(-LAST_CELL, LAST_CELL) as i64, x - cell)
 }
 
 fn fade(t: f64) -> (f64, f64) {
@@ -82,6 +87,16 @@ mod tests {
             let (n, _, _) = noise2(x, y);
             assert!((-1.0..=1.0).contains(&n));
             assert_eq!(noise2(x, y).0, n);
+        }
+    }
+
+    #[test]
+    fn finite_past_the_end_of_the_lattice() {
+        for x in [9.3e18, -9.3e18, 1.0e19, 3.0e38, f64::MAX, -f64::MAX] {
+            let (value, du, dv) = noise2(x, -x);
+            assert!((-1.0..=1.0).contains(&value) && du.is_finite() && dv.is_finite());
+            let (value, gradient) = noise3(x, x, -x);
+            assert!((-1.0..=1.0).contains(&value) && gradient.iter().all(|g| g.is_finite()));
         }
     }
 

@@ -211,8 +211,8 @@ impl Recipe {
     pub fn changed_files(&self) -> Vec<String> {
         self.files
             .iter()
-            .filter_map(|f| match std::fs::read(&f.path) {
-                Ok(bytes) if hex(fnv1a64(&bytes)) == f.fnv1a64 => None,
+            .filter_map(|f| match hash_file(Path::new(&f.path)) {
+                Ok(hash) if hex(hash) == f.fnv1a64 => None,
                 Ok(_) => Some(format!("{} has changed since the still was made", f.path)),
                 Err(e) => Some(format!("{} cannot be read: {e}", f.path)),
             })
@@ -397,10 +397,10 @@ fn file_hashes(scene: &Scene, base: &Path) -> Vec<FileHash> {
     names
         .into_iter()
         .filter_map(|path| {
-            let bytes = std::fs::read(&path).ok()?;
+            let hash = hash_file(Path::new(&path)).ok()?;
             Some(FileHash {
                 path,
-                fnv1a64: hex(fnv1a64(&bytes)),
+                fnv1a64: hex(hash),
             })
         })
         .collect()
@@ -418,10 +418,44 @@ fn file_names(material: &Material) -> Vec<String> {
     bump.into_iter().chain(texture).collect()
 }
 
+/// Largest file hashed for a recipe: the image size limit (no pattern or image we read is larger).
+const MAX_HASHED_BYTES: u64 = 512 << 20;
+
+/// The FNV-1a hash of a regular file, streamed. A recipe names files from a PNG anyone may have
+/// made: a device (`/dev/zero`), a pipe or a huge file is refused, not read forever.
+fn hash_file(path: &Path) -> std::io::Result<u64> {
+    use std::io::{BufRead, BufReader, Error, ErrorKind, Read};
+    let file = std::fs::File::open(path)?;
+    let metadata = file.metadata()?;
+    if !metadata.is_file() {
+        return Err(Error::new(ErrorKind::InvalidInput, "not a regular file"));
+    }
+    if metadata.len() > MAX_HASHED_BYTES {
+        return Err(Error::new(
+            ErrorKind::InvalidInput,
+            format!("larger than {} MiB", MAX_HASHED_BYTES >> 20),
+        ));
+    }
+    let mut reader = BufReader::with_capacity(1 << 16, file.take(MAX_HASHED_BYTES));
+    let mut hash = FNV_OFFSET;
+    loop {
+        let chunk = reader.fill_buf()?;
+        if chunk.is_empty() {
+            return Ok(hash);
+        }
+        hash = fnv1a64_from(hash, chunk);
+        let n = chunk.len();
+        reader.consume(n);
+    }
+}
+
+const FNV_OFFSET: u64 = 0xcbf2_9ce4_8422_2325;
+
 /// FNV-1a, 64 bits: stable across builds and platforms (unlike std's hasher), enough to notice
 /// an edited file.
-fn fnv1a64(bytes: &[u8]) -> u64 {
-    bytes.iter().fold(0xcbf2_9ce4_8422_2325, |hash, &b| {
+/// Continues a hash over more bytes.
+fn fnv1a64_from(hash: u64, bytes: &[u8]) -> u64 {
+    bytes.iter().fold(hash, |hash, &b| {
         (hash ^ b as u64).wrapping_mul(0x0100_0000_01b3)
     })
 }
@@ -434,10 +468,24 @@ fn hex(value: u64) -> String {
 mod tests {
     use super::*;
 
+    fn fnv1a64(bytes: &[u8]) -> u64 {
+        fnv1a64_from(FNV_OFFSET, bytes)
+    }
+
     #[test]
     fn fnv1a64_matches_the_published_test_vectors() {
         assert_eq!(fnv1a64(b""), 0xcbf2_9ce4_8422_2325);
         assert_eq!(fnv1a64(b"a"), 0xaf63_dc4c_8601_ec8c);
         assert_eq!(fnv1a64(b"foobar"), 0x8594_4171_f739_67e8);
+    }
+
+    #[test]
+    fn a_streamed_file_hashes_as_its_bytes_and_devices_are_refused() {
+        let bytes: Vec<u8> = (0..200_000u32).map(|i| (i * 7 % 251) as u8).collect();
+        let file = tempfile::NamedTempFile::new().unwrap();
+        std::fs::write(file.path(), &bytes).unwrap();
+        assert_eq!(hash_file(file.path()).unwrap(), fnv1a64(&bytes));
+        #[cfg(unix)]
+        assert!(hash_file(Path::new("/dev/zero")).is_err());
     }
 }

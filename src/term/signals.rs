@@ -76,6 +76,8 @@ pub struct ShutdownSignals {
     watchdog: Handle,
     /// Dropping it tells a watchdog in its grace period to stand down.
     _cancel: mpsc::Sender<()>,
+    /// Set on drop: the terminal watcher, if any, stops.
+    unwatch: Arc<AtomicBool>,
 }
 
 impl ShutdownSignals {
@@ -94,6 +96,7 @@ impl ShutdownSignals {
             ids: Vec::new(),
             watchdog,
             _cancel: cancel,
+            unwatch: Arc::new(AtomicBool::new(false)),
         };
         for signal in ShutdownSignal::ALL {
             let number = signal.number();
@@ -114,6 +117,33 @@ impl ShutdownSignals {
         Ok(signals)
     }
 
+    /// Watches stdout, a terminal now, and raises SIGHUP on this process when it stops being one.
+    ///
+    /// A tty hung up while its hang-up signal went elsewhere (a parent that catches SIGHUP keeps
+    /// the session, and the kernel signals only the session leader) leaves reads at end-of-file
+    /// forever, and crossterm's reader spins on that without returning (so the event loop cannot
+    /// notice). Every ioctl on a hung-up tty fails, so `is_terminal` turns false; the raised
+    /// SIGHUP then ends the workbench as a real one would (restored terminal, exit status 129).
+    pub fn watch_terminal(&self) -> io::Result<()> {
+        use std::io::IsTerminal;
+        if !io::stdout().is_terminal() {
+            return Ok(());
+        }
+        let unwatch = Arc::clone(&self.unwatch);
+        thread::Builder::new()
+            .name("terminal-watch".into())
+            .spawn(move || {
+                while !unwatch.load(Ordering::SeqCst) {
+                    if !io::stdout().is_terminal() {
+                        let _ = signal_hook::low_level::raise(SIGHUP);
+                        return;
+                    }
+                    thread::sleep(TERMINAL_WATCH);
+                }
+            })?;
+        Ok(())
+    }
+
     /// The last shutdown signal received, if any.
     pub fn received(&self) -> Option<ShutdownSignal> {
         ShutdownSignal::from_number(self.received.load(Ordering::SeqCst))
@@ -126,8 +156,12 @@ impl Drop for ShutdownSignals {
             signal_hook::low_level::unregister(id);
         }
         self.watchdog.close();
+        self.unwatch.store(true, Ordering::SeqCst);
     }
 }
+
+/// How often the terminal watcher looks.
+const TERMINAL_WATCH: Duration = Duration::from_millis(250);
 
 /// A thread that, on the first shutdown signal, gives the event loop `grace` to exit and then restores
 /// the terminal and exits itself; it stands down when `cancelled` disconnects.

@@ -24,13 +24,44 @@ pub struct Limits {
 }
 
 impl Default for Limits {
+    /// 16384 per side; `BUMPWORK_MAX_IMAGE_MIB` MiB (512 when unset) per image.
     fn default() -> Self {
         Self {
             max_width: 16_384,
             max_height: 16_384,
-            max_bytes: 512 << 20,
+            max_bytes: image_budget_mib().unwrap_or(DEFAULT_IMAGE_MIB) << 20,
         }
     }
+}
+
+/// The environment variable that sets the memory one image may take, in MiB.
+pub const IMAGE_BUDGET_VAR: &str = "BUMPWORK_MAX_IMAGE_MIB";
+const DEFAULT_IMAGE_MIB: u64 = 512;
+const MAX_IMAGE_MIB: u64 = 65_536;
+
+/// The image budget the user set, if any and valid; an invalid one is reported by
+/// [`check_image_budget`] at start-up and otherwise leaves the default.
+fn image_budget_mib() -> Option<u64> {
+    check_image_budget().ok().flatten()
+}
+
+/// `Ok(None)` when `BUMPWORK_MAX_IMAGE_MIB` is unset, `Ok(Some(mib))` when it holds a whole
+/// number of MiB from 1 to 65536, and a message otherwise.
+pub fn check_image_budget() -> Result<Option<u64>, String> {
+    let Some(value) = std::env::var_os(IMAGE_BUDGET_VAR) else {
+        return Ok(None);
+    };
+    value
+        .to_str()
+        .and_then(|v| v.trim().parse::<u64>().ok())
+        .filter(|mib| (1..=MAX_IMAGE_MIB).contains(mib))
+        .map(Some)
+        .ok_or_else(|| {
+            format!(
+                "{IMAGE_BUDGET_VAR} must be a whole number of MiB from 1 to {MAX_IMAGE_MIB}, not '{}'",
+                crate::term::sanitize(&value.to_string_lossy())
+            )
+        })
 }
 
 /// What the file holds, as reported by `bumpwork check IMAGE`.
@@ -114,8 +145,21 @@ pub fn decode_image(
 /// trusted, since devices and pipes report 0 and would otherwise be read forever.
 fn read_file(path: &Path, limits: &Limits) -> Result<Vec<u8>, Reason> {
     let file = std::fs::File::open(path).map_err(io_reason)?;
-    if file.metadata().map_err(io_reason)?.is_dir() {
+    let metadata = file.metadata().map_err(io_reason)?;
+    if metadata.is_dir() {
         return Err(Reason::Unreadable("it is a directory".into()));
+    }
+    if is_device(&metadata) {
+        return Err(Reason::Unreadable("it is a device, not a file".into()));
+    }
+    if metadata.is_file() && metadata.len() > limits.max_bytes {
+        return Err(Reason::Oversized {
+            detail: format!(
+                "the file is {} MiB, over the {} MiB limit",
+                metadata.len() >> 20,
+                limits.max_bytes >> 20
+            ),
+        });
     }
     let mut bytes = Vec::new();
     file.take(limits.max_bytes.saturating_add(1))
@@ -127,6 +171,19 @@ fn read_file(path: &Path, limits: &Limits) -> Result<Vec<u8>, Reason> {
         });
     }
     Ok(bytes)
+}
+
+/// Character and block devices (`/dev/zero`, `/dev/urandom`, a disk) are never images; reading
+/// one would only fill memory up to the limit. Pipes are read, up to the limit.
+#[cfg(unix)]
+fn is_device(metadata: &std::fs::Metadata) -> bool {
+    use std::os::unix::fs::FileTypeExt;
+    metadata.file_type().is_char_device() || metadata.file_type().is_block_device()
+}
+
+#[cfg(not(unix))]
+fn is_device(_: &std::fs::Metadata) -> bool {
+    false
 }
 
 fn io_reason(error: io::Error) -> Reason {

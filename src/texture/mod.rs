@@ -31,7 +31,10 @@ pub use colour::{Texel, Texture};
 pub use encoding::{Encoding, linear_to_srgb, srgb_to_linear};
 pub use error::{PrintableName, Reason, TextureError};
 pub use height::{HeightMap, HeightSample};
-pub use load::{ImageInfo, Limits, LoadedImage, check_image, decode_image, load_image};
+pub use load::{
+    IMAGE_BUDGET_VAR, ImageInfo, Limits, LoadedImage, check_image, check_image_budget,
+    decode_image, load_image,
+};
 pub use mapping::{
     Cylindrical, Mapped, Mapping, Planar, PlanarLayout, Scroll, Spherical, SurfacePoint, SurfaceUv,
     TextureMapping, TriangleMap,

@@ -21,6 +21,7 @@ pub fn run(options: &WorkbenchOptions) -> Result<(), Error> {
     let colors = options.colors.resolve(|name| std::env::var(name).ok());
     let mut app = App::new(options, colors)?;
     let signals = ShutdownSignals::register().map_err(terminal_error)?;
+    signals.watch_terminal().map_err(terminal_error)?;
     let guard = TerminalGuard::enter(options.mouse).map_err(terminal_error)?;
     let result = event_loop(&mut app, &signals);
     drop(guard);

@@ -43,3 +43,38 @@ pub fn decode_png(path: &Path) -> (u32, u32, Vec<u8>) {
     let info = reader.next_frame(&mut pixels).unwrap();
     (info.width, info.height, pixels)
 }
+
+/// Runs the binary with `args` under a cap on its address space (`ulimit -v`, in MiB), so reading
+/// a huge file into memory would fail the run, and kills it if it is still running after `secs`
+/// seconds (a generous bound: hanging is the failure, not slowness).
+pub fn bumpwork_bounded(args: &[&std::ffi::OsStr], memory_mib: u64, secs: u64) -> Output {
+    let mut child = Command::new("sh")
+        .arg("-c")
+        .arg(format!(
+            "ulimit -v {}; exec \"$0\" \"$@\"",
+            memory_mib << 10
+        ))
+        .arg(env!("CARGO_BIN_EXE_bumpwork"))
+        .args(args)
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("the binary runs");
+    let deadline = std::time::Instant::now() + std::time::Duration::from_secs(secs);
+    while child.try_wait().unwrap().is_none() {
+        if std::time::Instant::now() > deadline {
+            let _ = child.kill();
+            panic!("bumpwork {args:?} still running after {secs} s");
+        }
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    child.wait_with_output().unwrap()
+}
+
+/// The first character of `text` that could steer a terminal (any control character but a line
+/// break, including the C1 range and DEL), if there is one.
+pub fn raw_control(text: &[u8]) -> Option<char> {
+    String::from_utf8_lossy(text)
+        .chars()
+        .find(|&c| c.is_control() && c != '\n')
+}

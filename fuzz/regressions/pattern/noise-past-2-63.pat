@@ -1,0 +1,1 @@
+height = noise(u, v) + noise(x, y, z)
