@@ -7,13 +7,15 @@
 //!
 //! Run: `cargo bench --bench peer_povray`.
 
+mod bench_support;
+
+use bench_support::write_pov_peer_scene;
 use bumpwork::export::{StillFormat, StillRequest, write_pov, write_still};
 use bumpwork::measure::Timing;
 use bumpwork::quality::Quality;
-use bumpwork::scene::{BindingFile, MappingKind, load_scene_file, preset_file};
+use bumpwork::scene::load_scene_file;
 use bumpwork::shade::ViewMode;
 use bumpwork::still::{Recipe, ResolveFilter, StillSettings};
-use std::path::{Path, PathBuf};
 use std::process::Command;
 
 const SIZE: (u32, u32) = (1920, 1080);
@@ -23,34 +25,6 @@ fn runs() -> usize {
         .ok()
         .and_then(|r| r.parse().ok())
         .unwrap_or(3)
-}
-
-fn pattern(name: &str) -> Option<BindingFile> {
-    Some(BindingFile {
-        pattern: Some(name.into()),
-        ..BindingFile::default()
-    })
-}
-
-fn image(name: &str) -> Option<BindingFile> {
-    Some(BindingFile {
-        image: Some(name.into()),
-        mapping: Some(MappingKind::Spherical),
-        ..BindingFile::default()
-    })
-}
-
-/// The peer scene as a file: checks and (height) dimples on the plane; chelsea and gravel on
-/// the sphere.
-fn write_scene(dir: &Path) -> PathBuf {
-    let mut file = preset_file("sphere-on-plane-dimples").expect("preset");
-    file.objects[0].texture = pattern("checks");
-    file.objects[0].bump = pattern("dimples");
-    file.objects[1].texture = image("chelsea");
-    file.objects[1].bump = image("gravel");
-    let path = dir.join("peer.toml");
-    std::fs::write(&path, file.to_toml()).expect("scene file");
-    path
 }
 
 fn settings(samples: u32) -> StillSettings {
@@ -73,7 +47,7 @@ fn main() {
     }
     let dir = std::env::temp_dir().join(format!("bumpwork-bench-pov-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("temp dir");
-    let scene_path = write_scene(&dir);
+    let scene_path = write_pov_peer_scene(&dir);
     let text = std::fs::read_to_string(&scene_path).expect("scene text");
     let scene = load_scene_file(&scene_path).expect("peer scene");
     let camera = scene.camera.clone();
