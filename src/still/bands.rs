@@ -104,6 +104,16 @@ impl<S: FragmentShader> BandJob<'_, S> {
             stats = render_into(self.prepared, &centre, self.shader, &mut buffers.pass);
             let threshold = self.adaptive.unwrap_or(0.0);
             contrast_mask(&buffers.pass, threshold, &mut mask);
+            // A band's outer rows cannot see across the band's border: sample them fully
+            // where another band lies beyond (at most 2 rows in 64).
+            let width = viewport.width as usize;
+            if rows.start > 0 {
+                mask[..width].fill(true);
+            }
+            if rows.end < self.full.height {
+                let n = mask.len();
+                mask[n - width..].fill(true);
+            }
             for ((sum, c), &marked) in buffers
                 .resolved
                 .iter_mut()
@@ -115,6 +125,9 @@ impl<S: FragmentShader> BandJob<'_, S> {
             on_pass();
         }
         let only = self.is_adaptive().then_some(&mask[..]);
+        let marked: Vec<usize> = only.map_or_else(Vec::new, |mask| {
+            (0..mask.len()).filter(|&i| mask[i]).collect()
+        });
         for offset in offsets {
             if !keep_going() {
                 return None;
@@ -122,13 +135,10 @@ impl<S: FragmentShader> BandJob<'_, S> {
             let target = target(offset, self.supersampling.footprint(), only);
             let pass = render_into(self.prepared, &target, self.shader, &mut buffers.pass);
             stats = add_stats(stats, pass);
-            let colors = buffers.resolved.iter_mut().zip(&buffers.pass.color);
+            let (sums, colors) = (&mut buffers.resolved, &buffers.pass.color);
             match only {
-                None => colors.for_each(|(sum, c)| *sum += *c * weight),
-                Some(mask) => colors
-                    .zip(mask)
-                    .filter(|(_, marked)| **marked)
-                    .for_each(|((sum, c), _)| *sum += *c * weight),
+                None => (sums.iter_mut().zip(colors)).for_each(|(sum, c)| *sum += *c * weight),
+                Some(_) => marked.iter().for_each(|&i| sums[i] += colors[i] * weight),
             }
             on_pass();
         }
@@ -189,20 +199,23 @@ fn contrast_mask(pass: &Framebuffer, threshold: f32, mask: &mut Vec<bool>) {
             Vec3::new(c.x.sqrt(), c.y.sqrt(), c.z.sqrt())
         })
         .collect();
-    let at = |x: usize, y: usize, dx: isize, dy: isize| {
-        let x = x.saturating_add_signed(dx).min(w - 1);
-        let y = y.saturating_add_signed(dy).min(h - 1);
-        y * w + x
-    };
     for y in 0..h {
+        // Rows and columns clamped at the band's border: a one-sided difference there.
+        let (up, down) = (y.saturating_sub(1) * w, (y + 1).min(h - 1) * w);
+        let row = y * w;
         for x in 0..w {
-            let i = y * w + x;
+            let (left, right) = (x.saturating_sub(1), (x + 1).min(w - 1));
+            let i = row + x;
             let covered = pass.depth[i].is_finite();
+            let twice = 2.0 * keys[i];
             let mut mark = false;
-            for (dx, dy) in [(1, 0), (0, 1), (1, 1), (1, -1)] {
-                let (a, b) = (at(x, y, -dx, -dy), at(x, y, dx, dy));
-                let bend = keys[a] + keys[b] - 2.0 * keys[i];
-                mark |= bend.abs().max_element() > threshold
+            for (a, b) in [
+                (row + left, row + right),
+                (up + x, down + x),
+                (up + left, down + right),
+                (up + right, down + left),
+            ] {
+                mark |= (keys[a] + keys[b] - twice).abs().max_element() > threshold
                     || pass.depth[a].is_finite() != covered
                     || pass.depth[b].is_finite() != covered;
             }
