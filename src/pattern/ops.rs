@@ -97,11 +97,12 @@ pub fn apply<T: Scalar>(op: Op, a: T, b: T, c: T) -> T {
 #[inline(always)]
 pub(crate) fn floor(x: f64) -> f64 {
     const WHOLE: f64 = 4_503_599_627_370_496.0; // 2^52
-    if !(x.abs() < WHOLE) {
-        return x; // whole already, infinite or NaN
+    if x.abs() < WHOLE {
+        let t = (x as i64 as f64).copysign(x);
+        if t > x { t - 1.0 } else { t }
+    } else {
+        x // whole already, infinite or NaN
     }
-    let t = (x as i64 as f64).copysign(x);
-    if t > x { t - 1.0 } else { t }
 }
 
 fn sign(x: f64) -> f64 {
