@@ -8,23 +8,19 @@
 
 mod bench_support;
 
-use bench_support::sphere_scene;
+use bench_support::{bilinear, textured_sphere_scene};
 use bumpwork::measure::Timing;
 use bumpwork::raster::{
     Framebuffer, PreparedScene, RenderTarget, Viewport, linear_to_srgb8, render_into,
 };
-use bumpwork::scene::{ImageTexture, Light, Texturing};
+use bumpwork::scene::Light;
 use bumpwork::shade::LitShader;
 use bumpwork::surface::{Mesh, Tessellation};
-use bumpwork::texture::{
-    Filter, Footprint, Mapping, Sampler, Spherical, Texture, Wrap, load_texture,
-};
+use bumpwork::texture::{Footprint, Texture};
 use euc::buffer::Buffer2d;
 use euc::rasterizer::{BackfaceCullingDisabled, Triangles};
 use euc::{DepthStrategy, Pipeline};
 use glam::{Mat4, Vec2, Vec3};
-use std::path::Path;
-use std::sync::Arc;
 
 const WIDTH: usize = 1920;
 const HEIGHT: usize = 1080;
@@ -34,14 +30,6 @@ fn runs() -> usize {
         .ok()
         .and_then(|r| r.parse().ok())
         .unwrap_or(15)
-}
-
-fn bilinear() -> Sampler {
-    Sampler {
-        filter: Filter::Bilinear,
-        wrap_s: Wrap::Repeat,
-        wrap_t: Wrap::Clamp,
-    }
 }
 
 /// The textured sphere as euc sees it: indexed vertices, per-pixel lighting.
@@ -101,14 +89,7 @@ impl Pipeline for EucSphere<'_> {
 }
 
 fn main() {
-    let texture = Arc::new(load_texture("chelsea", Path::new(".")).expect("chelsea"));
-    let mut scene = sphere_scene();
-    scene.objects[0].material.texture = Some(Texturing::Image(ImageTexture {
-        name: "chelsea".into(),
-        texture: Arc::clone(&texture),
-        mapping: Mapping::Spherical(Spherical::new(Vec3::ZERO)),
-        sampler: bilinear(),
-    }));
+    let (scene, texture) = textured_sphere_scene();
     let camera = scene.camera.clone();
     let Light::Point { position, .. } = scene.lights[0] else {
         unreachable!("the bench sphere has a point light")

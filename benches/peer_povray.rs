@@ -7,13 +7,18 @@
 //!
 //! Run: `cargo bench --bench peer_povray`.
 
+mod bench_support;
+
+use bench_support::write_pov_peer_scene;
 use bumpwork::export::{StillFormat, StillRequest, write_pov, write_still};
 use bumpwork::measure::Timing;
 use bumpwork::quality::Quality;
-use bumpwork::scene::{BindingFile, MappingKind, load_scene_file, preset_file};
+use bumpwork::raster::{Camera, PreparedScene, Viewport};
+use bumpwork::scene::load_scene_file;
 use bumpwork::shade::ViewMode;
-use bumpwork::still::{Recipe, ResolveFilter, StillSettings};
-use std::path::{Path, PathBuf};
+use bumpwork::still::{
+    BandBuffers, BandJob, Recipe, ResolveFilter, StillSettings, render_supersampled,
+};
 use std::process::Command;
 
 const SIZE: (u32, u32) = (1920, 1080);
@@ -25,39 +30,15 @@ fn runs() -> usize {
         .unwrap_or(3)
 }
 
-fn pattern(name: &str) -> Option<BindingFile> {
-    Some(BindingFile {
-        pattern: Some(name.into()),
-        ..BindingFile::default()
-    })
-}
+/// The adaptive supersampling contrast the peer is run with.
+const ADAPTIVE: f32 = 0.05;
 
-fn image(name: &str) -> Option<BindingFile> {
-    Some(BindingFile {
-        image: Some(name.into()),
-        mapping: Some(MappingKind::Spherical),
-        ..BindingFile::default()
-    })
-}
-
-/// The peer scene as a file: checks and (height) dimples on the plane; chelsea and gravel on
-/// the sphere.
-fn write_scene(dir: &Path) -> PathBuf {
-    let mut file = preset_file("sphere-on-plane-dimples").expect("preset");
-    file.objects[0].texture = pattern("checks");
-    file.objects[0].bump = pattern("dimples");
-    file.objects[1].texture = image("chelsea");
-    file.objects[1].bump = image("gravel");
-    let path = dir.join("peer.toml");
-    std::fs::write(&path, file.to_toml()).expect("scene file");
-    path
-}
-
-fn settings(samples: u32) -> StillSettings {
+fn settings(samples: u32, adaptive_samples: Option<f32>) -> StillSettings {
     StillSettings {
         size: SIZE,
         quality: Quality {
             samples,
+            adaptive_samples,
             ..Quality::interactive()
         },
         resolve: ResolveFilter::Box,
@@ -73,11 +54,11 @@ fn main() {
     }
     let dir = std::env::temp_dir().join(format!("bumpwork-bench-pov-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("temp dir");
-    let scene_path = write_scene(&dir);
+    let scene_path = write_pov_peer_scene(&dir);
     let text = std::fs::read_to_string(&scene_path).expect("scene text");
     let scene = load_scene_file(&scene_path).expect("peer scene");
     let camera = scene.camera.clone();
-    let base = settings(1);
+    let base = settings(1, None);
     let prepared = base.prepare(scene, &camera);
     let pov = dir.join("peer.pov");
     write_pov(&prepared, &camera, SIZE, 0.0, &pov).expect("pov scene");
@@ -87,8 +68,8 @@ fn main() {
         SIZE.1,
         runs()
     );
-    for (label, samples, antialias) in [("no AA", 1, "-A"), ("AA", 16, "+A0.3")] {
-        let povray = Timing::measure(0, runs(), || {
+    let povray = |antialias: &str| {
+        Timing::measure(0, runs(), || {
             let status = Command::new("povray")
                 .args([
                     &format!("+W{}", SIZE.0),
@@ -104,8 +85,10 @@ fn main() {
                 "{}",
                 String::from_utf8_lossy(&status.stderr)
             );
-        });
-        let settings = settings(samples);
+        })
+    };
+    let ours = |samples: u32, adaptive: Option<f32>| {
+        let settings = settings(samples, adaptive);
         let recipe = Recipe::capture(
             &scene_path.display().to_string(),
             &prepared.scene,
@@ -120,15 +103,68 @@ fn main() {
             recipe: &recipe,
         };
         let out = dir.join("ours.png");
-        let ours = Timing::measure(1, runs(), || {
+        Timing::measure(1, runs(), || {
             write_still(&request, &out, StillFormat::Png, &mut |_| {}, &|| None).expect("still");
-        });
-        let ratio = povray.median.as_secs_f64() / ours.median.as_secs_f64();
+        })
+    };
+    let report = |label: &str, pov: &Timing, ours: &Timing| {
+        let ratio = pov.median.as_secs_f64() / ours.median.as_secs_f64();
         println!(
-            "  {label:<6} POV-Ray {antialias:<6} {}   bumpwork {samples:>2} spp {}   {ratio:.1}x faster",
-            povray.summary_ms(),
-            ours.summary_ms()
+            "  {label:<34} {}   POV-Ray {}   {ratio:.1}x faster",
+            ours.summary_ms(),
+            pov.summary_ms()
+        );
+    };
+    let pov_plain = povray("-A");
+    report("bumpwork 1 spp vs -A", &pov_plain, &ours(1, None));
+    let pov_aa = povray("+A0.3");
+    report("bumpwork 16 spp vs +A0.3", &pov_aa, &ours(16, None));
+    report(
+        &format!("bumpwork 16 spp adaptive {ADAPTIVE} vs +A0.3"),
+        &pov_aa,
+        &ours(16, Some(ADAPTIVE)),
+    );
+    adaptive_error(&prepared, &camera);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// How far adaptive supersampling lands from full supersampling at 16 samples, in 8-bit sRGB
+/// steps over every channel of the frame.
+fn adaptive_error(prepared: &PreparedScene, camera: &Camera) {
+    let base = settings(16, None);
+    let shader = base.quality.shader(prepared, camera);
+    let frame = |adaptive| {
+        let job = BandJob {
+            prepared,
+            camera,
+            full: Viewport {
+                width: SIZE.0,
+                height: SIZE.1,
+            },
+            shader: &shader,
+            supersampling: base.supersampling(),
+            interpolation: base.quality.interpolation,
+            adaptive,
+        };
+        let (framebuffer, stats) = render_supersampled(&job, &mut BandBuffers::default());
+        (framebuffer.to_srgb8(), stats.fragments)
+    };
+    let (full, full_fragments) = frame(None);
+    for contrast in [0.02, ADAPTIVE, 0.1] {
+        let (adaptive, adaptive_fragments) = frame(Some(contrast));
+        let errors: Vec<u32> = full
+            .iter()
+            .zip(&adaptive)
+            .flat_map(|(a, b)| (0..3).map(move |c| a[c].abs_diff(b[c]) as u32))
+            .collect();
+        let mean = errors.iter().sum::<u32>() as f64 / errors.len() as f64;
+        let within_2 = errors.iter().filter(|&&e| e <= 2).count() as f64 / errors.len() as f64;
+        println!(
+            "  adaptive {contrast} against full 16 spp: mean {mean:.3}, max {} of 255 per channel, \
+             {:.2}% of channels within 2; {:.1}% of the fragments shaded",
+            errors.iter().max().unwrap_or(&0),
+            100.0 * within_2,
+            100.0 * adaptive_fragments as f64 / full_fragments as f64
         );
     }
-    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -40,6 +40,11 @@ pub struct Quality {
     pub adaptive_tolerance_px: Option<f32>,
     /// Samples per pixel (1, 4, 16, …), averaged in linear light by the supersampled renderer.
     pub samples: u32,
+    /// Adaptive supersampling: one pass at pixel centres, then `samples` only where a pixel and
+    /// a neighbour differ in coverage or by more than this contrast (in √linear units per
+    /// channel, roughly perceptual); `None` supersamples every pixel.
+    #[serde(default)]
+    pub adaptive_samples: Option<f32>,
     /// Texture filter for every image texture; `None` keeps each scene's own.
     pub filter: Option<Filter>,
     pub gradient: GradientMethod,
@@ -89,6 +94,7 @@ impl Quality {
             tessellation: Tessellation::default().density,
             adaptive_tolerance_px: None,
             samples: 1,
+            adaptive_samples: None,
             filter: None,
             gradient: GradientMethod::Exact,
             normal_form: NormalForm::Blinn,

@@ -57,6 +57,7 @@ fn a_still_carries_its_recipe_and_from_makes_the_same_pixels() {
         samples: 4,
         tessellation: 24,
         adaptive_tolerance_px: None,
+        adaptive_samples: None,
         ..high
     };
     assert_eq!(recipe.quality, expected);

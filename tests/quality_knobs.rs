@@ -242,6 +242,7 @@ fn adaptive_tessellation_brings_a_coarse_silhouette_within_its_tolerance() {
     };
     let adaptive = Quality {
         adaptive_tolerance_px: Some(0.25),
+        adaptive_samples: None,
         ..coarse
     };
     let mismatch = |q: &Quality| {

@@ -44,6 +44,7 @@ fn white() -> PerFragment<Shader> {
 fn with_job<R>(
     full: Viewport,
     supersampling: Supersampling,
+    adaptive: Option<f32>,
     work: impl FnOnce(&BandJob<PerFragment<Shader>>) -> R,
 ) -> R {
     let (prepared, camera) = triangle_scene();
@@ -55,13 +56,14 @@ fn with_job<R>(
         shader: &shader,
         supersampling,
         interpolation: Interpolation::PerspectiveCorrect,
+        adaptive,
     };
     work(&job)
 }
 
 fn render(samples: u32, filter: ResolveFilter, full: Viewport) -> Framebuffer {
     let supersampling = Supersampling { samples, filter };
-    with_job(full, supersampling, |job| {
+    with_job(full, supersampling, None, |job| {
         render_supersampled(job, &mut BandBuffers::default()).0
     })
 }
@@ -122,7 +124,7 @@ fn a_still_streamed_in_narrow_bands_matches_the_whole_render() {
         samples: 4,
         filter: ResolveFilter::Tent,
     };
-    with_job(full, supersampling, |job| {
+    with_job(full, supersampling, None, |job| {
         let whole = render_supersampled(job, &mut BandBuffers::default()).0;
         let mut rows = Rows(Vec::new());
         let mut fractions = Vec::new();
@@ -151,10 +153,40 @@ fn a_still_streamed_in_narrow_bands_matches_the_whole_render() {
 
 #[test]
 fn a_cancelled_still_stops_before_writing() {
-    with_job(VIEW, Supersampling::default(), |job| {
+    with_job(VIEW, Supersampling::default(), None, |job| {
         let mut rows = Rows(Vec::new());
         let result = stream_still(job, 1 << 20, &mut rows, &mut |_| {}, &|| false);
         assert!(result.is_err());
         assert!(rows.0.is_empty());
     });
+}
+
+#[test]
+fn adaptive_supersampling_samples_every_edge_pixel_fully_and_shades_far_fewer() {
+    let supersampling = Supersampling {
+        samples: 16,
+        filter: ResolveFilter::Tent,
+    };
+    let run = |adaptive| {
+        with_job(VIEW, supersampling, adaptive, |job| {
+            render_supersampled(job, &mut BandBuffers::default())
+        })
+    };
+    let (full, full_stats) = run(None);
+    let (adaptive, adaptive_stats) = run(Some(0.02));
+    // Flat inside and outside: an edge line crossing a pixel's filter square (at most a pixel
+    // from its centre) separates the pixel's centre from a neighbour's, so the pixel is marked
+    // and gets the very samples of full supersampling. Only a corner of the triangle can poke
+    // into a footprint between centres: at most a few pixels at each of the three.
+    let differing: Vec<usize> = (0..full.color.len())
+        .filter(|&i| (adaptive.color[i] - full.color[i]).abs().max_element() > 1e-5)
+        .collect();
+    assert!(differing.len() <= 6, "differing pixels {differing:?}");
+    assert!(adaptive.color.iter().filter(|&&c| is_between(c)).count() > 100);
+    assert!(
+        adaptive_stats.fragments * 5 < full_stats.fragments,
+        "{} vs {} fragments",
+        adaptive_stats.fragments,
+        full_stats.fragments
+    );
 }

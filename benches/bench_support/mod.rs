@@ -2,9 +2,14 @@
 #![allow(dead_code)]
 
 use bumpwork::raster::Camera;
-use bumpwork::scene::{Light, Material, Object, Scene};
+use bumpwork::scene::{
+    BindingFile, ImageTexture, Light, MappingKind, Material, Object, Scene, Texturing, preset_file,
+};
 use bumpwork::surface::{Sphere, Surface};
+use bumpwork::texture::{Filter, Mapping, Sampler, Spherical, Texture, Wrap, load_texture};
 use glam::{DVec3, Vec3};
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 /// A lit unit sphere filling 540 of 1080 pixels, in the middle of the frame.
 pub fn sphere_scene() -> Scene {
@@ -40,4 +45,55 @@ pub fn sphere_scene() -> Scene {
             },
         }],
     }
+}
+
+/// Bilinear filtering, repeating around the sphere and clamped at the poles.
+pub fn bilinear() -> Sampler {
+    Sampler {
+        filter: Filter::Bilinear,
+        wrap_s: Wrap::Repeat,
+        wrap_t: Wrap::Clamp,
+    }
+}
+
+/// The euc peer's frame: the bench sphere wearing the chelsea photograph (spherical mapping,
+/// bilinear). Returns the scene and the texture it samples.
+pub fn textured_sphere_scene() -> (Scene, Arc<Texture>) {
+    let texture = Arc::new(load_texture("chelsea", Path::new(".")).expect("chelsea"));
+    let mut scene = sphere_scene();
+    scene.objects[0].material.texture = Some(Texturing::Image(ImageTexture {
+        name: "chelsea".into(),
+        texture: Arc::clone(&texture),
+        mapping: Mapping::Spherical(Spherical::new(Vec3::ZERO)),
+        sampler: bilinear(),
+    }));
+    (scene, texture)
+}
+
+fn pattern(name: &str) -> Option<BindingFile> {
+    Some(BindingFile {
+        pattern: Some(name.into()),
+        ..BindingFile::default()
+    })
+}
+
+fn image(name: &str) -> Option<BindingFile> {
+    Some(BindingFile {
+        image: Some(name.into()),
+        mapping: Some(MappingKind::Spherical),
+        ..BindingFile::default()
+    })
+}
+
+/// The POV-Ray peer's scene as a file in `dir`: sphere-on-plane-dimples with checks and
+/// (height) dimples on the plane, chelsea and the gravel height map on the sphere.
+pub fn write_pov_peer_scene(dir: &Path) -> PathBuf {
+    let mut file = preset_file("sphere-on-plane-dimples").expect("preset");
+    file.objects[0].texture = pattern("checks");
+    file.objects[0].bump = pattern("dimples");
+    file.objects[1].texture = image("chelsea");
+    file.objects[1].bump = image("gravel");
+    let path = dir.join("peer.toml");
+    std::fs::write(&path, file.to_toml()).expect("scene file");
+    path
 }

@@ -238,6 +238,7 @@ fn render_frame(
         shader,
         supersampling: supersampling(samples),
         interpolation: target.interpolation,
+        adaptive: None,
     };
     *framebuffer = render_supersampled(&job, &mut BandBuffers::default()).0;
 }

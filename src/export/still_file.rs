@@ -57,6 +57,7 @@ pub fn write_still(
         shader: &shader,
         supersampling: settings.supersampling(),
         interpolation: settings.quality.interpolation,
+        adaptive: settings.quality.adaptive_samples,
     };
     let keep_going = || interrupted().is_none();
     let mut stream = |sink: &mut dyn RowSink| {

@@ -79,15 +79,29 @@ pub fn apply<T: Scalar>(op: Op, a: T, b: T, c: T) -> T {
         }
         Op::Abs => T::chain1(x.abs(), a, || sign(x)),
         Op::Sign => T::constant(sign(x)),
-        Op::Floor => T::constant(x.floor()),
+        Op::Floor => T::constant(floor(x)),
         Op::Ceil => T::constant(x.ceil()),
-        Op::Fract => T::chain1(x - x.floor(), a, || 1.0),
+        Op::Fract => T::chain1(x - floor(x), a, || 1.0),
         Op::Exp => {
             let r = x.exp();
             T::chain1(r, a, || r)
         }
         Op::Log => T::chain1(x.ln(), a, || 1.0 / x),
         _ => apply_binary(op, a, b, c),
+    }
+}
+
+/// `x.floor()` without the library call it compiles to on baseline x86-64 (no SSE4.1
+/// `roundsd`): checks and dimples floor twice per fragment, and the call was 8% of a frame.
+/// Exact for every f64 (from 2^52 on every f64 is whole), −0 and NaN included.
+#[inline(always)]
+pub(crate) fn floor(x: f64) -> f64 {
+    const WHOLE: f64 = 4_503_599_627_370_496.0; // 2^52
+    if x.abs() < WHOLE {
+        let t = (x as i64 as f64).copysign(x);
+        if t > x { t - 1.0 } else { t }
+    } else {
+        x // whole already, infinite or NaN
     }
 }
 
@@ -121,7 +135,7 @@ fn apply_binary<T: Scalar>(op: Op, a: T, b: T, c: T) -> T {
             })
         }
         Op::Mod => {
-            let q = (x / y).floor();
+            let q = floor(x / y);
             T::chain2(x - y * q, a, b, || (1.0, -q))
         }
         Op::Min => pick(x <= y, a, b),
@@ -230,6 +244,30 @@ mod tests {
 
     fn c(x: f64) -> Dual {
         Dual::constant(x)
+    }
+
+    #[test]
+    fn fast_floor_matches_the_library() {
+        let special = [
+            0.0, -0.0, 0.5, -0.5, 1.0, -1.0, 2.5e15, -2.5e15, 1e300, -1e300,
+        ];
+        let nudged = (0..2000).map(|i| (i as f64 - 1000.0) * 0.37 + 1e-9 * i as f64);
+        for x in special.into_iter().chain(nudged) {
+            let (got, want) = (floor(x), x.floor());
+            assert!(
+                got == want && got.is_sign_negative() == want.is_sign_negative(),
+                "{x}"
+            );
+        }
+        for x in [
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            4_503_599_627_370_495.5,
+            -4_503_599_627_370_495.5,
+        ] {
+            assert_eq!(floor(x), x.floor(), "{x}");
+        }
+        assert!(floor(f64::NAN).is_nan());
     }
 
     #[test]

@@ -67,6 +67,9 @@ pub struct RenderTarget<'a> {
     /// The spacing of samples in pixels, scaling the (u,v) derivatives that pick texture detail:
     /// 1 for one sample per pixel, ½ for 4 samples, so supersampled stills keep their detail.
     pub footprint: f32,
+    /// Only these pixels (row-major over the viewport) are rendered; the rest of the
+    /// framebuffer is left as it was, and tiles with none of them are skipped whole.
+    pub mask: Option<&'a [bool]>,
 }
 
 impl<'a> RenderTarget<'a> {
@@ -78,6 +81,7 @@ impl<'a> RenderTarget<'a> {
             interpolation: Interpolation::PerspectiveCorrect,
             window: ImageWindow::whole(viewport),
             footprint: 1.0,
+            mask: None,
         }
     }
 
@@ -176,6 +180,9 @@ pub fn render_into(
             let mut tile = TileBuffers::default();
             let mut scratch = shader.scratch();
             let mut counts = (0, 0);
+            let mask = target
+                .mask
+                .map(|m| &m[ty * strip..ty * strip + color.len()]);
             for tx in 0..bins.tiles_x {
                 let rect = TileBins::tile_rect(viewport, tx, ty as u32);
                 let bin = &bins.bins[(ty as u32 * bins.tiles_x + tx) as usize];
@@ -185,7 +192,11 @@ pub fn render_into(
                     width: viewport.width,
                     first_row: rect.y0,
                     background,
+                    mask,
                 };
+                if !out.any_wanted(&rect) {
+                    continue;
+                }
                 if bin.is_empty() {
                     out.fill_background(&rect);
                     continue;

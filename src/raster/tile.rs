@@ -40,9 +40,27 @@ pub struct StripOutput<'a> {
     pub width: u32,
     pub first_row: u32,
     pub background: Vec3,
+    /// The strip's pixels to write (`None`: all); see `RenderTarget::mask`.
+    pub mask: Option<&'a [bool]>,
 }
 
 impl StripOutput<'_> {
+    /// Whether any pixel of `rect` is to be written.
+    pub fn any_wanted(&self, rect: &PixelRect) -> bool {
+        let Some(mask) = self.mask else {
+            return true;
+        };
+        (rect.y0..=rect.y1).any(|y| {
+            let row = ((y - self.first_row) * self.width) as usize;
+            mask[row + rect.x0 as usize..=row + rect.x1 as usize].contains(&true)
+        })
+    }
+
+    #[inline]
+    fn wanted(&self, pixel: usize) -> bool {
+        self.mask.is_none_or(|mask| mask[pixel])
+    }
+
     pub fn fill_background(self, rect: &PixelRect) {
         for y in rect.y0..=rect.y1 {
             let row = ((y - self.first_row) * self.width) as usize;
@@ -103,6 +121,9 @@ impl TileBuffers {
             for x in rect.x0..=rect.x1 {
                 let slot = ((y - rect.y0) * TILE_SIZE + (x - rect.x0)) as usize;
                 let pixel = ((y - out.first_row) * out.width + x) as usize;
+                if !out.wanted(pixel) {
+                    continue;
+                }
                 match self.triangle[slot] {
                     NO_TRIANGLE => {
                         out.color[pixel] = out.background;

@@ -11,9 +11,10 @@ use super::view_mode::ViewMode;
 use crate::pattern::OutputKind;
 use crate::raster::{Camera, Fragment, FragmentShader, FrameObject};
 use crate::scene::{BumpSource, Scene, Texturing};
-use crate::surface::Frame;
-use crate::texture::{SurfacePoint, TextureMapping};
+use crate::surface::{Frame, Surface};
+use crate::texture::{Mapping, SurfacePoint, SurfaceUv, TextureMapping, Wrap};
 use glam::{Vec2, Vec3};
+use std::borrow::Cow;
 use std::sync::Arc;
 
 /// The default program for a scene: Blinn-Phong with textures and bump maps.
@@ -185,11 +186,11 @@ impl LitShader {
                 patterns.colors(binding, self.time, &mut scratch.colors)
             }
             Some(Texturing::Image(image)) => {
+                let surface = &object.prepared.surface;
+                let mapping = mapping_on(&image.mapping, surface, image.sampler.wrap_s);
                 for (k, &i) in group.iter().enumerate() {
                     let fragment = &fragments[i as usize];
-                    let mapped = image
-                        .mapping
-                        .map(&self.surface_point(&scratch.frames[k], fragment));
+                    let mapped = mapping.map(&self.surface_point(&scratch.frames[k], fragment));
                     let footprint = mapped.footprint(fragment.duv_dx, fragment.duv_dy);
                     let texel = image.texture.sample(&image.sampler, mapped.st, footprint);
                     // Premultiplied: where the image is transparent the material shows through.
@@ -336,11 +337,11 @@ impl LitShader {
                     .bump(binding, self.time, output.heights, output.gradients)
             }
             BumpSource::Image(image) => {
+                let surface = &object.prepared.surface;
+                let mapping = mapping_on(&image.mapping, surface, image.wrap_s);
                 for (k, &i) in group.iter().enumerate() {
                     let fragment = &fragments[i as usize];
-                    let mapped = image
-                        .mapping
-                        .map(&self.surface_point(&output.frames[k], fragment));
+                    let mapped = mapping.map(&self.surface_point(&output.frames[k], fragment));
                     let footprint = mapped.footprint(fragment.duv_dx, fragment.duv_dy);
                     let sample =
                         image
@@ -371,6 +372,27 @@ struct BumpOutput<'a> {
     patterns: &'a mut PatternBatch,
     heights: &'a mut Vec<f32>,
     gradients: &'a mut Vec<Vec2>,
+}
+
+/// An image's mapping in its cheapest exact form on `surface`. A spherical mapping about a
+/// sphere's centre (pole +y, front +z: what scene files bind) reads back the sphere's own
+/// parameters: φ = u·π/360 − π/2 and θ = v·π/360, so s = ½ + φ/2π = u/720 + ¼ and
+/// t = θ/π = v/360, and the per-fragment atan2, acos, hypot and Jacobian (a third of a textured
+/// sphere's instructions) become one multiply-add with a constant Jacobian (the analytic one;
+/// the general form holds ∂s/∂u finite within 10⁻⁴ of the poles). s then spans [¼, 5/4): the
+/// same texels under the repeat wrap spherical mappings use on s; other wraps keep the general form.
+fn mapping_on<'a>(mapping: &'a Mapping, surface: &Surface, wrap_s: Wrap) -> Cow<'a, Mapping> {
+    match (mapping, surface) {
+        (Mapping::Spherical(m), Surface::Sphere(_))
+            if wrap_s == Wrap::Repeat && m.is_upright_about_anchor() =>
+        {
+            Cow::Owned(Mapping::SurfaceUv(SurfaceUv {
+                scale: Vec2::new(1.0 / 720.0, 1.0 / 360.0),
+                offset: Vec2::new(0.25, 0.0),
+            }))
+        }
+        _ => Cow::Borrowed(mapping),
+    }
 }
 
 fn reset<T: Copy>(values: &mut Vec<T>, len: usize, value: T) {

@@ -6,7 +6,7 @@ use crate::raster::{
     Camera, FragmentShader, FrameStats, Framebuffer, ImageWindow, Interpolation, PreparedScene,
     RenderTarget, TILE_SIZE, Viewport, render_into,
 };
-use glam::Vec3;
+use glam::{Vec2, Vec3};
 use std::ops::Range;
 
 /// Bytes a band may hold per pixel: the pass framebuffer (colour and depth) and the sum.
@@ -27,6 +27,9 @@ pub struct BandJob<'a, S> {
     pub shader: &'a S,
     pub supersampling: Supersampling,
     pub interpolation: Interpolation,
+    /// Adaptive supersampling's contrast threshold (`Quality::adaptive_samples`); `None`
+    /// supersamples every pixel.
+    pub adaptive: Option<f32>,
 }
 
 /// Memory reused from band to band.
@@ -34,6 +37,8 @@ pub struct BandBuffers {
     pass: Framebuffer,
     /// The resolved band: linear RGB, row-major.
     pub resolved: Vec<Vec3>,
+    /// Adaptive supersampling: the pixels that get every sample.
+    mask: Vec<bool>,
 }
 
 impl Default for BandBuffers {
@@ -41,11 +46,22 @@ impl Default for BandBuffers {
         BandBuffers {
             pass: Framebuffer::new(0, 0, Vec3::ZERO),
             resolved: Vec::new(),
+            mask: Vec::new(),
         }
     }
 }
 
 impl<S: FragmentShader> BandJob<'_, S> {
+    /// Whether this job shades pixel centres first and supersamples only where they differ.
+    fn is_adaptive(&self) -> bool {
+        self.adaptive.is_some() && self.supersampling.samples > 1
+    }
+
+    /// Passes per band: one per sample, and the centre pass of adaptive supersampling.
+    pub fn passes_per_band(&self) -> usize {
+        self.supersampling.offsets().len() + usize::from(self.is_adaptive())
+    }
+
     /// Renders rows `rows` into `buffers.resolved`, one pass per sample, calling `on_pass`
     /// after each. `keep_going` is asked before every pass; when it says no, the band is
     /// abandoned and `None` returned.
@@ -68,27 +84,65 @@ impl<S: FragmentShader> BandJob<'_, S> {
             Vec3::ZERO,
         );
         let mut stats = FrameStats::default();
+        let target = |offset, footprint, mask| RenderTarget {
+            window: ImageWindow {
+                full: self.full,
+                x0: 0,
+                y0: rows.start,
+                offset,
+            },
+            footprint,
+            mask,
+            ..RenderTarget::new(self.camera, viewport).with_interpolation(self.interpolation)
+        };
+        let mut mask = std::mem::take(&mut buffers.mask);
+        if self.is_adaptive() {
+            if !keep_going() {
+                return None;
+            }
+            let centre = target(Vec2::ZERO, 1.0, None);
+            stats = render_into(self.prepared, &centre, self.shader, &mut buffers.pass);
+            let threshold = self.adaptive.unwrap_or(0.0);
+            contrast_mask(&buffers.pass, threshold, &mut mask);
+            // A band's outer rows cannot see across the band's border: sample them fully
+            // where another band lies beyond (at most 2 rows in 64).
+            let width = viewport.width as usize;
+            if rows.start > 0 {
+                mask[..width].fill(true);
+            }
+            if rows.end < self.full.height {
+                let n = mask.len();
+                mask[n - width..].fill(true);
+            }
+            for ((sum, c), &marked) in buffers
+                .resolved
+                .iter_mut()
+                .zip(&buffers.pass.color)
+                .zip(&mask)
+            {
+                *sum = if marked { Vec3::ZERO } else { *c };
+            }
+            on_pass();
+        }
+        let only = self.is_adaptive().then_some(&mask[..]);
+        let marked: Vec<usize> = only.map_or_else(Vec::new, |mask| {
+            (0..mask.len()).filter(|&i| mask[i]).collect()
+        });
         for offset in offsets {
             if !keep_going() {
                 return None;
             }
-            let target = RenderTarget {
-                window: ImageWindow {
-                    full: self.full,
-                    x0: 0,
-                    y0: rows.start,
-                    offset,
-                },
-                footprint: self.supersampling.footprint(),
-                ..RenderTarget::new(self.camera, viewport).with_interpolation(self.interpolation)
-            };
+            let target = target(offset, self.supersampling.footprint(), only);
             let pass = render_into(self.prepared, &target, self.shader, &mut buffers.pass);
             stats = add_stats(stats, pass);
-            for (sum, c) in buffers.resolved.iter_mut().zip(&buffers.pass.color) {
-                *sum += *c * weight;
+            let (sums, colors) = (&mut buffers.resolved, &buffers.pass.color);
+            match only {
+                None => (sums.iter_mut().zip(colors)).for_each(|(sum, c)| *sum += *c * weight),
+                Some(_) => marked.iter().for_each(|&i| sums[i] += colors[i] * weight),
             }
             on_pass();
         }
+        buffers.mask = mask;
         Some(stats)
     }
 }
@@ -118,4 +172,54 @@ pub fn render_supersampled<S: FragmentShader>(
         depth: std::mem::take(&mut buffers.pass.depth),
     };
     (framebuffer, stats)
+}
+
+/// Marks the pixels of a centre pass that adaptive supersampling must sample fully: where a
+/// neighbour differs in coverage (surface against background), or where the picture is not
+/// locally linear: in any of the four directions through the pixel (across, down, both
+/// diagonals) |c₋ + c₊ − 2c| exceeds `threshold` in a channel of √colour (a cheap perceptual
+/// scale: a step in a dark region counts as much as a brighter one).
+///
+/// Why that suffices: the resolve filters are symmetric and reach at most a pixel from the
+/// centre, and over a linear ramp a symmetric filter returns the centre value, so smooth shading
+/// needs no samples however steep it is. A step (an edge, a rim, a check) crossing a pixel's
+/// filter square separates its centre from some neighbour's, so the second difference towards
+/// that neighbour is the full step and the pixel is marked: on flat regions the result is that
+/// of full supersampling. What no centre sees (detail below a pixel, a corner poking between
+/// centres) is missed, the usual limit of adaptive schemes.
+fn contrast_mask(pass: &Framebuffer, threshold: f32, mask: &mut Vec<bool>) {
+    let (w, h) = (pass.width as usize, pass.height as usize);
+    mask.clear();
+    mask.resize(w * h, false);
+    let keys: Vec<Vec3> = pass
+        .color
+        .iter()
+        .map(|c| {
+            let c = c.max(Vec3::ZERO);
+            Vec3::new(c.x.sqrt(), c.y.sqrt(), c.z.sqrt())
+        })
+        .collect();
+    for y in 0..h {
+        // Rows and columns clamped at the band's border: a one-sided difference there.
+        let (up, down) = (y.saturating_sub(1) * w, (y + 1).min(h - 1) * w);
+        let row = y * w;
+        for x in 0..w {
+            let (left, right) = (x.saturating_sub(1), (x + 1).min(w - 1));
+            let i = row + x;
+            let covered = pass.depth[i].is_finite();
+            let twice = 2.0 * keys[i];
+            let mut mark = false;
+            for (a, b) in [
+                (row + left, row + right),
+                (up + x, down + x),
+                (up + left, down + right),
+                (up + right, down + left),
+            ] {
+                mark |= (keys[a] + keys[b] - twice).abs().max_element() > threshold
+                    || pass.depth[a].is_finite() != covered
+                    || pass.depth[b].is_finite() != covered;
+            }
+            mask[i] = mark;
+        }
+    }
 }

@@ -29,8 +29,7 @@ pub fn stream_still<S: FragmentShader>(
     keep_going: &dyn Fn() -> bool,
 ) -> Result<FrameStats, StillStop> {
     let rows_per_band = band_rows(job.full.width, job.full.height, budget_bytes);
-    let passes =
-        job.full.height.div_ceil(rows_per_band) as f64 * job.supersampling.offsets().len() as f64;
+    let passes = job.full.height.div_ceil(rows_per_band) as f64 * job.passes_per_band() as f64;
     let mut passes_done = 0.0;
     let mut buffers = BandBuffers::default();
     let mut bytes = Vec::new();

@@ -24,7 +24,7 @@ impl Paraboloid {
     #[inline]
     pub fn frame(&self, u: f32, v: f32) -> Frame {
         let b = &self.basis;
-        let (sin_phi, cos_phi) = azimuth(u).sin_cos();
+        let (sin_phi, cos_phi) = super::sin_cos(azimuth(u));
         let radial = b.to_world(sin_phi, 0.0, cos_phi);
         let tangent = b.to_world(cos_phi, 0.0, -sin_phi);
         let rho = v;

@@ -24,8 +24,8 @@ impl Sphere {
 
     #[inline]
     pub fn frame(&self, u: f32, v: f32) -> Frame {
-        let (sin_phi, cos_phi) = azimuth(u).sin_cos();
-        let (sin_theta, cos_theta) = (v / SEED_UNITS_PER_RADIAN).sin_cos();
+        let (sin_phi, cos_phi) = super::sin_cos(azimuth(u));
+        let (sin_theta, cos_theta) = super::sin_cos(v / SEED_UNITS_PER_RADIAN);
         let n = Vec3::new(sin_theta * sin_phi, cos_theta, sin_theta * cos_phi);
         let k = self.radius / SEED_UNITS_PER_RADIAN;
         Frame {

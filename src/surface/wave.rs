@@ -28,7 +28,7 @@ impl Wave {
     #[inline]
     pub fn frame(&self, u: f32, v: f32) -> Frame {
         let k = self.wavenumber();
-        let (sin_ku, cos_ku) = (k * u).sin_cos();
+        let (sin_ku, cos_ku) = super::sin_cos(k * u);
         let slope = self.amplitude * k * cos_ku;
         Frame {
             p: Vec3::new(u, self.amplitude * sin_ku, -v),

@@ -248,6 +248,13 @@ impl Spherical {
     pub fn oriented(centre: Vec3, axis: Vec3, front: Vec3) -> Option<Self> {
         Frame::new(centre, axis, front).map(|frame| Self { frame })
     }
+
+    /// Whether this is `Spherical::new(Vec3::ZERO)`: centred on the surface's anchor, pole
+    /// along +y, front +z. On a sphere that is the sphere's own longitude and latitude, an
+    /// affine map of its (u,v) (see `shade`'s use of it).
+    pub fn is_upright_about_anchor(&self) -> bool {
+        self.frame.centre == Vec3::ZERO && self.frame.to_local == Mat3::IDENTITY
+    }
 }
 
 impl TextureMapping for Spherical {
