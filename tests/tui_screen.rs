@@ -84,6 +84,14 @@ fn every_view_mode_glyph_set_and_colour_mode_draws() {
     }
 }
 
+/// An empty directory of this test process's own, named `name`.
+fn fresh_dir(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("bumpwork-tui-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
 /// Waits for the export the app started and returns its final status message.
 fn finished_export_message(app: &mut App) -> String {
     assert!(app.export_job.is_some());
@@ -101,9 +109,7 @@ fn finished_export_message(app: &mut App) -> String {
 #[test]
 fn a_wireframe_export_is_a_picture_and_says_it_carries_no_recipe() {
     let mut app = app();
-    let dir = std::env::temp_dir().join(format!("bumpwork-tui-wire-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = fresh_dir("wire");
     app.export_dir = dir.clone();
     app.export_size = (48, 32);
     while app.view_mode != ViewMode::Wireframe {
@@ -130,9 +136,7 @@ fn a_wireframe_export_is_a_picture_and_says_it_carries_no_recipe() {
 #[test]
 fn the_export_key_writes_the_live_view_in_the_background_and_from_makes_it_again() {
     let mut app = app();
-    let dir = std::env::temp_dir().join(format!("bumpwork-tui-export-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = fresh_dir("export");
     app.export_dir = dir.clone();
     app.export_size = (64, 36);
     app.export_samples = 4;
@@ -187,9 +191,7 @@ fn the_export_key_writes_the_live_view_in_the_background_and_from_makes_it_again
 #[test]
 fn quitting_during_an_export_leaves_no_file() {
     let mut app = app();
-    let dir = std::env::temp_dir().join(format!("bumpwork-tui-cancel-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = fresh_dir("cancel");
     app.export_dir = dir.clone();
     app.export_size = (4000, 3000);
     app.export_samples = 64;
@@ -228,8 +230,7 @@ fn material_keys_edit_the_bump_and_redraw() {
 
 #[test]
 fn an_edited_pattern_file_reloads_and_a_broken_one_keeps_the_view_and_shows_where() {
-    let dir = std::env::temp_dir().join(format!("bumpwork-tui-reload-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = fresh_dir("reload");
     let path = dir.join("live.pat");
     std::fs::write(
         &path,
@@ -278,8 +279,7 @@ fn an_edited_pattern_file_reloads_and_a_broken_one_keeps_the_view_and_shows_wher
 
 #[test]
 fn with_watching_off_an_edited_file_is_not_reloaded() {
-    let dir = std::env::temp_dir().join(format!("bumpwork-tui-nowatch-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = fresh_dir("nowatch");
     let path = dir.join("still.pat");
     std::fs::write(&path, "height = sin(u / 20)\n").unwrap();
     let options = WorkbenchOptions {
