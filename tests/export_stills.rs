@@ -228,10 +228,29 @@ fn failed_renders_leave_no_file_and_say_why() {
         &bumpwork(&["render", bad_scene.to_str().unwrap(), "-o", out]),
         "bad.toml",
     );
+    let missing_dir = bumpwork(&["render", "plane-ripple", "-o", "/nonexistent-dir/x.png"]);
     assert_user_error(
-        &bumpwork(&["render", "plane-ripple", "-o", "/nonexistent-dir/x.png"]),
-        "cannot write /nonexistent-dir/x.png",
+        &missing_dir,
+        "cannot write /nonexistent-dir/x.png: the directory /nonexistent-dir does not exist",
     );
+    assert!(
+        !stderr(&missing_dir).contains(".tmp"),
+        "{}",
+        stderr(&missing_dir)
+    );
+    let file_as_dir = dir.join("plain-file");
+    std::fs::write(&file_as_dir, "not a directory").unwrap();
+    let inside_a_file = file_as_dir.join("x.png");
+    assert_user_error(
+        &bumpwork(&[
+            "render",
+            "plane-ripple",
+            "-o",
+            inside_a_file.to_str().unwrap(),
+        ]),
+        "plain-file is not a directory",
+    );
+    std::fs::remove_file(&file_as_dir).unwrap();
     assert_user_error(
         &bumpwork(&["render", "plane-ripple", "-o", out, "--size", "20000x10"]),
         "1..=16384",

@@ -21,6 +21,23 @@ fn readable_by_all() -> std::fs::Permissions {
     std::fs::Permissions::from_mode(0o666)
 }
 
+/// Why the temporary file could not be made, said of the directory (the user never named the
+/// temporary file, which tempfile's own message quotes).
+fn directory_problem(directory: &Path, error: &std::io::Error) -> String {
+    let shown = crate::diagnostic::sanitize(&directory.display().to_string()).into_owned();
+    match error.kind() {
+        std::io::ErrorKind::NotFound => format!("the directory {shown} does not exist"),
+        std::io::ErrorKind::PermissionDenied => {
+            format!("the directory {shown} is not writable")
+        }
+        std::io::ErrorKind::NotADirectory => format!("{shown} is not a directory"),
+        _ => format!(
+            "cannot create a file in {shown}: {}",
+            std::io::Error::from(error.kind())
+        ),
+    }
+}
+
 impl AtomicFile {
     /// Creates the temporary file next to `destination`; returns it and a handle to write into.
     pub fn create(destination: &Path) -> Result<(AtomicFile, File), Error> {
@@ -36,7 +53,7 @@ impl AtomicFile {
             .suffix(".tmp")
             .permissions(readable_by_all())
             .tempfile_in(directory)
-            .map_err(|e| Error::write(destination, e))?
+            .map_err(|e| Error::write(destination, directory_problem(directory, &e)))?
             .into_parts();
         let sync = file.try_clone().map_err(|e| Error::write(destination, e))?;
         let atomic = AtomicFile {
