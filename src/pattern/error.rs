@@ -1,6 +1,6 @@
 //! `PatternError`: every problem in a pattern file, with its place and a rustc-like snippet.
 
-use crate::diagnostic::{escape_line as escape_for_terminal, floor_char_boundary, snippet};
+use crate::diagnostic::{escape_line, floor_char_boundary, snippet};
 use std::fmt;
 
 /// A byte range in the source text.
@@ -48,10 +48,10 @@ impl PatternError {
         let before = &source[line_start..at];
         let (shown, caret_offset) = snippet(before, &source[at..line_end]);
         PatternError {
-            origin: escape_for_terminal(origin),
+            origin: escape_line(origin),
             line: source[..line_start].matches('\n').count() + 1,
             column: before.chars().count() + 1,
-            message: escape_for_terminal(&message.into()),
+            message: escape_line(&message.into()),
             source_line: shown,
             caret_offset,
         }
@@ -60,10 +60,10 @@ impl PatternError {
     /// An error not tied to a place in the text (unreadable file).
     pub fn whole_file(origin: &str, message: impl Into<String>) -> PatternError {
         PatternError {
-            origin: escape_for_terminal(origin),
+            origin: escape_line(origin),
             line: 0,
             column: 0,
-            message: escape_for_terminal(&message.into()),
+            message: escape_line(&message.into()),
             source_line: String::new(),
             caret_offset: 0,
         }

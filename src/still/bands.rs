@@ -52,14 +52,15 @@ impl Default for BandBuffers {
 }
 
 impl<S: FragmentShader> BandJob<'_, S> {
-    /// Whether this job shades pixel centres first and supersamples only where they differ.
-    fn is_adaptive(&self) -> bool {
-        self.adaptive.is_some() && self.supersampling.samples > 1
+    /// The contrast threshold when this job shades pixel centres first and supersamples only
+    /// where they differ (adaptive, and more than one sample).
+    fn adaptive_threshold(&self) -> Option<f32> {
+        self.adaptive.filter(|_| self.supersampling.samples > 1)
     }
 
     /// Passes per band: one per sample, and the centre pass of adaptive supersampling.
     pub fn passes_per_band(&self) -> usize {
-        self.supersampling.offsets().len() + usize::from(self.is_adaptive())
+        self.supersampling.offsets().len() + usize::from(self.adaptive_threshold().is_some())
     }
 
     /// Renders rows `rows` into `buffers.resolved`, one pass per sample, calling `on_pass`
@@ -96,13 +97,12 @@ impl<S: FragmentShader> BandJob<'_, S> {
             ..RenderTarget::new(self.camera, viewport).with_interpolation(self.interpolation)
         };
         let mut mask = std::mem::take(&mut buffers.mask);
-        if self.is_adaptive() {
+        if let Some(threshold) = self.adaptive_threshold() {
             if !keep_going() {
                 return None;
             }
             let centre = target(Vec2::ZERO, 1.0, None);
             stats = render_into(self.prepared, &centre, self.shader, &mut buffers.pass);
-            let threshold = self.adaptive.unwrap_or(0.0);
             contrast_mask(&buffers.pass, threshold, &mut mask);
             // A band's outer rows cannot see across the band's border: sample them fully
             // where another band lies beyond (at most 2 rows in 64).
@@ -124,7 +124,7 @@ impl<S: FragmentShader> BandJob<'_, S> {
             }
             on_pass();
         }
-        let only = self.is_adaptive().then_some(&mask[..]);
+        let only = self.adaptive_threshold().map(|_| &mask[..]);
         let marked: Vec<usize> = only.map_or_else(Vec::new, |mask| {
             (0..mask.len()).filter(|&i| mask[i]).collect()
         });

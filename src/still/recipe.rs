@@ -418,25 +418,25 @@ fn file_names(material: &Material) -> Vec<String> {
     bump.into_iter().chain(texture).collect()
 }
 
-/// Largest file hashed for a recipe: the image size limit (no pattern or image we read is larger).
-const MAX_HASHED_BYTES: u64 = 512 << 20;
-
 /// The FNV-1a hash of a regular file, streamed. A recipe names files from a PNG anyone may have
 /// made: a device (`/dev/zero`), a pipe or a huge file is refused, not read forever.
+/// Files over the image memory limit (`texture::Limits`, which `BUMPWORK_MAX_IMAGE_MIB` sets) are
+/// refused too: no pattern or image the renderer reads is larger.
 fn hash_file(path: &Path) -> std::io::Result<u64> {
     use std::io::{BufRead, BufReader, Error, ErrorKind, Read};
+    let max_bytes = crate::texture::Limits::default().max_bytes;
     let file = std::fs::File::open(path)?;
     let metadata = file.metadata()?;
     if !metadata.is_file() {
         return Err(Error::new(ErrorKind::InvalidInput, "not a regular file"));
     }
-    if metadata.len() > MAX_HASHED_BYTES {
+    if metadata.len() > max_bytes {
         return Err(Error::new(
             ErrorKind::InvalidInput,
-            format!("larger than {} MiB", MAX_HASHED_BYTES >> 20),
+            format!("larger than {} MiB", max_bytes >> 20),
         ));
     }
-    let mut reader = BufReader::with_capacity(1 << 16, file.take(MAX_HASHED_BYTES));
+    let mut reader = BufReader::with_capacity(1 << 16, file.take(max_bytes));
     let mut hash = FNV_OFFSET;
     loop {
         let chunk = reader.fill_buf()?;
@@ -451,9 +451,8 @@ fn hash_file(path: &Path) -> std::io::Result<u64> {
 
 const FNV_OFFSET: u64 = 0xcbf2_9ce4_8422_2325;
 
-/// FNV-1a, 64 bits: stable across builds and platforms (unlike std's hasher), enough to notice
-/// an edited file.
-/// Continues a hash over more bytes.
+/// FNV-1a, 64 bits, continued from `hash` (`FNV_OFFSET` to start) over more bytes: stable across
+/// builds and platforms (unlike std's hasher), enough to notice an edited file.
 fn fnv1a64_from(hash: u64, bytes: &[u8]) -> u64 {
     bytes.iter().fold(hash, |hash, &b| {
         (hash ^ b as u64).wrapping_mul(0x0100_0000_01b3)
