@@ -99,7 +99,7 @@ fn trivial_scene_at_8k() {
     ] {
         let start = Instant::now();
         let frame = render();
-        let bad = frame.color.iter().filter(|c| !c.is_finite()).count();
+        let bad = frame.color().iter().filter(|c| !c.is_finite()).count();
         println!(
             "8192x8192 {name}: {:.1} s, {bad} non-finite pixels",
             start.elapsed().as_secs_f64()

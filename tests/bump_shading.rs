@@ -38,9 +38,9 @@ fn strength_zero_renders_exactly_the_unbumped_image() {
         }
         let (a, b) = (frame(zero, 96, 72).0, frame(none, 96, 72).0);
         let differing: Vec<_> = a
-            .color
+            .color()
             .iter()
-            .zip(&b.color)
+            .zip(b.color())
             .enumerate()
             .filter(|(_, (x, y))| x != y)
             .take(3)
@@ -72,12 +72,12 @@ fn waffle_lit_from(azimuth_degrees: f64, bumped: bool) -> Framebuffer {
 
 fn mean_difference(a: &Framebuffer, b: &Framebuffer) -> f32 {
     let total: f32 = a
-        .color
+        .color()
         .iter()
-        .zip(&b.color)
+        .zip(b.color())
         .map(|(x, y)| (*x - *y).abs().element_sum())
         .sum();
-    total / a.color.len() as f32
+    total / a.color().len() as f32
 }
 
 #[test]
@@ -110,14 +110,14 @@ fn a_pattern_that_divides_by_zero_is_drawn_flat_and_counted() {
     let dir = temp_dir("nan");
     let scene = scene_with_bump(&dir, "height = sqrt(u - 200) + 1 / (v - v)", "").unwrap();
     let (fb, stats) = frame(scene, 64, 64);
-    assert!(fb.color.iter().all(|c| c.is_finite()));
+    assert!(fb.color().iter().all(|c| c.is_finite()));
     assert_eq!(
         stats.flattened, stats.fragments,
         "every fragment divides by zero"
     );
     let scene = scene_with_bump(&dir, "height = sqrt(u - 200)", "").unwrap();
     let (fb, stats) = frame(scene, 64, 64);
-    assert!(fb.color.iter().all(|c| c.is_finite()));
+    assert!(fb.color().iter().all(|c| c.is_finite()));
     // The plane fills the view; the left half (u < 200) takes sqrt of a negative.
     let ratio = stats.flattened as f64 / stats.fragments as f64;
     assert!(
@@ -167,7 +167,7 @@ fn an_image_texture_shows_its_texels_where_the_mapping_puts_them() {
     std::fs::write(&path, text).unwrap();
     let scene = bumpwork::scene::load_scene_file(&path).unwrap();
     let (fb, _) = frame(scene, 100, 100);
-    let at = |x: usize, y: usize| fb.color[y * 100 + x];
+    let at = |x: usize, y: usize| fb.color()[y * 100 + x];
     // The plane is upright (v up), so the image's top row is at the top of the picture.
     let expect = [
         (30, 30, Vec3::X),

@@ -36,13 +36,13 @@ fn reference(scene: &Scene, quality: &Quality, mode: ViewMode) -> Framebuffer {
 
 /// Mean absolute difference of the covered pixels' (u,v) (the Uv view shows fract(uv / 30)).
 fn mean_uv_difference(a: &Framebuffer, b: &Framebuffer) -> f32 {
-    let covered: Vec<usize> = (0..a.color.len())
-        .filter(|&i| a.depth[i].is_finite() && b.depth[i].is_finite())
+    let covered: Vec<usize> = (0..a.color().len())
+        .filter(|&i| a.depth()[i].is_finite() && b.depth()[i].is_finite())
         .collect();
     let sum: f32 = covered
         .iter()
         .map(|&i| {
-            let d = (a.color[i] - b.color[i]).truncate().abs();
+            let d = (a.color()[i] - b.color()[i]).truncate().abs();
             // fract wraps: a difference of 0.98 is one of 0.02.
             d.x.min(1.0 - d.x) + d.y.min(1.0 - d.y)
         })
@@ -225,9 +225,9 @@ fn the_filter_override_reaches_every_image_texture_and_changes_the_picture() {
     let a = render(&textured, &nearest, ViewMode::Shaded);
     let b = render(&textured, &trilinear, ViewMode::Shaded);
     let changed = a
-        .color
+        .color()
         .iter()
-        .zip(&b.color)
+        .zip(b.color())
         .filter(|(x, y)| (**x - **y).abs().max_element() > 1e-3);
     assert!(changed.count() > 100, "the filter changed too few pixels");
 }

@@ -35,10 +35,10 @@ fn scene_of(camera: Camera, surface: Surface) -> Scene {
 }
 
 fn assert_all_finite(fb: &Framebuffer) {
-    for (i, c) in fb.color.iter().enumerate() {
+    for (i, c) in fb.color().iter().enumerate() {
         assert!(c.is_finite(), "NaN or infinity at pixel {i}: {c:?}");
     }
-    for (i, d) in fb.depth.iter().enumerate() {
+    for (i, d) in fb.depth().iter().enumerate() {
         assert!(d.is_finite() || *d == f32::INFINITY, "bad depth at {i}");
     }
 }
@@ -91,7 +91,7 @@ fn camera_inside_a_sphere_sees_it_everywhere_at_the_right_depth() {
         vec![-b + (b * b - c).sqrt()]
     });
     // Chords of a 128×64 tessellation of r = 100 sit at most r·(1 − cos(π/64)) ≈ 0.12 inside.
-    for (i, (got, want)) in fb.depth.iter().zip(&reference).enumerate() {
+    for (i, (got, want)) in fb.depth().iter().zip(&reference).enumerate() {
         let want = want.expect("every ray from inside hits the sphere");
         assert!(got.is_finite(), "hole at pixel {i}");
         assert!(
@@ -133,7 +133,7 @@ fn plane_crossing_the_near_plane_matches_the_ray_cast() {
     assert_all_finite(&fb);
     let reference = ray_cast(&cam, plane_hits(&cam));
     let mut mismatches = 0;
-    for (i, (got, want)) in fb.depth.iter().zip(&reference).enumerate() {
+    for (i, (got, want)) in fb.depth().iter().zip(&reference).enumerate() {
         match want {
             Some(want) if got.is_finite() => {
                 assert!(
@@ -163,7 +163,7 @@ fn camera_exactly_on_a_plane_sees_it_edge_on() {
         1,
     );
     assert_all_finite(&fb);
-    let covered = fb.depth.iter().filter(|d| d.is_finite()).count();
+    let covered = fb.depth().iter().filter(|d| d.is_finite()).count();
     assert!(
         covered <= VIEWPORT.width as usize,
         "an edge-on plane covers at most a row: {covered}"
@@ -183,5 +183,5 @@ fn sphere_behind_the_camera_is_not_drawn() {
         Interpolation::PerspectiveCorrect,
         32,
     );
-    assert!(fb.depth.iter().all(|d| d.is_infinite()));
+    assert!(fb.depth().iter().all(|d| d.is_infinite()));
 }

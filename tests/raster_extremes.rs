@@ -41,9 +41,9 @@ fn every_preset_renders_finite_pixels_at_tiny_and_thin_sizes() {
     for name in PRESET_NAMES {
         for (width, height) in [(1, 1), (1, 37), (53, 1), (3, 2)] {
             let fb = render_scene(preset(name).unwrap(), Viewport { width, height });
-            assert_eq!(fb.color.len(), (width * height) as usize);
+            assert_eq!(fb.color().len(), (width * height) as usize);
             assert!(
-                fb.color.iter().all(|c| c.is_finite()),
+                fb.color().iter().all(|c| c.is_finite()),
                 "{name} at {width}x{height}"
             );
         }
@@ -61,10 +61,10 @@ fn every_preset_covers_something_and_has_no_nan() {
             },
         );
         assert!(
-            fb.color.iter().all(|c| c.is_finite()),
+            fb.color().iter().all(|c| c.is_finite()),
             "{name} has a non-finite pixel"
         );
-        let covered = fb.depth.iter().filter(|d| d.is_finite()).count();
+        let covered = fb.depth().iter().filter(|d| d.is_finite()).count();
         assert!(
             covered > 96 * 64 / 10,
             "{name} covers only {covered} pixels"
@@ -111,9 +111,9 @@ fn a_scene_translated_by_a_million_renders_the_same() {
             viewport,
         );
         let max_difference = near
-            .color
+            .color()
             .iter()
-            .zip(&far.color)
+            .zip(far.color())
             .map(|(a, b)| (*a - *b).abs().max_element())
             .fold(0.0f32, f32::max);
         assert!(
@@ -121,9 +121,9 @@ fn a_scene_translated_by_a_million_renders_the_same() {
             "{name}: colours differ by {max_difference}"
         );
         let coverage_changes = near
-            .depth
+            .depth()
             .iter()
-            .zip(&far.depth)
+            .zip(far.depth())
             .filter(|(a, b)| a.is_finite() != b.is_finite())
             .count();
         assert!(

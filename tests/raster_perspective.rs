@@ -54,7 +54,7 @@ fn max_uv_error(interpolation: Interpolation) -> (f64, usize) {
     for y in 0..viewport.height {
         for x in 0..viewport.width {
             let i = (y * viewport.width + x) as usize;
-            if fb.depth[i].is_infinite() {
+            if fb.depth()[i].is_infinite() {
                 continue;
             }
             let ray = cam.ray_direction(
@@ -69,7 +69,7 @@ fn max_uv_error(interpolation: Interpolation) -> (f64, usize) {
                 hit.dot(plane.u_axis.as_dvec3()),
                 hit.dot(plane.v_axis.as_dvec3()),
             );
-            let got = fb.color[i];
+            let got = fb.color()[i];
             let error = (got.x as f64 - exact.0)
                 .abs()
                 .max((got.y as f64 - exact.1).abs());
@@ -128,18 +128,18 @@ fn screen_derivatives_of_uv_match_neighbouring_pixels() {
                 at(x, y + 1),
                 at(x, y),
             ];
-            if neighbours.iter().any(|&i| fb.depth[i].is_infinite()) {
+            if neighbours.iter().any(|&i| fb.depth()[i].is_infinite()) {
                 continue;
             }
-            let du_dx = (fb.color[at(x + 1, y)].x - fb.color[at(x - 1, y)].x) / 2.0;
-            let v = |x, y| fb_v.color[at(x, y)].x;
+            let du_dx = (fb.color()[at(x + 1, y)].x - fb.color()[at(x - 1, y)].x) / 2.0;
+            let v = |x, y| fb_v.color()[at(x, y)].x;
             let (forward, backward) = (v(x, y + 1) - v(x, y), v(x, y) - v(x, y - 1));
             let dv_dy = (forward + backward) / 2.0;
             // Near the horizon v curves too fast between rows for a difference to be a reference.
             if (forward - backward).abs() > 0.05 * dv_dy.abs() {
                 continue;
             }
-            let c = fb.color[at(x, y)];
+            let c = fb.color()[at(x, y)];
             // u is linear along rows of a ground plane seen upright.
             assert!(
                 (c.y - du_dx).abs() <= 1e-3 * du_dx.abs().max(1.0),

@@ -29,18 +29,21 @@ fn planar_scenes_give_the_same_fragments_both_ways() {
         let raster = render_with(&prepared, &target, &uv_shader()).0;
         let reference = render_reference(&prepared, &scene.camera, SMALL, &uv_shader()).0;
         let mut mismatched = 0;
-        for i in 0..raster.color.len() {
-            let (a, b) = (raster.color[i], reference.color[i]);
-            match (raster.depth[i].is_finite(), reference.depth[i].is_finite()) {
+        for i in 0..raster.color().len() {
+            let (a, b) = (raster.color()[i], reference.color()[i]);
+            match (
+                raster.depth()[i].is_finite(),
+                reference.depth()[i].is_finite(),
+            ) {
                 (true, true) if a.z == b.z => {
                     // 1e-3 of the uv period of 30 units, relative to depth for far pixels.
-                    let tolerance = 2e-3 + 2e-6 * raster.depth[i];
+                    let tolerance = 2e-3 + 2e-6 * raster.depth()[i];
                     assert!(
                         (a - b).abs().max_element() <= tolerance,
                         "{name}: pixel {i}: raster {a} vs reference {b}"
                     );
-                    let dd = (raster.depth[i] - reference.depth[i]).abs();
-                    assert!(dd <= 1e-4 * reference.depth[i], "{name}: depth at {i}");
+                    let dd = (raster.depth()[i] - reference.depth()[i]).abs();
+                    assert!(dd <= 1e-4 * reference.depth()[i], "{name}: depth at {i}");
                 }
                 (false, false) => {}
                 _ => mismatched += 1,
@@ -136,9 +139,9 @@ fn analytic_uv_derivatives_match_the_rasterizer_on_a_plane() {
         let raster = render_with(&prepared, &target, &derivative_shader(dy)).0;
         let reference = render_reference(&prepared, &scene.camera, SMALL, &derivative_shader(dy)).0;
         let mut compared = 0;
-        for i in 0..raster.color.len() {
-            if raster.depth[i].is_finite() && reference.depth[i].is_finite() {
-                let (a, b) = (raster.color[i], reference.color[i]);
+        for i in 0..raster.color().len() {
+            if raster.depth()[i].is_finite() && reference.depth()[i].is_finite() {
+                let (a, b) = (raster.color()[i], reference.color()[i]);
                 let scale = a.abs().max_element().max(1e-3);
                 assert!(
                     (a - b).abs().max_element() <= 1e-3 * scale,
@@ -156,11 +159,11 @@ fn heat_map_is_black_where_frames_agree_and_blue_at_silhouettes() {
     let scene = preset("big-sphere-dimples").unwrap();
     let pair = render_both(&scene, SMALL, 4, |_| {});
     let same = bumpwork::reference::error_heat_map(&pair.reference, &pair.reference, 32.0);
-    assert!(same.color.iter().all(|c| *c == Vec3::ZERO));
+    assert!(same.color().iter().all(|c| *c == Vec3::ZERO));
     let heat = bumpwork::reference::error_heat_map(&pair.raster, &pair.reference, 32.0);
     assert_all_finite(&heat, "heat map");
     let silhouettes = heat
-        .color
+        .color()
         .iter()
         .filter(|c| c.z > 0.0 && c.x == 0.0)
         .count();

@@ -80,23 +80,23 @@ fn is_between(c: Vec3) -> bool {
 #[test]
 fn one_sample_is_all_or_nothing_and_sixteen_soften_the_edges() {
     let one = render(1, ResolveFilter::Box, VIEW);
-    assert!(one.color.iter().all(|c| c.x == 0.0 || c.x == 1.0));
-    let covered = one.color.iter().filter(|c| c.x == 1.0).count() as f32;
+    assert!(one.color().iter().all(|c| c.x == 0.0 || c.x == 1.0));
+    let covered = one.color().iter().filter(|c| c.x == 1.0).count() as f32;
     for filter in [ResolveFilter::Box, ResolveFilter::Tent] {
         let sixteen = render(16, filter, VIEW);
-        let between = sixteen.color.iter().filter(|&&c| is_between(c)).count();
+        let between = sixteen.color().iter().filter(|&&c| is_between(c)).count();
         assert!(
             between > 100,
             "{filter:?}: only {between} edge pixels are in between"
         );
         assert!(
             sixteen
-                .color
+                .color()
                 .iter()
                 .all(|c| c.is_finite() && c.x >= 0.0 && c.x <= 1.0 + 1e-5)
         );
         // Antialiasing moves coverage across the edge, it does not make or lose any.
-        let area: f32 = sixteen.color.iter().map(|c| c.x).sum();
+        let area: f32 = sixteen.color().iter().map(|c| c.x).sum();
         assert!(
             (area - covered).abs() < 0.01 * covered,
             "{filter:?}: {area} vs {covered}"
@@ -178,11 +178,11 @@ fn adaptive_supersampling_samples_every_edge_pixel_fully_and_shades_far_fewer() 
     // from its centre) separates the pixel's centre from a neighbour's, so the pixel is marked
     // and gets the very samples of full supersampling. Only a corner of the triangle can poke
     // into a footprint between centres: at most a few pixels at each of the three.
-    let differing: Vec<usize> = (0..full.color.len())
-        .filter(|&i| (adaptive.color[i] - full.color[i]).abs().max_element() > 1e-5)
+    let differing: Vec<usize> = (0..full.color().len())
+        .filter(|&i| (adaptive.color()[i] - full.color()[i]).abs().max_element() > 1e-5)
         .collect();
     assert!(differing.len() <= 6, "differing pixels {differing:?}");
-    assert!(adaptive.color.iter().filter(|&&c| is_between(c)).count() > 100);
+    assert!(adaptive.color().iter().filter(|&&c| is_between(c)).count() > 100);
     assert!(
         adaptive_stats.fragments * 5 < full_stats.fragments,
         "{} vs {} fragments",

@@ -19,7 +19,7 @@ fn framebuffer() -> Framebuffer {
     let pixels = [[RED, WHITE], [BLUE, WHITE], [WHITE, WHITE], [BLACK, WHITE]];
     for (y, row) in pixels.iter().enumerate() {
         for (x, &c) in row.iter().enumerate() {
-            fb.color[y * 2 + x] = c;
+            fb.color_mut()[y * 2 + x] = c;
         }
     }
     fb

@@ -70,12 +70,12 @@ fn the_heat_map_is_dark_where_the_frame_matches_the_reference() {
     // A facing plane is exact for the rasterizer: (u,v) is perspective-correct on it, so the
     // frame equals the reference to within rounding and nearly every pixel is black.
     let dark = framebuffer
-        .color
+        .color()
         .iter()
         .filter(|c| c.max_element() < 0.1)
         .count();
     assert!(
-        dark * 10 >= framebuffer.color.len() * 9,
+        dark * 10 >= framebuffer.color().len() * 9,
         "{dark} dark pixels"
     );
     assert!(rendered.psnr_db.unwrap() > 40.0, "{:?}", rendered.psnr_db);

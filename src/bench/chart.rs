@@ -64,12 +64,8 @@ fn to_framebuffer(pixmap: &Pixmap) -> Framebuffer {
         .chunks_exact(4)
         .map(|p| Vec3::new(decode(p[0]), decode(p[1]), decode(p[2])))
         .collect();
-    Framebuffer {
-        width: pixmap.width(),
-        height: pixmap.height(),
-        depth: vec![0.0; color.len()],
-        color,
-    }
+    let depth = vec![0.0; color.len()];
+    Framebuffer::from_parts(pixmap.width(), pixmap.height(), color, depth)
 }
 
 /// "1 draft", "2 interactive", … beside the plot, in the dots' colours; `*` marks the front.

@@ -85,16 +85,11 @@ fn supersampled_reference(
     for offset in offsets {
         let sample_rays = rays.at_sample(offset.as_dvec2(), footprint);
         render_rays_into(prepared, camera, viewport, sample_rays, shader, &mut pass);
-        for (sum, &c) in color.iter_mut().zip(&pass.color) {
+        for (sum, &c) in color.iter_mut().zip(pass.color()) {
             *sum += c * weight;
         }
     }
-    Framebuffer {
-        width: viewport.width,
-        height: viewport.height,
-        color,
-        depth: pass.depth,
-    }
+    Framebuffer::from_parts(viewport.width, viewport.height, color, pass.take_depth())
 }
 
 /// The still renderer's supersampling for a sample count (its default resolve filter).

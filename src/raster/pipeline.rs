@@ -151,7 +151,8 @@ pub fn render_with(
 
 /// Renders a frame into `framebuffer`, reusing its memory: transform, cull, clip, set up, bin,
 /// then per tile resolve visibility and run the program once for each visible pixel. Every
-/// pixel is written (shaded or background), so no separate clear pass is needed.
+/// pixel ends shaded or background, so no separate clear pass is needed; tiles that were all
+/// background in the last render into this framebuffer, and still are, are not rewritten.
 pub fn render_into(
     prepared: &PreparedScene,
     target: &RenderTarget,
@@ -170,20 +171,22 @@ pub fn render_into(
     };
     let background = prepared.scene.background;
     framebuffer.resize(viewport.width, viewport.height);
+    let (color, depth, known_background) =
+        framebuffer.tiles_mut((bins.tiles_x, bins.tiles_y), background);
     let strip = (TILE_SIZE * viewport.width) as usize;
-    let (fragments, flattened) = framebuffer
-        .color
+    let (fragments, flattened) = color
         .par_chunks_mut(strip)
-        .zip(framebuffer.depth.par_chunks_mut(strip))
+        .zip(depth.par_chunks_mut(strip))
+        .zip(known_background.par_chunks_mut(bins.tiles_x.max(1) as usize))
         .enumerate()
-        .map(|(ty, (color, depth))| {
+        .map(|(ty, ((color, depth), known_background))| {
             let mut tile = TileBuffers::default();
             let mut scratch = shader.scratch();
             let mut counts = (0, 0);
             let mask = target
                 .mask
                 .map(|m| &m[ty * strip..ty * strip + color.len()]);
-            for tx in 0..bins.tiles_x {
+            for (tx, known_background) in (0..bins.tiles_x).zip(known_background) {
                 let rect = TileBins::tile_rect(viewport, tx, ty as u32);
                 let bin = &bins.bins[(ty as u32 * bins.tiles_x + tx) as usize];
                 let out = StripOutput {
@@ -198,11 +201,15 @@ pub fn render_into(
                     continue;
                 }
                 if bin.is_empty() {
-                    out.fill_background(&rect);
+                    if !*known_background {
+                        out.fill_background(&rect);
+                        *known_background = true;
+                    }
                     continue;
                 }
                 tile.resolve_visibility(&triangles, bin, &rect);
                 let (shaded, flattened) = tile.shade(&triangles, &frame, &mut scratch, &rect, out);
+                *known_background = shaded == 0 && mask.is_none();
                 counts = (counts.0 + shaded, counts.1 + flattened);
             }
             counts

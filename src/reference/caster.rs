@@ -60,10 +60,10 @@ pub fn render_rays_into(
     let objects = frame_objects(prepared, camera);
     let background = prepared.scene.background;
     let width = viewport.width as usize;
-    let (fragments, flattened) = framebuffer
-        .color
+    let (color, depth) = framebuffer.parts_mut();
+    let (fragments, flattened) = color
         .par_chunks_mut(width)
-        .zip(framebuffer.depth.par_chunks_mut(width))
+        .zip(depth.par_chunks_mut(width))
         .enumerate()
         .map_init(
             || (shader.scratch(), Vec::new(), Vec::new()),

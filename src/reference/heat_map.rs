@@ -22,19 +22,14 @@ pub fn error_heat_map(
         .into_iter()
         .enumerate()
         .map(|(i, error)| {
-            if frame.depth[i].is_finite() != reference.depth[i].is_finite() {
+            if frame.depth()[i].is_finite() != reference.depth()[i].is_finite() {
                 SILHOUETTE_COLOR
             } else {
                 heat(error / scale)
             }
         })
         .collect();
-    Framebuffer {
-        width: frame.width,
-        height: frame.height,
-        color,
-        depth: frame.depth.clone(),
-    }
+    Framebuffer::from_parts(frame.width, frame.height, color, frame.depth().to_vec())
 }
 
 /// Black → red → yellow → white over [0, 1], in linear light; NaN shows as the worst.

@@ -43,9 +43,9 @@ pub fn frame_error(
 pub fn pixel_errors(frame: &Framebuffer, reference: &Framebuffer) -> Vec<f32> {
     assert_same_size(frame, reference);
     frame
-        .color
+        .color()
         .iter()
-        .zip(&reference.color)
+        .zip(reference.color())
         .map(|(a, b)| {
             let (a, b) = (display(*a), display(*b));
             (a - b).abs().max_element()
@@ -56,12 +56,12 @@ pub fn pixel_errors(frame: &Framebuffer, reference: &Framebuffer) -> Vec<f32> {
 pub fn psnr(frame: &Framebuffer, reference: &Framebuffer) -> f64 {
     assert_same_size(frame, reference);
     let squared: f64 = frame
-        .color
+        .color()
         .iter()
-        .zip(&reference.color)
+        .zip(reference.color())
         .map(|(a, b)| (display(*a) - display(*b)).length_squared() as f64)
         .sum();
-    let samples = (frame.color.len() * 3).max(1) as f64;
+    let samples = (frame.color().len() * 3).max(1) as f64;
     let mse = squared / samples;
     10.0 * (255.0 * 255.0 / mse).log10()
 }
@@ -83,12 +83,12 @@ pub struct NormalAngles {
 
 pub fn normal_angle_error(normals: &Framebuffer, reference: &Framebuffer) -> NormalAngles {
     assert_same_size(normals, reference);
-    let angles: Vec<f64> = (0..normals.color.len())
-        .filter(|&i| normals.depth[i].is_finite() && reference.depth[i].is_finite())
+    let angles: Vec<f64> = (0..normals.color().len())
+        .filter(|&i| normals.depth()[i].is_finite() && reference.depth()[i].is_finite())
         .map(|i| {
             angle_degrees(
-                decode_normal(normals.color[i]),
-                decode_normal(reference.color[i]),
+                decode_normal(normals.color()[i]),
+                decode_normal(reference.color()[i]),
             )
         })
         .collect();
@@ -103,9 +103,9 @@ pub fn normal_angle_error(normals: &Framebuffer, reference: &Framebuffer) -> Nor
 pub fn silhouette_mismatch(frame: &Framebuffer, reference: &Framebuffer) -> usize {
     assert_same_size(frame, reference);
     frame
-        .depth
+        .depth()
         .iter()
-        .zip(&reference.depth)
+        .zip(reference.depth())
         .filter(|(a, b)| a.is_finite() != b.is_finite())
         .count()
 }
@@ -142,12 +142,7 @@ mod tests {
     use super::*;
 
     fn frame(colors: &[Vec3], depths: &[f32]) -> Framebuffer {
-        Framebuffer {
-            width: colors.len() as u32,
-            height: 1,
-            color: colors.to_vec(),
-            depth: depths.to_vec(),
-        }
+        Framebuffer::from_parts(colors.len() as u32, 1, colors.to_vec(), depths.to_vec())
     }
 
     #[test]

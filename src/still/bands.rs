@@ -117,7 +117,7 @@ impl<S: FragmentShader> BandJob<'_, S> {
             for ((sum, c), &marked) in buffers
                 .resolved
                 .iter_mut()
-                .zip(&buffers.pass.color)
+                .zip(buffers.pass.color())
                 .zip(&mask)
             {
                 *sum = if marked { Vec3::ZERO } else { *c };
@@ -135,7 +135,7 @@ impl<S: FragmentShader> BandJob<'_, S> {
             let target = target(offset, self.supersampling.footprint(), only);
             let pass = render_into(self.prepared, &target, self.shader, &mut buffers.pass);
             stats = add_stats(stats, pass);
-            let (sums, colors) = (&mut buffers.resolved, &buffers.pass.color);
+            let (sums, colors) = (&mut buffers.resolved, buffers.pass.color());
             match only {
                 None => (sums.iter_mut().zip(colors)).for_each(|(sum, c)| *sum += *c * weight),
                 Some(_) => marked.iter().for_each(|&i| sums[i] += colors[i] * weight),
@@ -165,12 +165,12 @@ pub fn render_supersampled<S: FragmentShader>(
     let stats = job
         .render(0..job.full.height, buffers, &|| true, &mut || {})
         .expect("never cancelled");
-    let framebuffer = Framebuffer {
-        width: job.full.width,
-        height: job.full.height,
-        color: std::mem::take(&mut buffers.resolved),
-        depth: std::mem::take(&mut buffers.pass.depth),
-    };
+    let framebuffer = Framebuffer::from_parts(
+        job.full.width,
+        job.full.height,
+        std::mem::take(&mut buffers.resolved),
+        buffers.pass.take_depth(),
+    );
     (framebuffer, stats)
 }
 
@@ -192,13 +192,14 @@ fn contrast_mask(pass: &Framebuffer, threshold: f32, mask: &mut Vec<bool>) {
     mask.clear();
     mask.resize(w * h, false);
     let keys: Vec<Vec3> = pass
-        .color
+        .color()
         .iter()
         .map(|c| {
             let c = c.max(Vec3::ZERO);
             Vec3::new(c.x.sqrt(), c.y.sqrt(), c.z.sqrt())
         })
         .collect();
+    let depth = pass.depth();
     for y in 0..h {
         // Rows and columns clamped at the band's border: a one-sided difference there.
         let (up, down) = (y.saturating_sub(1) * w, (y + 1).min(h - 1) * w);
@@ -206,7 +207,7 @@ fn contrast_mask(pass: &Framebuffer, threshold: f32, mask: &mut Vec<bool>) {
         for x in 0..w {
             let (left, right) = (x.saturating_sub(1), (x + 1).min(w - 1));
             let i = row + x;
-            let covered = pass.depth[i].is_finite();
+            let covered = depth[i].is_finite();
             let twice = 2.0 * keys[i];
             let mut mark = false;
             for (a, b) in [
@@ -216,8 +217,8 @@ fn contrast_mask(pass: &Framebuffer, threshold: f32, mask: &mut Vec<bool>) {
                 (up + right, down + left),
             ] {
                 mark |= (keys[a] + keys[b] - twice).abs().max_element() > threshold
-                    || pass.depth[a].is_finite() != covered
-                    || pass.depth[b].is_finite() != covered;
+                    || depth[a].is_finite() != covered
+                    || depth[b].is_finite() != covered;
             }
             mask[i] = mark;
         }

@@ -15,7 +15,7 @@ pub fn resample_to_srgb(framebuffer: &Framebuffer, width: usize, height: usize) 
     let rows = area_weights(src_h, height);
     let mut horizontal = vec![Vec3::ZERO; width * src_h];
     for y in 0..src_h {
-        let source = &framebuffer.color[y * src_w..(y + 1) * src_w];
+        let source = &framebuffer.color()[y * src_w..(y + 1) * src_w];
         for (x, weights) in columns.iter().enumerate() {
             horizontal[y * width + x] = weights.iter().map(|&(i, w)| source[i] * w).sum();
         }
@@ -75,7 +75,7 @@ mod tests {
     #[test]
     fn averaging_two_rows_mixes_in_linear_light() {
         let mut fb = Framebuffer::new(1, 2, Vec3::ZERO);
-        fb.color[0] = Vec3::ONE;
+        fb.color_mut()[0] = Vec3::ONE;
         let out = resample_to_srgb(&fb, 1, 1);
         // Half of linear white is sRGB 188, not 128.
         assert_eq!(out, vec![[188, 188, 188]]);

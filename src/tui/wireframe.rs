@@ -47,9 +47,10 @@ fn draw_triangle_edges(triangle: &ScreenTriangle, framebuffer: &mut Framebuffer)
             let index = y as usize * width + x as usize;
             let offset = Vec2::new(x as f32 + 0.5, y as f32 + 0.5) - triangle.origin;
             let depth = 1.0 / triangle.inv_w.at(offset);
-            let visible = framebuffer.depth[index];
+            let (color, depths) = framebuffer.parts_mut();
+            let visible = depths[index];
             if (depth - visible).abs() <= DEPTH_TOLERANCE * visible.abs().max(1e-6) {
-                framebuffer.color[index] = LINE_COLOR;
+                color[index] = LINE_COLOR;
             }
         }
     }

@@ -49,10 +49,10 @@ pub fn raster_error(scene: &Scene, viewport: Viewport, density: u32) -> FrameErr
 }
 
 pub fn assert_all_finite(fb: &Framebuffer, what: &str) {
-    for (i, c) in fb.color.iter().enumerate() {
+    for (i, c) in fb.color().iter().enumerate() {
         assert!(c.is_finite(), "{what}: NaN or infinity at pixel {i}: {c:?}");
     }
-    for (i, d) in fb.depth.iter().enumerate() {
+    for (i, d) in fb.depth().iter().enumerate() {
         assert!(
             d.is_finite() || *d == f32::INFINITY,
             "{what}: bad depth {d} at pixel {i}"
@@ -61,7 +61,7 @@ pub fn assert_all_finite(fb: &Framebuffer, what: &str) {
 }
 
 pub fn covered(fb: &Framebuffer) -> usize {
-    fb.depth.iter().filter(|d| d.is_finite()).count()
+    fb.depth().iter().filter(|d| d.is_finite()).count()
 }
 
 pub fn camera(eye: [f64; 3], target: [f64; 3], fov: f32) -> Camera {
