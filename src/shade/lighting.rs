@@ -82,11 +82,139 @@ pub fn blinn_phong(
     color * diffuse + specular * material.specular
 }
 
+/// Fragments lit together by `blinn_phong_many`.
+const LANES: usize = 64;
+
+/// `blinn_phong` for a batch: `out[k]` lights `colors[k]` at `points[k]` with `normals[k]`.
+/// The same arithmetic in the same order (so the same colours to the bit), rearranged as
+/// structure-of-arrays loops over lanes of fragments, one light at a time, which the compiler
+/// turns into SIMD: the normalisations and the highlight's power run four fragments at once.
+pub fn blinn_phong_many(
+    lights: &FrameLights,
+    material: &Material,
+    colors: &[Vec3],
+    points: &[Vec3],
+    normals: &[Vec3],
+    out: &mut [Vec3],
+) {
+    let chunks = colors.chunks(LANES).zip(points.chunks(LANES));
+    let chunks = chunks.zip(normals.chunks(LANES)).zip(out.chunks_mut(LANES));
+    for (((colors, points), normals), out) in chunks {
+        let (p, n) = (Lanes::load(points), Lanes::load(normals));
+        let to_eye = Lanes::from_fn(|k| crate::surface::normalize_or(-p.at(k), n.at(k)));
+        let mut diffuse = Lanes::splat(lights.ambient);
+        let mut specular = Lanes::splat(Vec3::ZERO);
+        for light in &lights.lights {
+            let (mut lambert, mut highlight) = ([0.0f32; LANES], [0.0f32; LANES]);
+            let color = match *light {
+                RelativeLight::Point { position, color } => {
+                    for k in 0..LANES {
+                        let to_light = crate::surface::normalize_or(position - p.at(k), n.at(k));
+                        (lambert[k], highlight[k]) = light_terms(n.at(k), to_light, to_eye.at(k));
+                    }
+                    color
+                }
+                RelativeLight::Directional { towards, color } => {
+                    for k in 0..LANES {
+                        (lambert[k], highlight[k]) = light_terms(n.at(k), towards, to_eye.at(k));
+                    }
+                    color
+                }
+            };
+            power_lanes(&mut highlight, material.shininess);
+            for k in 0..LANES {
+                // As `blinn_phong`'s `continue`: a light behind the surface adds nothing
+                // (and a NaN term is added, as there).
+                if lambert[k] > 0.0 || lambert[k].is_nan() {
+                    diffuse.set(k, diffuse.at(k) + color * lambert[k]);
+                    specular.set(k, specular.at(k) + color * highlight[k]);
+                }
+            }
+        }
+        for (k, (out, &color)) in out.iter_mut().zip(colors).enumerate() {
+            *out = color * diffuse.at(k) + specular.at(k) * material.specular;
+        }
+    }
+}
+
+/// n·l and the Blinn highlight's base max(n·h, 0).
+#[inline(always)]
+fn light_terms(n: Vec3, to_light: Vec3, to_eye: Vec3) -> (f32, f32) {
+    let half = crate::surface::normalize_or(to_light + to_eye, n);
+    (n.dot(to_light), n.dot(half).max(0.0))
+}
+
+/// `power` on every lane, squaring for all lanes at once.
+fn power_lanes(x: &mut [f32; LANES], exponent: f32) {
+    if !is_whole_power(exponent) {
+        x.iter_mut().for_each(|x| *x = x.powf(exponent));
+        return;
+    }
+    let (mut base, mut n, mut result) = (*x, exponent as u32, [1.0f32; LANES]);
+    while n > 0 {
+        if n & 1 == 1 {
+            (0..LANES).for_each(|k| result[k] *= base[k]);
+        }
+        (0..LANES).for_each(|k| base[k] *= base[k]);
+        n >>= 1;
+    }
+    *x = result;
+}
+
+/// Vectors for a lane of fragments, one array per coordinate.
+struct Lanes {
+    x: [f32; LANES],
+    y: [f32; LANES],
+    z: [f32; LANES],
+}
+
+impl Lanes {
+    fn splat(v: Vec3) -> Lanes {
+        Lanes {
+            x: [v.x; LANES],
+            y: [v.y; LANES],
+            z: [v.z; LANES],
+        }
+    }
+
+    /// Up to `LANES` vectors; the lanes past the end hold zero.
+    fn load(vectors: &[Vec3]) -> Lanes {
+        let mut lanes = Lanes::splat(Vec3::ZERO);
+        for (k, v) in vectors.iter().enumerate() {
+            lanes.set(k, *v);
+        }
+        lanes
+    }
+
+    fn from_fn(f: impl Fn(usize) -> Vec3) -> Lanes {
+        let mut lanes = Lanes::splat(Vec3::ZERO);
+        for k in 0..LANES {
+            lanes.set(k, f(k));
+        }
+        lanes
+    }
+
+    #[inline(always)]
+    fn at(&self, k: usize) -> Vec3 {
+        Vec3::new(self.x[k], self.y[k], self.z[k])
+    }
+
+    #[inline(always)]
+    fn set(&mut self, k: usize, v: Vec3) {
+        (self.x[k], self.y[k], self.z[k]) = (v.x, v.y, v.z);
+    }
+}
+
+/// Whether `power` takes `exponent` by repeated squaring.
+fn is_whole_power(exponent: f32) -> bool {
+    (0.0..=1024.0).contains(&exponent) && exponent == (exponent as u32) as f32
+}
+
 /// x^exponent; whole exponents (the usual case) by repeated squaring inline, several times
 /// faster than `powf` (and than the `powi` library call), equal to within rounding.
 #[inline]
 fn power(x: f32, exponent: f32) -> f32 {
-    if !(exponent.fract() == 0.0 && (0.0..=1024.0).contains(&exponent)) {
+    if !is_whole_power(exponent) {
         return x.powf(exponent);
     }
     let (mut base, mut n, mut result) = (x, exponent as u32, 1.0f32);
@@ -123,6 +251,55 @@ mod tests {
             specular: 0.5,
             shininess: 20.0,
             ..Material::default()
+        }
+    }
+
+    #[test]
+    fn the_batch_lights_every_fragment_as_the_single_fragment_form_does() {
+        let lights = FrameLights::new(
+            Vec3::splat(0.05),
+            &[
+                Light::Point {
+                    position: DVec3::new(-4.0, 4.0, 6.0),
+                    color: Vec3::new(1.0, 0.9, 0.8),
+                },
+                Light::Directional {
+                    towards: Vec3::new(0.3, -1.0, 0.2),
+                    color: Vec3::splat(0.4),
+                },
+                // On the surface itself: the fallback direction.
+                Light::Point {
+                    position: DVec3::new(0.0, 0.0, -5.0),
+                    color: Vec3::ONE,
+                },
+            ],
+            DVec3::ZERO,
+        );
+        // 150 fragments: two whole lanes and a partial one; facing, grazing and facing away.
+        let n = 150;
+        let angle = |k: usize| k as f32 * 0.37;
+        let points: Vec<Vec3> = (0..n)
+            .map(|k| Vec3::new(angle(k).sin(), angle(k).cos(), -5.0 + (k % 7) as f32 * 0.1))
+            .collect();
+        let normals: Vec<Vec3> = (0..n)
+            .map(|k| Vec3::new(angle(k).cos(), 0.2, angle(k).sin()).normalize())
+            .collect();
+        let colors: Vec<Vec3> = (0..n).map(|k| Vec3::splat(k as f32 / n as f32)).collect();
+        for shininess in [0.0, 1.0, 32.0, 7.5, 2000.0] {
+            let material = Material {
+                shininess,
+                ..material()
+            };
+            let mut batch = vec![Vec3::NAN; n];
+            blinn_phong_many(&lights, &material, &colors, &points, &normals, &mut batch);
+            for k in 0..n {
+                let one = blinn_phong(&lights, &material, colors[k], points[k], normals[k]);
+                assert_eq!(
+                    batch[k].to_array().map(f32::to_bits),
+                    one.to_array().map(f32::to_bits),
+                    "fragment {k} at shininess {shininess}"
+                );
+            }
         }
     }
 

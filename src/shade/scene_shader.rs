@@ -4,7 +4,7 @@
 
 use super::bump::{NormalForm, bumped_normal};
 use super::gradient::{GradientMethod, central_difference, shifted_fragments};
-use super::lighting::{FrameLights, blinn_phong, facing_sign};
+use super::lighting::{FrameLights, blinn_phong_many, facing_sign};
 use super::pattern_batch::PatternBatch;
 use super::vertex_normals::VertexNormals;
 use super::view_mode::ViewMode;
@@ -12,7 +12,7 @@ use crate::pattern::OutputKind;
 use crate::raster::{Camera, Fragment, FragmentShader, FrameObject};
 use crate::scene::{BumpSource, Scene, Texturing};
 use crate::surface::{Frame, Surface};
-use crate::texture::{Mapping, SurfacePoint, SurfaceUv, TextureMapping, Wrap};
+use crate::texture::{Mapping, SurfacePoint, SurfaceUv, Wrap};
 use glam::{Vec2, Vec3};
 use std::borrow::Cow;
 use std::sync::Arc;
@@ -54,6 +54,10 @@ pub struct ShadeScratch {
     group_starts: Vec<usize>,
     frames: Vec<Frame>,
     colors: Vec<Vec3>,
+    /// Camera-relative positions and facing normals to light, and the lit colours.
+    points: Vec<Vec3>,
+    normals: Vec<Vec3>,
+    lit: Vec<Vec3>,
     heights: Vec<f32>,
     gradients: Vec<Vec2>,
     patterns: PatternBatch,
@@ -123,10 +127,10 @@ impl LitShader {
         let surface = &object.prepared.surface;
         let material = &object.prepared.material;
         scratch.frames.clear();
-        scratch.frames.extend(group.iter().map(|&i| {
-            let uv = fragments[i as usize].uv;
-            surface.frame(uv.x, uv.y)
-        }));
+        surface.frames(
+            group.iter().map(|&i| fragments[i as usize].uv),
+            &mut scratch.frames,
+        );
         if let Some(normals) = &self.vertex_normals {
             interpolate_frames(
                 &normals[object_index],
@@ -137,6 +141,8 @@ impl LitShader {
         }
         let mut flattened = self.base_colors(object, fragments, group, scratch);
         flattened += self.bump_gradients(object, fragments, group, scratch);
+        scratch.points.clear();
+        scratch.normals.clear();
         for (k, &i) in group.iter().enumerate() {
             let fragment = &fragments[i as usize];
             let frame = &scratch.frames[k];
@@ -157,12 +163,32 @@ impl LitShader {
             };
             let n = n * facing_sign(p, frame.n);
             out[i as usize] = match self.mode {
-                ViewMode::Shaded => blinn_phong(&self.lights, material, scratch.colors[k], p, n),
+                ViewMode::Shaded => {
+                    scratch.points.push(p);
+                    scratch.normals.push(n);
+                    continue;
+                }
                 ViewMode::Height => Vec3::splat(0.5 + 0.5 * (b * 0.2).tanh()),
                 ViewMode::Normals => n * 0.5 + Vec3::splat(0.5),
                 ViewMode::Uv => (fragment.uv / 30.0).fract_gl().extend(0.0),
                 ViewMode::Depth => Vec3::splat((-fragment.depth / self.depth_scale).exp2()),
             };
+        }
+        if self.mode == ViewMode::Shaded {
+            let lit = &mut scratch.lit;
+            lit.resize(group.len(), Vec3::ZERO);
+            let (points, normals) = (&scratch.points, &scratch.normals);
+            blinn_phong_many(
+                &self.lights,
+                material,
+                &scratch.colors,
+                points,
+                normals,
+                lit,
+            );
+            for (&i, &color) in group.iter().zip(lit.iter()) {
+                out[i as usize] = color;
+            }
         }
         flattened
     }
@@ -188,14 +214,15 @@ impl LitShader {
             Some(Texturing::Image(image)) => {
                 let surface = &object.prepared.surface;
                 let mapping = mapping_on(&image.mapping, surface, image.sampler.wrap_s);
-                for (k, &i) in group.iter().enumerate() {
-                    let fragment = &fragments[i as usize];
-                    let mapped = mapping.map(&self.surface_point(&scratch.frames[k], fragment));
+                let points = self.surface_points(fragments, group, &scratch.frames);
+                let colors = &mut scratch.colors;
+                mapping.map_each(points, |k, mapped| {
+                    let fragment = &fragments[group[k] as usize];
                     let footprint = mapped.footprint(fragment.duv_dx, fragment.duv_dy);
                     let texel = image.texture.sample(&image.sampler, mapped.st, footprint);
                     // Premultiplied: where the image is transparent the material shows through.
-                    scratch.colors[k] = texel.truncate() + material.color * (1.0 - texel.w);
-                }
+                    colors[k] = texel.truncate() + material.color * (1.0 - texel.w);
+                });
                 0
             }
         }
@@ -282,12 +309,7 @@ impl LitShader {
         shifted.identity.clear();
         shifted.identity.extend(0..n as u32);
         shifted.frames.clear();
-        shifted.frames.extend(
-            shifted
-                .fragments
-                .iter()
-                .map(|f| surface.frame(f.uv.x, f.uv.y)),
-        );
+        surface.frames(shifted.fragments.iter().map(|f| f.uv), &mut shifted.frames);
         let mut output = BumpOutput {
             frames: &shifted.frames,
             patterns,
@@ -339,30 +361,41 @@ impl LitShader {
             BumpSource::Image(image) => {
                 let surface = &object.prepared.surface;
                 let mapping = mapping_on(&image.mapping, surface, image.wrap_s);
-                for (k, &i) in group.iter().enumerate() {
-                    let fragment = &fragments[i as usize];
-                    let mapped = mapping.map(&self.surface_point(&output.frames[k], fragment));
+                let points = self.surface_points(fragments, group, output.frames);
+                let (heights, gradients) = (&mut *output.heights, &mut *output.gradients);
+                mapping.map_each(points, |k, mapped| {
+                    let fragment = &fragments[group[k] as usize];
                     let footprint = mapped.footprint(fragment.duv_dx, fragment.duv_dy);
                     let sample =
                         image
                             .map
                             .sample_gradient(mapped.st, image.wrap_s, image.wrap_t, footprint);
-                    output.heights[k] = sample.height;
-                    output.gradients[k] = sample.surface_gradient(mapped.jacobian);
-                }
+                    heights[k] = sample.height;
+                    gradients[k] = sample.surface_gradient(mapped.jacobian);
+                });
                 0
             }
         }
     }
 
-    fn surface_point(&self, frame: &Frame, fragment: &Fragment) -> SurfacePoint {
-        SurfacePoint {
-            p: frame.p,
-            pu: frame.pu,
-            pv: frame.pv,
-            uv: fragment.uv,
-            time: self.time as f32,
-        }
+    /// What a mapping sees of each fragment of the group (`frames` in the group's order).
+    fn surface_points<'a>(
+        &self,
+        fragments: &'a [Fragment],
+        group: &'a [u32],
+        frames: &'a [Frame],
+    ) -> impl Iterator<Item = SurfacePoint> + 'a {
+        let time = self.time as f32;
+        group
+            .iter()
+            .zip(frames)
+            .map(move |(&i, frame)| SurfacePoint {
+                p: frame.p,
+                pu: frame.pu,
+                pv: frame.pv,
+                uv: fragments[i as usize].uv,
+                time,
+            })
     }
 }
 

@@ -83,6 +83,19 @@ impl Surface {
         }
     }
 
+    /// The exact frames at a batch of (u,v), appended to `out`: one dispatch per batch, so
+    /// each surface's frame is inlined into its own loop (and the sphere's is vectorised).
+    pub fn frames(&self, uvs: impl Iterator<Item = Vec2>, out: &mut Vec<Frame>) {
+        match self {
+            Surface::Plane(s) => out.extend(uvs.map(|uv| s.frame(uv.x, uv.y))),
+            Surface::Sphere(s) => s.frames(uvs, out),
+            Surface::Paraboloid(s) => out.extend(uvs.map(|uv| s.frame(uv.x, uv.y))),
+            Surface::Cone(s) => out.extend(uvs.map(|uv| s.frame(uv.x, uv.y))),
+            Surface::Wave(s) => out.extend(uvs.map(|uv| s.frame(uv.x, uv.y))),
+            Surface::Triangle(s) => out.extend(uvs.map(|uv| s.frame(uv.x, uv.y))),
+        }
+    }
+
     pub fn domain(&self) -> Domain {
         match self {
             Surface::Plane(s) => s.domain(),

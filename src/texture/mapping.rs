@@ -63,6 +63,35 @@ pub enum Mapping {
     Scroll(Scroll),
 }
 
+impl Mapping {
+    /// Maps a batch of points, calling `each(k, mapped)` for the k-th: one dispatch per batch,
+    /// so each mapping is inlined into its own loop.
+    #[inline]
+    pub fn map_each(
+        &self,
+        points: impl Iterator<Item = SurfacePoint>,
+        mut each: impl FnMut(usize, Mapped),
+    ) {
+        fn with<M: TextureMapping>(
+            m: &M,
+            points: impl Iterator<Item = SurfacePoint>,
+            each: &mut impl FnMut(usize, Mapped),
+        ) {
+            for (k, point) in points.enumerate() {
+                each(k, m.map(&point));
+            }
+        }
+        match self {
+            Mapping::Planar(m) => with(m, points, &mut each),
+            Mapping::Triangle(m) => with(m, points, &mut each),
+            Mapping::Spherical(m) => with(m, points, &mut each),
+            Mapping::Cylindrical(m) => with(m, points, &mut each),
+            Mapping::SurfaceUv(m) => with(m, points, &mut each),
+            Mapping::Scroll(m) => with(m, points, &mut each),
+        }
+    }
+}
+
 impl TextureMapping for Mapping {
     fn map(&self, at: &SurfacePoint) -> Mapped {
         match self {
