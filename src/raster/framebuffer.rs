@@ -66,12 +66,6 @@ impl Framebuffer {
         (&mut self.color, &mut self.depth)
     }
 
-    /// Takes the colour out, leaving the framebuffer empty (for reuse by the next `resize`).
-    pub fn take_color(&mut self) -> Vec<Vec3> {
-        self.known_background.tiles.clear();
-        std::mem::take(&mut self.color)
-    }
-
     /// Takes the depth out, leaving the framebuffer empty (for reuse by the next `resize`).
     pub fn take_depth(&mut self) -> Vec<f32> {
         self.known_background.tiles.clear();

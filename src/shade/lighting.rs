@@ -52,7 +52,8 @@ pub fn facing_sign(p: Vec3, geometric_normal: Vec3) -> f32 {
 }
 
 /// Blinn-Phong in linear light at camera-relative point `p` with unit normal `n` (already facing
-/// the viewer) and diffuse colour `color`.
+/// the viewer) and diffuse colour `color`. The one-fragment definition; the renderer runs
+/// `blinn_phong_many`, which is tested to give the same bits.
 #[inline]
 pub fn blinn_phong(
     lights: &FrameLights,
