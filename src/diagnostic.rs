@@ -4,28 +4,50 @@
 /// The one sanitiser for text from files: see `term::sanitize`.
 pub use crate::term::sanitize;
 
-/// The 1-based line and column (in characters) of a byte offset.
-pub fn line_column(source: &str, offset: usize) -> (usize, usize) {
-    let offset = floor_char_boundary(source, offset.min(source.len()));
-    let before = &source[..offset];
-    let line = before.matches('\n').count() + 1;
-    let line_start = before.rfind('\n').map_or(0, |i| i + 1);
-    (line, source[line_start..offset].chars().count() + 1)
+/// A place in a source text, as a message shows it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Spot {
+    /// 1-based line.
+    pub line: usize,
+    /// 1-based column, counted in characters.
+    pub column: usize,
+    /// The line around the spot, escaped (see `snippet`).
+    pub shown: String,
+    /// Display columns before the caret in `shown` (escapes widen the text).
+    pub caret: usize,
+}
+
+impl Spot {
+    /// The spot at byte `offset` of `source` (clamped to the text and to a character boundary).
+    pub fn at(source: &str, offset: usize) -> Spot {
+        let offset = floor_char_boundary(source, offset.min(source.len()));
+        let line_start = source[..offset].rfind('\n').map_or(0, |i| i + 1);
+        let line_end = source[offset..]
+            .find('\n')
+            .map_or(source.len(), |i| offset + i);
+        let before = &source[line_start..offset];
+        let (shown, caret) = snippet(before, &source[offset..line_end]);
+        Spot {
+            line: source[..line_start].matches('\n').count() + 1,
+            column: before.chars().count() + 1,
+            shown,
+            caret,
+        }
+    }
 }
 
 /// Renders `file:line:column: message`, the offending line (a window of it when it is long) and a
 /// caret under the spot.
 pub fn render(file: &str, source: &str, offset: usize, message: &str) -> String {
-    let (line, column) = line_column(source, offset);
-    let offset = floor_char_boundary(source, offset.min(source.len()));
-    let line_start = source[..offset].rfind('\n').map_or(0, |i| i + 1);
-    let line_end = source[offset..]
-        .find('\n')
-        .map_or(source.len(), |i| offset + i);
-    let (code, caret) = snippet(&source[line_start..offset], &source[offset..line_end]);
+    let Spot {
+        line,
+        column,
+        shown,
+        caret,
+    } = Spot::at(source, offset);
     let gutter = line.to_string().len();
     format!(
-        "{file}:{line}:{column}: {message}\n{pad} |\n{line} | {code}\n{pad} | {space}^",
+        "{file}:{line}:{column}: {message}\n{pad} |\n{line} | {shown}\n{pad} | {space}^",
         file = sanitize(file),
         message = sanitize(message),
         pad = " ".repeat(gutter),
@@ -38,7 +60,7 @@ const CONTEXT: usize = 60;
 
 /// The escaped source line around a spot (`before` and `after` it on its line; long lines are
 /// cut to `CONTEXT` characters each side, marked with `…`) and the caret's display column in it.
-pub fn snippet(before: &str, after: &str) -> (String, usize) {
+fn snippet(before: &str, after: &str) -> (String, usize) {
     let before: Vec<char> = before.chars().collect();
     let after = after.trim_end_matches('\r');
     let mut left: String = before[before.len().saturating_sub(CONTEXT)..]
@@ -71,7 +93,7 @@ pub fn sanitize_lines(text: &str) -> String {
         .join("\n")
 }
 
-pub fn floor_char_boundary(s: &str, mut i: usize) -> usize {
+fn floor_char_boundary(s: &str, mut i: usize) -> usize {
     while !s.is_char_boundary(i) {
         i -= 1;
     }
@@ -96,7 +118,8 @@ mod tests {
     fn points_at_the_right_column() {
         let src = "a = 1\nradius = -1\n";
         let offset = src.find("-1").unwrap();
-        assert_eq!(line_column(src, offset), (2, 10));
+        let spot = Spot::at(src, offset);
+        assert_eq!((spot.line, spot.column), (2, 10));
         let message = render("s.toml", src, offset, "expected a positive number");
         assert!(
             message.starts_with("s.toml:2:10: expected a positive number"),

@@ -1,6 +1,6 @@
 //! `PatternError`: every problem in a pattern file, with its place and a rustc-like snippet.
 
-use crate::diagnostic::{escape_line, floor_char_boundary, snippet};
+use crate::diagnostic::{Spot, escape_line};
 use std::fmt;
 
 /// A byte range in the source text.
@@ -42,18 +42,14 @@ pub struct PatternError {
 impl PatternError {
     /// An error at byte offset `at` of `source`.
     pub fn at(source: &str, origin: &str, at: usize, message: impl Into<String>) -> PatternError {
-        let at = floor_char_boundary(source, at.min(source.len()));
-        let line_start = source[..at].rfind('\n').map_or(0, |i| i + 1);
-        let line_end = source[at..].find('\n').map_or(source.len(), |i| at + i);
-        let before = &source[line_start..at];
-        let (shown, caret_offset) = snippet(before, &source[at..line_end]);
+        let spot = Spot::at(source, at);
         PatternError {
             origin: escape_line(origin),
-            line: source[..line_start].matches('\n').count() + 1,
-            column: before.chars().count() + 1,
+            line: spot.line,
+            column: spot.column,
             message: escape_line(&message.into()),
-            source_line: shown,
-            caret_offset,
+            source_line: spot.shown,
+            caret_offset: spot.caret,
         }
     }
 
