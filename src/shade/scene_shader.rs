@@ -164,6 +164,7 @@ impl LitShader {
             let n = n * facing_sign(p, frame.n);
             out[i as usize] = match self.mode {
                 ViewMode::Shaded => {
+                    // Lit below, all of the group in one batch.
                     scratch.points.push(p);
                     scratch.normals.push(n);
                     continue;
