@@ -2,7 +2,7 @@
 //! as images, for renderers that take image maps (the POV-Ray scene export). Row 0 is the top
 //! of the image, v = max; column 0 is u = min; samples sit at cell centres.
 
-use super::pattern_batch::PatternBatch;
+use super::pattern_batch::{PatternBatch, Sites};
 use crate::pattern::OutputKind;
 use crate::raster::Fragment;
 use crate::scene::{Bump, BumpSource, Material, Texturing};
@@ -57,8 +57,12 @@ pub fn bake_color(surface: &Surface, material: &Material, time: f64, side: u32) 
         match &material.texture {
             None => colors.fill(material.color),
             Some(Texturing::Pattern(binding)) => {
-                batch.load(binding, &fragments, &group, &frames);
-                batch.colors(binding, time, &mut colors);
+                let at = Sites {
+                    fragments: &fragments,
+                    group: &group,
+                    frames: &frames,
+                };
+                batch.colors(binding, at, time, &mut colors);
             }
             Some(Texturing::Image(image)) => {
                 for ((color, fragment), frame) in colors.iter_mut().zip(&fragments).zip(&frames) {
@@ -90,8 +94,12 @@ pub fn bake_height(surface: &Surface, bump: &Bump, time: f64, side: u32) -> Opti
         let (fragments, frames) = grid_row(surface, side, row);
         match &bump.source {
             BumpSource::Pattern(binding) if binding.pattern.output() == OutputKind::Height => {
-                batch.load(binding, &fragments, &group, &frames);
-                batch.bump(binding, time, &mut heights, &mut gradients);
+                let at = Sites {
+                    fragments: &fragments,
+                    group: &group,
+                    frames: &frames,
+                };
+                batch.bump(binding, at, time, &mut heights, &mut gradients);
             }
             BumpSource::Pattern(_) => return None,
             BumpSource::Image(image) => {

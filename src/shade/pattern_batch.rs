@@ -7,6 +7,22 @@ use crate::scene::PatternBinding;
 use crate::surface::Frame;
 use glam::{Vec2, Vec3};
 
+/// Where a pattern is evaluated: the fragments `group` picks out, and their surface frames in
+/// the group's order.
+#[derive(Clone, Copy)]
+pub struct Sites<'a> {
+    pub fragments: &'a [Fragment],
+    pub group: &'a [u32],
+    pub frames: &'a [Frame],
+}
+
+/// Whether the point's partials are loaded: only a height's gradient reads them.
+#[derive(Clone, Copy, PartialEq)]
+enum PointPartials {
+    Needed,
+    Unneeded,
+}
+
 /// Reusable input and output buffers for one pattern evaluation at a time.
 #[derive(Default)]
 pub struct PatternBatch {
@@ -21,36 +37,39 @@ pub struct PatternBatch {
 }
 
 impl PatternBatch {
-    /// Loads the group's inputs: pattern coordinates q = J·(u,v) + offset, and the object-space
-    /// point with ∂p/∂q = [Pu Pv]·J⁻¹ when the pattern reads x, y or z.
-    pub fn load(
-        &mut self,
-        binding: &PatternBinding,
-        fragments: &[Fragment],
-        group: &[u32],
-        frames: &[Frame],
-    ) {
+    /// Loads the group's inputs: pattern coordinates q = J·(u,v) + offset, and, when the pattern
+    /// reads x, y or z, the object-space point, with ∂p/∂q = [Pu Pv]·J⁻¹ if `partials` asks.
+    fn load(&mut self, binding: &PatternBinding, at: Sites, partials: PointPartials) {
         let jacobian = binding.placement.jacobian();
-        self.u.clear();
-        self.v.clear();
-        for &i in group {
-            let q = binding.placement.apply(fragments[i as usize].uv, jacobian);
-            self.u.push(q.x);
-            self.v.push(q.y);
+        let n = at.group.len();
+        self.u.resize(n, 0.0);
+        self.v.resize(n, 0.0);
+        for ((&i, u), v) in at.group.iter().zip(&mut self.u).zip(&mut self.v) {
+            let q = binding
+                .placement
+                .apply(at.fragments[i as usize].uv, jacobian);
+            (*u, *v) = (q.x, q.y);
         }
-        for lane in &mut self.point {
-            lane.clear();
+        let lanes = match (binding.pattern.uses_point(), partials) {
+            (false, _) => 0,
+            (true, PointPartials::Unneeded) => 3,
+            (true, PointPartials::Needed) => 9,
+        };
+        for (k, lane) in self.point.iter_mut().enumerate() {
+            lane.resize(if k < lanes { n } else { 0 }, 0.0);
         }
-        if !binding.pattern.uses_point() {
+        if lanes == 0 {
             return;
         }
-        let inverse = jacobian.inverse();
-        for frame in frames {
-            let along_q1 = frame.pu * inverse.x_axis.x + frame.pv * inverse.x_axis.y;
-            let along_q2 = frame.pu * inverse.y_axis.x + frame.pv * inverse.y_axis.y;
-            for (lanes, vector) in self.point.chunks_mut(3).zip([frame.p, along_q1, along_q2]) {
-                push_vector(lanes, vector);
-            }
+        let [x, y, z, rest @ ..] = &mut self.point;
+        write_vectors([x, y, z], at.frames.iter().map(|frame| frame.p));
+        if lanes == 9 {
+            let inverse = jacobian.inverse();
+            let [x_u, y_u, z_u, x_v, y_v, z_v] = rest;
+            let along =
+                |column: glam::Vec2| move |frame: &Frame| frame.pu * column.x + frame.pv * column.y;
+            write_vectors([x_u, y_u, z_u], at.frames.iter().map(along(inverse.x_axis)));
+            write_vectors([x_v, y_v, z_v], at.frames.iter().map(along(inverse.y_axis)));
         }
     }
 
@@ -59,10 +78,12 @@ impl PatternBatch {
     pub fn bump(
         &mut self,
         binding: &PatternBinding,
+        at: Sites,
         time: f64,
         heights: &mut [f32],
         gradients: &mut [Vec2],
     ) -> usize {
+        self.load(binding, at, PointPartials::Needed);
         let n = self.u.len();
         self.samples.clear();
         self.samples.resize(n, BumpSample::default());
@@ -84,7 +105,14 @@ impl PatternBatch {
     }
 
     /// Colours of a colour pattern for the loaded group.
-    pub fn colors(&mut self, binding: &PatternBinding, time: f64, colors: &mut [Vec3]) -> usize {
+    pub fn colors(
+        &mut self,
+        binding: &PatternBinding,
+        at: Sites,
+        time: f64,
+        colors: &mut [Vec3],
+    ) -> usize {
+        self.load(binding, at, PointPartials::Unneeded);
         let n = self.u.len();
         self.rgb.clear();
         self.rgb.resize(n, [0.0; 3]);
@@ -118,8 +146,10 @@ fn inputs<'a>(u: &'a [f32], v: &'a [f32], point: &'a [Vec<f32>; 9], time: f64) -
     }
 }
 
-fn push_vector(lanes: &mut [Vec<f32>], v: Vec3) {
-    lanes[0].push(v.x);
-    lanes[1].push(v.y);
-    lanes[2].push(v.z);
+/// Writes each vector's x, y and z into the three lanes (already the group's length).
+fn write_vectors(lanes: [&mut Vec<f32>; 3], vectors: impl Iterator<Item = Vec3>) {
+    let [x, y, z] = lanes;
+    for (((v, x), y), z) in vectors.zip(x).zip(y).zip(z) {
+        (*x, *y, *z) = (v.x, v.y, v.z);
+    }
 }

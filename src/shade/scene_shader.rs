@@ -5,7 +5,7 @@
 use super::bump::{NormalForm, bumped_normal};
 use super::gradient::{GradientMethod, central_difference, shifted_fragments};
 use super::lighting::{FrameLights, blinn_phong_many, facing_sign};
-use super::pattern_batch::PatternBatch;
+use super::pattern_batch::{PatternBatch, Sites};
 use super::vertex_normals::VertexNormals;
 use super::view_mode::ViewMode;
 use crate::pattern::OutputKind;
@@ -208,9 +208,13 @@ impl LitShader {
         match &material.texture {
             None => 0,
             Some(Texturing::Pattern(binding)) => {
+                let at = Sites {
+                    fragments,
+                    group,
+                    frames: &scratch.frames,
+                };
                 let patterns = &mut scratch.patterns;
-                patterns.load(binding, fragments, group, &scratch.frames);
-                patterns.colors(binding, self.time, &mut scratch.colors)
+                patterns.colors(binding, at, self.time, &mut scratch.colors)
             }
             Some(Texturing::Image(image)) => {
                 let surface = &object.prepared.surface;
@@ -352,12 +356,15 @@ impl LitShader {
         };
         match &bump.source {
             BumpSource::Pattern(binding) => {
+                let at = Sites {
+                    fragments,
+                    group,
+                    frames: output.frames,
+                };
+                let (heights, gradients) = (&mut *output.heights, &mut *output.gradients);
                 output
                     .patterns
-                    .load(binding, fragments, group, output.frames);
-                output
-                    .patterns
-                    .bump(binding, self.time, output.heights, output.gradients)
+                    .bump(binding, at, self.time, heights, gradients)
             }
             BumpSource::Image(image) => {
                 let surface = &object.prepared.surface;
