@@ -216,17 +216,55 @@ fn trilinear_stays_finite_for_any_footprint() {
 #[test]
 fn batch_sampling_equals_one_at_a_time() {
     let texture = distinct(13, 7);
-    let sampler = Sampler::new(Filter::Trilinear, Wrap::Repeat);
-    let points: Vec<Vec2> = (0..40)
-        .map(|i| Vec2::new(i as f32 * 0.37 - 3.0, i as f32 * 0.11))
+    // More than one chunk of taps, points on every side of the image and exactly on its
+    // edges, and the non-finite coordinates each wrap must survive.
+    let mut points: Vec<Vec2> = (0..150)
+        .map(|i| Vec2::new(i as f32 * 0.37 - 30.0, i as f32 * 0.11 - 8.0))
         .collect();
-    let footprints: Vec<Footprint> = (0..40)
+    for s in [
+        0.0,
+        -0.0,
+        1.0,
+        -1.0,
+        2.0,
+        -1e-9,
+        1e-9,
+        0.999_999_9,
+        1e30,
+        -1e30,
+    ] {
+        points.push(Vec2::new(s, -s));
+    }
+    points.extend([Vec2::NAN, Vec2::INFINITY, Vec2::NEG_INFINITY]);
+    let footprints: Vec<Footprint> = (0..points.len())
         .map(|i| Footprint::new(i as f32 * 0.01, 0.0, 0.0, 0.02))
         .collect();
-    let mut batch = vec![Texel::ZERO; 40];
-    sampler.sample_many(texture.mip_chain(), &points, &footprints, &mut batch);
-    for ((p, f), b) in points.iter().zip(&footprints).zip(&batch) {
-        assert_eq!(texture.sample(&sampler, *p, *f), *b);
+    for filter in [Filter::Nearest, Filter::Bilinear, Filter::Trilinear] {
+        for (wrap_s, wrap_t) in [
+            (Wrap::Repeat, Wrap::Repeat),
+            (Wrap::Clamp, Wrap::Mirror),
+            (Wrap::Mirror, Wrap::Clamp),
+        ] {
+            let sampler = Sampler {
+                filter,
+                wrap_s,
+                wrap_t,
+            };
+            let mut batch = vec![Texel::ZERO; points.len()];
+            let given: &[Footprint] = if filter.uses_footprint() {
+                &footprints
+            } else {
+                &[]
+            };
+            sampler.sample_many(texture.mip_chain(), &points, given, &mut batch);
+            for ((p, f), b) in points.iter().zip(&footprints).zip(&batch) {
+                let one = texture.sample(&sampler, *p, *f);
+                assert!(
+                    one.to_array().map(f32::to_bits) == b.to_array().map(f32::to_bits),
+                    "{filter:?} {wrap_s:?}/{wrap_t:?} at {p}: {one} one at a time, {b} in a batch"
+                );
+            }
+        }
     }
 }
 

@@ -12,7 +12,7 @@ use crate::pattern::OutputKind;
 use crate::raster::{Camera, Fragment, FragmentShader, FrameObject};
 use crate::scene::{BumpSource, Scene, Texturing};
 use crate::surface::{Frame, Surface};
-use crate::texture::{Mapping, SurfacePoint, SurfaceUv, Wrap};
+use crate::texture::{Footprint, Mapping, SurfacePoint, SurfaceUv, Texel, Wrap};
 use glam::{Vec2, Vec3};
 use std::borrow::Cow;
 use std::sync::Arc;
@@ -61,8 +61,18 @@ pub struct ShadeScratch {
     heights: Vec<f32>,
     gradients: Vec<Vec2>,
     patterns: PatternBatch,
+    texture: TextureBatch,
     /// Inputs and outputs of shifted height evaluations (central differences, the seed lattice).
     shifted: Shifted,
+}
+
+/// A batch's image lookups: texture coordinates, footprints (when the filter reads them) and
+/// the texels.
+#[derive(Default)]
+struct TextureBatch {
+    st: Vec<Vec2>,
+    footprints: Vec<Footprint>,
+    texels: Vec<Texel>,
 }
 
 #[derive(Default)]
@@ -220,14 +230,27 @@ impl LitShader {
                 let surface = &object.prepared.surface;
                 let mapping = mapping_on(&image.mapping, surface, image.sampler.wrap_s);
                 let points = self.surface_points(fragments, group, &scratch.frames);
-                let colors = &mut scratch.colors;
+                let texture = &mut scratch.texture;
+                texture.st.clear();
+                texture.footprints.clear();
+                let wants_footprint = image.sampler.filter.uses_footprint();
                 mapping.map_each(points, |k, mapped| {
-                    let fragment = &fragments[group[k] as usize];
-                    let footprint = mapped.footprint(fragment.duv_dx, fragment.duv_dy);
-                    let texel = image.texture.sample(&image.sampler, mapped.st, footprint);
-                    // Premultiplied: where the image is transparent the material shows through.
-                    colors[k] = texel.truncate() + material.color * (1.0 - texel.w);
+                    texture.st.push(mapped.st);
+                    if wants_footprint {
+                        let fragment = &fragments[group[k] as usize];
+                        let footprint = mapped.footprint(fragment.duv_dx, fragment.duv_dy);
+                        texture.footprints.push(footprint);
+                    }
                 });
+                reset(&mut texture.texels, group.len(), Texel::ZERO);
+                let (st, footprints) = (&texture.st, &texture.footprints);
+                image
+                    .texture
+                    .sample_many(&image.sampler, st, footprints, &mut texture.texels);
+                for (color, texel) in scratch.colors.iter_mut().zip(&texture.texels) {
+                    // Premultiplied: where the image is transparent the material shows through.
+                    *color = texel.truncate() + material.color * (1.0 - texel.w);
+                }
                 0
             }
         }

@@ -69,6 +69,17 @@ impl Texture {
         sampler.sample(&self.chain, st, footprint)
     }
 
+    /// Samples every point of a batch (see `Sampler::sample_many`).
+    pub fn sample_many(
+        &self,
+        sampler: &Sampler,
+        st: &[Vec2],
+        footprints: &[Footprint],
+        out: &mut [Texel],
+    ) {
+        sampler.sample_many(&self.chain, st, footprints, out);
+    }
+
     /// The mip level `footprint` selects, in `[0, levels − 1]`, never NaN.
     pub fn level_of_detail(&self, footprint: Footprint) -> f32 {
         footprint.level_of_detail(&self.chain)

@@ -23,6 +23,7 @@ mod mapping;
 mod mip;
 mod plain_pnm;
 mod raster;
+mod sample_batch;
 mod sampler;
 mod wrap;
 

@@ -76,19 +76,6 @@ impl Sampler {
         }
         lerp(near, self.bilinear(chain.level(fine + 1), st), blend)
     }
-
-    /// Samples many points; `out` receives `min(st.len(), footprints.len(), out.len())` values.
-    pub fn sample_many<T: Blend>(
-        &self,
-        chain: &MipChain<T>,
-        st: &[Vec2],
-        footprints: &[Footprint],
-        out: &mut [T],
-    ) {
-        for ((o, &p), &f) in out.iter_mut().zip(st).zip(footprints) {
-            *o = self.sample(chain, p, f);
-        }
-    }
 }
 
 /// The two texels around `s` on an axis of `n` texels and the weight of the second.
@@ -101,7 +88,7 @@ pub(crate) fn linear_taps(wrap: Wrap, s: f32, n: u32) -> (u32, u32, f32) {
 }
 
 #[inline(always)]
-fn lerp<T: Blend>(a: T, b: T, t: f32) -> T {
+pub(crate) fn lerp<T: Blend>(a: T, b: T, t: f32) -> T {
     a * (1.0 - t) + b * t
 }
 

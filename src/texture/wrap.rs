@@ -54,21 +54,17 @@ impl Wrap {
     }
 }
 
-/// `f32::floor` for finite inputs, without a call: on baseline x86-64 (no SSE4.1
-/// `roundss`) `floor` is a libm call, the largest cost of a nearest sample.
-/// Floats of magnitude 2^23 or more are already integers.
+/// `f32::floor` without a call: on baseline x86-64 (no SSE4.1 `roundss`) `floor` is a libm
+/// call, the largest cost of a nearest sample. Float operations and selects only (no
+/// saturating f32 → i32 conversion), so loops over coordinates vectorise: adding and taking
+/// away 2^23 rounds |x| < 2^23 to a whole number, and from 2^23 on every f32 is whole already.
+/// Exact for every f32; −0, infinities and NaN come back as themselves.
 #[inline(always)]
 pub(crate) fn floor(x: f32) -> f32 {
-    if x.abs() < 8_388_608.0 {
-        let truncated = (x as i32) as f32;
-        if truncated > x {
-            truncated - 1.0
-        } else {
-            truncated
-        }
-    } else {
-        x
-    }
+    const WHOLE: f32 = 8_388_608.0; // 2^23
+    let rounded = ((x.abs() + WHOLE) - WHOLE).copysign(x);
+    let floored = if rounded > x { rounded - 1.0 } else { rounded };
+    if x.abs() < WHOLE { floored } else { x }
 }
 
 #[cfg(test)]
@@ -76,12 +72,45 @@ mod tests {
     use super::*;
 
     #[test]
-    fn floor_matches_std_for_finite_values() {
+    fn floor_matches_std_everywhere() {
         for x in [
-            0.0, -0.0, 0.5, -0.5, -1.0, 1.0, 2.5, -2.5, -1e-9, 8388607.5, -8388607.5, 1e20, -1e20,
+            0.0,
+            -0.0,
+            0.5,
+            -0.5,
+            -1.0,
+            1.0,
+            1.5,
+            -1.5,
+            2.5,
+            -2.5,
+            -1e-9,
+            1e-38,
+            -1e-38,
+            0.49999997,
+            -0.49999997,
+            8388607.5,
+            -8388607.5,
+            8388607.0,
+            8388609.0,
+            16777217.0,
+            1e20,
+            -1e20,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
         ] {
-            assert_eq!(floor(x), x.floor(), "{x}");
+            let (got, want) = (floor(x), x.floor());
+            assert!(
+                got == want && got.is_sign_negative() == want.is_sign_negative(),
+                "{x}"
+            );
         }
+        let mut x = -3000.0f32;
+        while x < 3000.0 {
+            assert_eq!(floor(x), x.floor(), "{x}");
+            x += 0.173;
+        }
+        assert!(floor(f32::NAN).is_nan());
     }
 
     #[test]
