@@ -164,10 +164,13 @@ pub fn sin_cos(x: f32) -> (f32, f32) {
     const PIO2_1: f32 = 1.570_312_5;
     const PIO2_2: f32 = 4.837_513e-4;
     const PIO2_3: f32 = 7.549_79e-8;
-    let q = x * std::f32::consts::FRAC_2_PI;
-    // Round to nearest by truncation after a half shift: no `roundf` call on baseline x86-64.
-    let j = (q + 0.5f32.copysign(q)) as i32;
-    let jf = j as f32;
+    // Round q to the nearest whole number by adding and taking away 1.5·2^23, and read it as an
+    // integer from the sum's low mantissa bits (exact for |q| < 2^22): no `roundf` call on
+    // baseline x86-64 and no saturating f32 → i32 cast, so batches of angles vectorise.
+    const SHIFT: f32 = 12_582_912.0; // 1.5·2^23
+    let shifted = x * std::f32::consts::FRAC_2_PI + SHIFT;
+    let j = shifted.to_bits() as i32 - SHIFT.to_bits() as i32;
+    let jf = shifted - SHIFT;
     let r = ((x - jf * PIO2_1) - jf * PIO2_2) - jf * PIO2_3;
     let r2 = r * r;
     let sin_r = r + r * r2 * (-1.666_665_5e-1 + r2 * (8.332_161e-3 + r2 * -1.951_529_6e-4));
