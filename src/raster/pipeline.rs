@@ -179,41 +179,43 @@ pub fn render_into(
         .zip(depth.par_chunks_mut(strip))
         .zip(known_background.par_chunks_mut(bins.tiles_x.max(1) as usize))
         .enumerate()
-        .map(|(ty, ((color, depth), known_background))| {
-            let mut tile = TileBuffers::default();
-            let mut scratch = shader.scratch();
-            let mut counts = (0, 0);
-            let mask = target
-                .mask
-                .map(|m| &m[ty * strip..ty * strip + color.len()]);
-            for (tx, known_background) in (0..bins.tiles_x).zip(known_background) {
-                let rect = TileBins::tile_rect(viewport, tx, ty as u32);
-                let bin = &bins.bins[(ty as u32 * bins.tiles_x + tx) as usize];
-                let out = StripOutput {
-                    color,
-                    depth,
-                    width: viewport.width,
-                    first_row: rect.y0,
-                    background,
-                    mask,
-                };
-                if !out.any_wanted(&rect) {
-                    continue;
-                }
-                if bin.is_empty() {
-                    if !*known_background {
-                        out.fill_background(&rect);
-                        *known_background = true;
+        .map_init(
+            // Once per rayon job, not per tile row: the buffers keep their grown capacity.
+            || (TileBuffers::default(), shader.scratch()),
+            |(tile, scratch), (ty, ((color, depth), known_background))| {
+                let mut counts = (0, 0);
+                let mask = target
+                    .mask
+                    .map(|m| &m[ty * strip..ty * strip + color.len()]);
+                for (tx, known_background) in (0..bins.tiles_x).zip(known_background) {
+                    let rect = TileBins::tile_rect(viewport, tx, ty as u32);
+                    let bin = &bins.bins[(ty as u32 * bins.tiles_x + tx) as usize];
+                    let out = StripOutput {
+                        color,
+                        depth,
+                        width: viewport.width,
+                        first_row: rect.y0,
+                        background,
+                        mask,
+                    };
+                    if !out.any_wanted(&rect) {
+                        continue;
                     }
-                    continue;
+                    if bin.is_empty() {
+                        if !*known_background {
+                            out.fill_background(&rect);
+                            *known_background = true;
+                        }
+                        continue;
+                    }
+                    tile.resolve_visibility(&triangles, bin, &rect);
+                    let (shaded, flattened) = tile.shade(&triangles, &frame, scratch, &rect, out);
+                    *known_background = shaded == 0 && mask.is_none();
+                    counts = (counts.0 + shaded, counts.1 + flattened);
                 }
-                tile.resolve_visibility(&triangles, bin, &rect);
-                let (shaded, flattened) = tile.shade(&triangles, &frame, &mut scratch, &rect, out);
-                *known_background = shaded == 0 && mask.is_none();
-                counts = (counts.0 + shaded, counts.1 + flattened);
-            }
-            counts
-        })
+                counts
+            },
+        )
         .reduce(|| (0, 0), |a, b| (a.0 + b.0, a.1 + b.1));
     FrameStats {
         triangles: prepared.triangle_count(),

@@ -124,7 +124,11 @@ impl AxisTaps {
         index: impl Fn(i32, i32) -> i32,
     ) {
         let (texels, n) = (n as f32, n as i32);
-        let taps = self.first.iter_mut().zip(&mut self.second).zip(&mut self.weight);
+        let taps = self
+            .first
+            .iter_mut()
+            .zip(&mut self.second)
+            .zip(&mut self.weight);
         for (((first, second), weight), &s) in taps.zip(coords) {
             let x = reduce(s) * texels - 0.5;
             let x0 = floor(x);
