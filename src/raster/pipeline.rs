@@ -131,11 +131,17 @@ pub fn frame_objects<'a>(prepared: &'a PreparedScene, camera: &Camera) -> Vec<Fr
 /// Transforms, culls, clips and sets up every triangle of the scene, in submission order.
 pub fn screen_triangles(objects: &[FrameObject], target: &RenderTarget) -> Vec<ScreenTriangle> {
     let view_projection = target.view_projection();
-    objects
-        .iter()
-        .enumerate()
-        .flat_map(|(index, object)| object_triangles(object, index as u32, target, view_projection))
-        .collect()
+    let mut all: Vec<ScreenTriangle> = Vec::new();
+    for (index, object) in objects.iter().enumerate() {
+        let mut triangles = object_triangles(object, index as u32, target, view_projection);
+        // Moved, not copied triangle by triangle: they are large and there are many.
+        if all.is_empty() {
+            all = triangles;
+        } else {
+            all.append(&mut triangles);
+        }
+    }
+    all
 }
 
 /// Renders a frame with any fragment program into a new framebuffer.
