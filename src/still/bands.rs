@@ -35,18 +35,33 @@ pub struct BandJob<'a, S> {
 /// Memory reused from band to band.
 pub struct BandBuffers {
     pass: Framebuffer,
-    /// The resolved band: linear RGB, row-major.
-    pub resolved: Vec<Vec3>,
+    /// The weighted sum of the band's passes: linear RGB, row-major. Unused when the band is
+    /// one full pass, which is its own result (and fresh memory costs a page fault a page).
+    sum: Vec<Vec3>,
     /// Adaptive supersampling: the pixels that get every sample.
     mask: Vec<bool>,
+    /// Whether the last band was one full pass, left in `pass`.
+    single_pass: bool,
 }
 
 impl Default for BandBuffers {
     fn default() -> Self {
         BandBuffers {
             pass: Framebuffer::new(0, 0, Vec3::ZERO),
-            resolved: Vec::new(),
+            sum: Vec::new(),
             mask: Vec::new(),
+            single_pass: false,
+        }
+    }
+}
+
+impl BandBuffers {
+    /// The last band rendered, resolved: linear RGB, row-major.
+    pub fn resolved(&self) -> &[Vec3] {
+        if self.single_pass {
+            self.pass.color()
+        } else {
+            &self.sum
         }
     }
 }
@@ -63,7 +78,7 @@ impl<S: FragmentShader> BandJob<'_, S> {
         self.supersampling.offsets().len() + usize::from(self.adaptive_threshold().is_some())
     }
 
-    /// Renders rows `rows` into `buffers.resolved`, one pass per sample, calling `on_pass`
+    /// Renders rows `rows` into `buffers` (read back with `resolved`), one pass per sample, calling `on_pass`
     /// after each. `keep_going` is asked before every pass; when it says no, the band is
     /// abandoned and `None` returned.
     pub fn render(
@@ -79,12 +94,6 @@ impl<S: FragmentShader> BandJob<'_, S> {
         };
         let offsets = self.supersampling.offsets();
         let weight = 1.0 / offsets.len() as f32;
-        buffers.resolved.clear();
-        buffers.resolved.resize(
-            viewport.width as usize * viewport.height as usize,
-            Vec3::ZERO,
-        );
-        let mut stats = FrameStats::default();
         let target = |offset, footprint, mask| RenderTarget {
             window: ImageWindow {
                 full: self.full,
@@ -96,6 +105,22 @@ impl<S: FragmentShader> BandJob<'_, S> {
             mask,
             ..RenderTarget::new(self.camera, viewport).with_interpolation(self.interpolation)
         };
+        buffers.single_pass = offsets.len() == 1 && self.adaptive_threshold().is_none();
+        if buffers.single_pass {
+            if !keep_going() {
+                return None;
+            }
+            let target = target(offsets[0], self.supersampling.footprint(), None);
+            let stats = render_into(self.prepared, &target, self.shader, &mut buffers.pass);
+            on_pass();
+            return Some(stats);
+        }
+        buffers.sum.clear();
+        buffers.sum.resize(
+            viewport.width as usize * viewport.height as usize,
+            Vec3::ZERO,
+        );
+        let mut stats = FrameStats::default();
         let mut mask = std::mem::take(&mut buffers.mask);
         if let Some(threshold) = self.adaptive_threshold() {
             if !keep_going() {
@@ -114,12 +139,7 @@ impl<S: FragmentShader> BandJob<'_, S> {
                 let n = mask.len();
                 mask[n - width..].fill(true);
             }
-            for ((sum, c), &marked) in buffers
-                .resolved
-                .iter_mut()
-                .zip(buffers.pass.color())
-                .zip(&mask)
-            {
+            for ((sum, c), &marked) in buffers.sum.iter_mut().zip(buffers.pass.color()).zip(&mask) {
                 *sum = if marked { Vec3::ZERO } else { *c };
             }
             on_pass();
@@ -135,7 +155,7 @@ impl<S: FragmentShader> BandJob<'_, S> {
             let target = target(offset, self.supersampling.footprint(), only);
             let pass = render_into(self.prepared, &target, self.shader, &mut buffers.pass);
             stats = add_stats(stats, pass);
-            let (sums, colors) = (&mut buffers.resolved, buffers.pass.color());
+            let (sums, colors) = (&mut buffers.sum, buffers.pass.color());
             match only {
                 None => (sums.iter_mut().zip(colors)).for_each(|(sum, c)| *sum += *c * weight),
                 Some(_) => marked.iter().for_each(|&i| sums[i] += colors[i] * weight),
@@ -165,12 +185,16 @@ pub fn render_supersampled<S: FragmentShader>(
     let stats = job
         .render(0..job.full.height, buffers, &|| true, &mut || {})
         .expect("never cancelled");
-    let framebuffer = Framebuffer::from_parts(
-        job.full.width,
-        job.full.height,
-        std::mem::take(&mut buffers.resolved),
-        buffers.pass.take_depth(),
-    );
+    let framebuffer = if buffers.single_pass {
+        std::mem::replace(&mut buffers.pass, Framebuffer::new(0, 0, Vec3::ZERO))
+    } else {
+        Framebuffer::from_parts(
+            job.full.width,
+            job.full.height,
+            std::mem::take(&mut buffers.sum),
+            buffers.pass.take_depth(),
+        )
+    };
     (framebuffer, stats)
 }
 

@@ -2,7 +2,7 @@
 //! light happens here, after the samples are resolved.
 
 use super::bands::{BandBuffers, BandJob, band_rows};
-use crate::raster::{FragmentShader, FrameStats, linear_to_srgb8};
+use crate::raster::{FragmentShader, FrameStats, TILE_SIZE, linear_to_srgb8};
 use rayon::prelude::*;
 
 /// Where finished rows go (a PNG or PPM encoder): 3 bytes per pixel, top row first.
@@ -46,8 +46,12 @@ pub fn stream_still<S: FragmentShader>(
         stats.fragments += band.fragments;
         stats.flattened += band.flattened;
         stats.rasterized_triangles += band.rasterized_triangles;
-        to_srgb_bytes(&buffers.resolved, &mut bytes);
-        sink.write_rows(&bytes).map_err(StillStop::Write)?;
+        // A tile's height of rows at a time: the 8-bit copy stays small and in cache.
+        let rows = job.full.width as usize * TILE_SIZE as usize;
+        for linear in buffers.resolved().chunks(rows) {
+            to_srgb_bytes(linear, &mut bytes);
+            sink.write_rows(&bytes).map_err(StillStop::Write)?;
+        }
     }
     Ok(stats)
 }
