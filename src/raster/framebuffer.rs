@@ -84,8 +84,8 @@ impl Framebuffer {
         }
         self.width = width;
         self.height = height;
-        self.color.resize(n, Vec3::ZERO);
-        self.depth.resize(n, f32::INFINITY);
+        resize_unspecified(&mut self.color, n);
+        resize_unspecified(&mut self.depth, n);
     }
 
     /// For a render in tiles of a `grid` (tiles across, down) over a `background`: colour,
@@ -114,6 +114,18 @@ impl Framebuffer {
             .iter()
             .map(|c| c.to_array().map(linear_to_srgb8))
             .collect()
+    }
+}
+
+/// Makes `values` `n` long with contents left to the next render. Growing past its capacity takes
+/// fresh zeroed memory, which the system maps on first touch: the render's parallel tiles then
+/// take those page faults instead of one thread filling the whole buffer beforehand (for a
+/// 1080p still that fill was most of the time spent outside shading).
+fn resize_unspecified<T: bytemuck::Zeroable + Clone>(values: &mut Vec<T>, n: usize) {
+    if n > values.capacity() {
+        *values = bytemuck::allocation::zeroed_vec(n);
+    } else {
+        values.resize(n, T::zeroed());
     }
 }
 
