@@ -495,12 +495,62 @@ fn group_by_object(
     for o in 0..objects {
         starts[o + 1] += starts[o];
     }
-    let mut next = starts.clone();
     order.clear();
+    let one_object = fragments.first().is_some_and(|first| {
+        let o = first.object as usize;
+        starts[o + 1] - starts[o] == fragments.len()
+    });
+    if one_object {
+        // Most batches (a tile's visible pixels) see one object: already in order.
+        order.extend(0..fragments.len() as u32);
+        return;
+    }
+    let mut next = starts.clone();
     order.resize(fragments.len(), 0);
     for (i, f) in fragments.iter().enumerate() {
         let slot = &mut next[f.object as usize];
         order[*slot] = i as u32;
         *slot += 1;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn fragments_of(objects: &[u32]) -> Vec<Fragment> {
+        objects
+            .iter()
+            .map(|&object| Fragment {
+                object,
+                ..Fragment::default()
+            })
+            .collect()
+    }
+
+    /// `order` must list every fragment once, object by object as `starts` says, each object's
+    /// fragments in their original order.
+    fn assert_grouped(objects: &[u32], count: usize) {
+        let fragments = fragments_of(objects);
+        let (mut order, mut starts) = (vec![7; 3], vec![9]);
+        group_by_object(&fragments, count, &mut order, &mut starts);
+        assert_eq!(starts.len(), count + 1);
+        assert_eq!((starts[0], starts[count]), (0, objects.len()));
+        for o in 0..count {
+            let group = &order[starts[o]..starts[o + 1]];
+            let expected: Vec<u32> = (0..objects.len() as u32)
+                .filter(|&i| objects[i as usize] == o as u32)
+                .collect();
+            assert_eq!(group, expected, "object {o} of {objects:?}");
+        }
+    }
+
+    #[test]
+    fn fragments_are_grouped_by_object_in_order() {
+        assert_grouped(&[], 2);
+        assert_grouped(&[0, 0, 0], 1);
+        assert_grouped(&[1, 1, 1, 1], 3);
+        assert_grouped(&[1, 0, 2, 0, 1, 1], 3);
+        assert_grouped(&[2, 2, 0], 4);
     }
 }
