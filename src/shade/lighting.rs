@@ -98,6 +98,39 @@ pub fn blinn_phong_many(
     normals: &[Vec3],
     out: &mut [Vec3],
 ) {
+    #[cfg(target_arch = "x86_64")]
+    if std::is_x86_feature_detected!("avx2") {
+        // SAFETY: the CPU has just been seen to support AVX2.
+        unsafe { blinn_phong_many_avx2(lights, material, colors, points, normals, out) };
+        return;
+    }
+    blinn_phong_lanes(lights, material, colors, points, normals, out);
+}
+
+/// `blinn_phong_lanes` compiled for AVX2: eight f32 lanes per instruction instead of four, the
+/// same separate multiplies and adds (no FMA), so the same bits.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn blinn_phong_many_avx2(
+    lights: &FrameLights,
+    material: &Material,
+    colors: &[Vec3],
+    points: &[Vec3],
+    normals: &[Vec3],
+    out: &mut [Vec3],
+) {
+    blinn_phong_lanes(lights, material, colors, points, normals, out);
+}
+
+#[inline(always)]
+fn blinn_phong_lanes(
+    lights: &FrameLights,
+    material: &Material,
+    colors: &[Vec3],
+    points: &[Vec3],
+    normals: &[Vec3],
+    out: &mut [Vec3],
+) {
     let chunks = colors.chunks(LANES).zip(points.chunks(LANES));
     let chunks = chunks.zip(normals.chunks(LANES)).zip(out.chunks_mut(LANES));
     for (((colors, points), normals), out) in chunks {
@@ -146,6 +179,7 @@ fn light_terms(n: Vec3, to_light: Vec3, to_eye: Vec3) -> (f32, f32) {
 }
 
 /// `power` on every lane, squaring for all lanes at once.
+#[inline(always)]
 fn power_lanes(x: &mut [f32; LANES], exponent: f32) {
     if !is_whole_power(exponent) {
         x.iter_mut().for_each(|x| *x = x.powf(exponent));
@@ -170,6 +204,7 @@ struct Lanes {
 }
 
 impl Lanes {
+    #[inline(always)]
     fn splat(v: Vec3) -> Lanes {
         Lanes {
             x: [v.x; LANES],
@@ -179,6 +214,7 @@ impl Lanes {
     }
 
     /// Up to `LANES` vectors; the lanes past the end hold zero.
+    #[inline(always)]
     fn load(vectors: &[Vec3]) -> Lanes {
         let mut lanes = Lanes::splat(Vec3::ZERO);
         for (k, v) in vectors.iter().enumerate() {
@@ -187,6 +223,7 @@ impl Lanes {
         lanes
     }
 
+    #[inline(always)]
     fn from_fn(f: impl Fn(usize) -> Vec3) -> Lanes {
         let mut lanes = Lanes::splat(Vec3::ZERO);
         for k in 0..LANES {
@@ -291,15 +328,27 @@ mod tests {
                 shininess,
                 ..material()
             };
+            // The dispatching entry (the AVX2 build where the CPU has it) and the portable build.
             let mut batch = vec![Vec3::NAN; n];
             blinn_phong_many(&lights, &material, &colors, &points, &normals, &mut batch);
+            let mut portable = vec![Vec3::NAN; n];
+            blinn_phong_lanes(
+                &lights,
+                &material,
+                &colors,
+                &points,
+                &normals,
+                &mut portable,
+            );
             for k in 0..n {
                 let one = blinn_phong(&lights, &material, colors[k], points[k], normals[k]);
-                assert_eq!(
-                    batch[k].to_array().map(f32::to_bits),
-                    one.to_array().map(f32::to_bits),
-                    "fragment {k} at shininess {shininess}"
-                );
+                for (lit, build) in [(batch[k], "dispatched"), (portable[k], "portable")] {
+                    assert_eq!(
+                        lit.to_array().map(f32::to_bits),
+                        one.to_array().map(f32::to_bits),
+                        "fragment {k} at shininess {shininess}, {build} batch"
+                    );
+                }
             }
         }
     }
