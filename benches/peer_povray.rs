@@ -68,25 +68,8 @@ fn main() {
         SIZE.1,
         runs()
     );
-    let povray = |antialias: &str| {
-        Timing::measure(0, runs(), || {
-            let status = Command::new("povray")
-                .args([
-                    &format!("+W{}", SIZE.0),
-                    &format!("+H{}", SIZE.1),
-                    antialias,
-                ])
-                .args(["-D", "-GA", "+Opov.png", "peer.pov"])
-                .current_dir(&dir)
-                .output()
-                .expect("povray runs");
-            assert!(
-                status.status.success(),
-                "{}",
-                String::from_utf8_lossy(&status.stderr)
-            );
-        })
-    };
+    let povray =
+        |antialias: &str| Timing::measure(0, runs(), || run_povray(&dir, &[antialias], "pov.png"));
     let ours = |samples: u32, adaptive: Option<f32>| {
         let settings = settings(samples, adaptive);
         let recipe = Recipe::capture(
@@ -187,26 +170,28 @@ impl ChannelError {
     }
 }
 
+/// Renders `peer.pov` in `dir` at `SIZE` with `options` into `out`, without a window.
+fn run_povray(dir: &std::path::Path, options: &[&str], out: &str) {
+    let status = Command::new("povray")
+        .args([&format!("+W{}", SIZE.0), &format!("+H{}", SIZE.1)])
+        .args(options)
+        .args(["-D", "-GA", &format!("+O{out}"), "peer.pov"])
+        .current_dir(dir)
+        .output()
+        .expect("povray runs");
+    assert!(
+        status.status.success(),
+        "{}",
+        String::from_utf8_lossy(&status.stderr)
+    );
+}
+
 /// POV-Ray's `+A0.3` frame against its `+A0.0` one, which supersamples every pixel that differs
 /// from a neighbour at all. Both without jitter (`-J`), so a pixel supersampled in both is
 /// sampled at the same points and the difference is the adaptive choice alone.
 fn povray_error(dir: &std::path::Path) -> ChannelError {
     let render = |antialias: &str, out: &str| {
-        let status = Command::new("povray")
-            .args([
-                &format!("+W{}", SIZE.0),
-                &format!("+H{}", SIZE.1),
-                antialias,
-            ])
-            .args(["-J", "-D", "-GA", &format!("+O{out}"), "peer.pov"])
-            .current_dir(dir)
-            .output()
-            .expect("povray runs");
-        assert!(
-            status.status.success(),
-            "{}",
-            String::from_utf8_lossy(&status.stderr)
-        );
+        run_povray(dir, &[antialias, "-J"], out);
         let image = image::open(dir.join(out)).expect("POV-Ray's PNG").to_rgb8();
         image.pixels().map(|p| p.0).collect::<Vec<[u8; 3]>>()
     };
