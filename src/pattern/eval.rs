@@ -215,6 +215,8 @@ fn run_instrs_avx2<T: Lane>(instrs: &[Instr], n: usize, slots: &mut [f64]) {
     run_instrs_here::<T>(instrs, n, slots);
 }
 
+/// The instruction loop, inlined into each caller so its lane loops are compiled for that
+/// caller's SIMD width.
 #[inline(always)]
 fn run_instrs_here<T: Lane>(instrs: &[Instr], n: usize, slots: &mut [f64]) {
     for instr in instrs {

@@ -89,7 +89,8 @@ const LANES: usize = 64;
 /// `blinn_phong` for a batch: `out[k]` lights `colors[k]` at `points[k]` with `normals[k]`.
 /// The same arithmetic in the same order (so the same colours to the bit), rearranged as
 /// structure-of-arrays loops over lanes of fragments, one light at a time, which the compiler
-/// turns into SIMD: the normalisations and the highlight's power run four fragments at once.
+/// turns into SIMD: the normalisations and the highlight's power run four fragments at once
+/// (eight where the CPU has AVX2).
 pub fn blinn_phong_many(
     lights: &FrameLights,
     material: &Material,
@@ -122,6 +123,7 @@ fn blinn_phong_many_avx2(
     blinn_phong_lanes(lights, material, colors, points, normals, out);
 }
 
+/// The batch loops, inlined into each caller so they are compiled for its SIMD width.
 #[inline(always)]
 fn blinn_phong_lanes(
     lights: &FrameLights,
