@@ -159,7 +159,7 @@ impl Surface {
 /// see, |x| < 2^15) and both come from the Cephes minimax polynomials on [−π/4, π/4]. Within
 /// 2.5e-7 of the exact values (about 2 ulp at 1): the frame stays exact to f32 rounding, at a
 /// third of the instructions (the sphere's frame was two `sinf` and two `cosf` per fragment).
-#[inline]
+#[inline(always)]
 pub fn sin_cos(x: f32) -> (f32, f32) {
     const PIO2_1: f32 = 1.570_312_5;
     const PIO2_2: f32 = 4.837_513e-4;
