@@ -11,6 +11,7 @@ pub mod raster;
 pub mod reference;
 pub mod scene;
 pub mod shade;
+mod simd;
 pub mod still;
 pub mod surface;
 pub mod term;

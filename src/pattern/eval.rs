@@ -198,25 +198,14 @@ pub(crate) fn run<T: Lane>(program: &Program, n: usize, slots: &mut [f64]) {
 }
 
 fn run_instrs<T: Lane>(instrs: &[Instr], n: usize, slots: &mut [f64]) {
-    #[cfg(target_arch = "x86_64")]
-    if std::is_x86_feature_detected!("avx2") {
-        // SAFETY: the CPU has just been seen to support AVX2.
-        unsafe { run_instrs_avx2::<T>(instrs, n, slots) };
-        return;
-    }
-    run_instrs_here::<T>(instrs, n, slots);
+    crate::simd::widest(
+        #[inline(always)]
+        || run_instrs_here::<T>(instrs, n, slots),
+    );
 }
 
-/// The same instructions with the lane loops compiled for AVX2: four f64 lanes per instruction
-/// instead of SSE2's two. Separate IEEE multiplies and adds as before (no FMA), so the same bits.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-fn run_instrs_avx2<T: Lane>(instrs: &[Instr], n: usize, slots: &mut [f64]) {
-    run_instrs_here::<T>(instrs, n, slots);
-}
-
-/// The instruction loop, inlined into each caller so its lane loops are compiled for that
-/// caller's SIMD width.
+/// The instruction loop, inlined into `run_instrs`'s call so its lane loops are compiled for
+/// the widest SIMD the CPU has.
 #[inline(always)]
 fn run_instrs_here<T: Lane>(instrs: &[Instr], n: usize, slots: &mut [f64]) {
     for instr in instrs {

@@ -99,31 +99,14 @@ pub fn blinn_phong_many(
     normals: &[Vec3],
     out: &mut [Vec3],
 ) {
-    #[cfg(target_arch = "x86_64")]
-    if std::is_x86_feature_detected!("avx2") {
-        // SAFETY: the CPU has just been seen to support AVX2.
-        unsafe { blinn_phong_many_avx2(lights, material, colors, points, normals, out) };
-        return;
-    }
-    blinn_phong_lanes(lights, material, colors, points, normals, out);
+    crate::simd::widest(
+        #[inline(always)]
+        || blinn_phong_lanes(lights, material, colors, points, normals, out),
+    );
 }
 
-/// `blinn_phong_lanes` compiled for AVX2: eight f32 lanes per instruction instead of four, the
-/// same separate multiplies and adds (no FMA), so the same bits.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-fn blinn_phong_many_avx2(
-    lights: &FrameLights,
-    material: &Material,
-    colors: &[Vec3],
-    points: &[Vec3],
-    normals: &[Vec3],
-    out: &mut [Vec3],
-) {
-    blinn_phong_lanes(lights, material, colors, points, normals, out);
-}
-
-/// The batch loops, inlined into each caller so they are compiled for its SIMD width.
+/// The batch loops, inlined into `blinn_phong_many`'s call so they are compiled for the widest
+/// SIMD the CPU has.
 #[inline(always)]
 fn blinn_phong_lanes(
     lights: &FrameLights,

@@ -242,7 +242,8 @@ impl LitShader {
                         texture.footprints.push(footprint);
                     }
                 });
-                reset(&mut texture.texels, group.len(), Texel::ZERO);
+                // Every texel is written by the sampler: resized, not cleared.
+                texture.texels.resize(group.len(), Texel::ZERO);
                 let (st, footprints) = (&texture.st, &texture.footprints);
                 image
                     .texture

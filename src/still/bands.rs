@@ -78,9 +78,9 @@ impl<S: FragmentShader> BandJob<'_, S> {
         self.supersampling.offsets().len() + usize::from(self.adaptive_threshold().is_some())
     }
 
-    /// Renders rows `rows` into `buffers` (read back with `resolved`), one pass per sample, calling `on_pass`
-    /// after each. `keep_going` is asked before every pass; when it says no, the band is
-    /// abandoned and `None` returned.
+    /// Renders rows `rows` into `buffers` (read back with `resolved`), one pass per sample,
+    /// calling `on_pass` after each. `keep_going` is asked before every pass; when it says no,
+    /// the band is abandoned and `None` returned.
     pub fn render(
         &self,
         rows: Range<u32>,

@@ -73,24 +73,14 @@ const CHUNK: usize = 64;
 
 /// sin φ, cos φ, sin θ, cos θ of a chunk of (u, v), in that order.
 fn chunk_angles(u: &[f32; CHUNK], v: &[f32; CHUNK], angles: &mut [[f32; CHUNK]; 4]) {
-    #[cfg(target_arch = "x86_64")]
-    if std::is_x86_feature_detected!("avx2") {
-        // SAFETY: the CPU has just been seen to support AVX2.
-        unsafe { chunk_angles_avx2(u, v, angles) };
-        return;
-    }
-    chunk_angles_here(u, v, angles);
+    crate::simd::widest(
+        #[inline(always)]
+        || chunk_angles_here(u, v, angles),
+    );
 }
 
-/// `chunk_angles` compiled for AVX2: eight lanes per instruction instead of four, no FMA, so
-/// the same bits.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-fn chunk_angles_avx2(u: &[f32; CHUNK], v: &[f32; CHUNK], angles: &mut [[f32; CHUNK]; 4]) {
-    chunk_angles_here(u, v, angles);
-}
-
-/// The loop, inlined into each caller so it is compiled for that caller's SIMD width.
+/// The loop, inlined into `chunk_angles`'s call so it is compiled for the widest SIMD the CPU
+/// has.
 #[inline(always)]
 fn chunk_angles_here(u: &[f32; CHUNK], v: &[f32; CHUNK], angles: &mut [[f32; CHUNK]; 4]) {
     let [sin_phi, cos_phi, sin_theta, cos_theta] = angles;
