@@ -21,37 +21,83 @@ impl PixelRect {
     }
 }
 
-/// Calls `covered(x, y)` for every pixel of `clip` whose centre the triangle covers, by stepping
-/// the three fixed-point edge functions incrementally along each row.
+/// One row of a triangle's bounds cut to a clip rectangle: pixels `x0..=x1` of row `y`, and the
+/// three fixed-point edge functions at the centre of pixel `x0`. Pixel `x0 + k` is covered when
+/// all three of `edges[i] + k·steps[i]` are non-negative (see `EdgeWalk`).
+#[derive(Clone, Copy, Debug)]
+pub struct RowSpan {
+    pub y: u32,
+    pub x0: u32,
+    pub x1: u32,
+    pub edges: EdgeWalk,
+}
+
+/// The edge functions at one pixel centre and their steps to the next pixel on the row.
+#[derive(Clone, Copy, Debug)]
+pub struct EdgeWalk {
+    pub at: [i64; 3],
+    pub steps: [i64; 3],
+}
+
+impl EdgeWalk {
+    /// Whether the current pixel centre is inside: all three edge functions non-negative (the
+    /// top-left bias is folded in). Branch-free, so row loops over it vectorise.
+    #[inline(always)]
+    pub fn inside(&self) -> bool {
+        (self.at[0] | self.at[1] | self.at[2]) >= 0
+    }
+
+    /// On to the next pixel of the row.
+    #[inline(always)]
+    pub fn advance(&mut self) {
+        for (at, step) in self.at.iter_mut().zip(self.steps) {
+            *at += step;
+        }
+    }
+}
+
+/// Calls `row` for every row of the triangle's bounds within `clip`, top to bottom, with the
+/// fixed-point edge functions stepped incrementally from row to row.
+#[inline(always)]
+pub fn triangle_rows(triangle: &ScreenTriangle, clip: &PixelRect, mut row: impl FnMut(RowSpan)) {
+    let Some(rect) = triangle.bounds.intersect(clip) else {
+        return;
+    };
+    let (skip_x, skip_y) = (
+        (rect.x0 - triangle.bounds.x0) as i64,
+        (rect.y0 - triangle.bounds.y0) as i64,
+    );
+    let mut at = triangle
+        .edges
+        .map(|e| e.at_origin + e.step_x * skip_x + e.step_y * skip_y);
+    let steps = triangle.edges.map(|e| e.step_x);
+    for y in rect.y0..=rect.y1 {
+        row(RowSpan {
+            y,
+            x0: rect.x0,
+            x1: rect.x1,
+            edges: EdgeWalk { at, steps },
+        });
+        for (at, e) in at.iter_mut().zip(&triangle.edges) {
+            *at += e.step_y;
+        }
+    }
+}
+
+/// Calls `covered(x, y)` for every pixel of `clip` whose centre the triangle covers.
 #[inline]
 pub fn scan_triangle(
     triangle: &ScreenTriangle,
     clip: &PixelRect,
     mut covered: impl FnMut(u32, u32),
 ) {
-    let Some(rect) = triangle.bounds.intersect(clip) else {
-        return;
-    };
-    let [e0, e1, e2] = triangle.edges;
-    let (skip_x, skip_y) = (
-        (rect.x0 - triangle.bounds.x0) as i64,
-        (rect.y0 - triangle.bounds.y0) as i64,
-    );
-    let row_start = |e: &super::setup::Edge| e.at_origin + e.step_x * skip_x + e.step_y * skip_y;
-    let (mut r0, mut r1, mut r2) = (row_start(&e0), row_start(&e1), row_start(&e2));
-    for y in rect.y0..=rect.y1 {
-        let (mut w0, mut w1, mut w2) = (r0, r1, r2);
-        for x in rect.x0..=rect.x1 {
-            // All three edge functions non-negative <=> the centre is inside (bias folded in).
-            if (w0 | w1 | w2) >= 0 {
-                covered(x, y);
+    triangle_rows(triangle, clip, |row| {
+        let mut edges = row.edges;
+        for x in row.x0..=row.x1 {
+            if edges.inside() {
+                covered(x, row.y);
             }
-            w0 += e0.step_x;
-            w1 += e1.step_x;
-            w2 += e2.step_x;
+            edges.advance();
         }
-        r0 += e0.step_y;
-        r1 += e1.step_y;
-        r2 += e2.step_y;
-    }
+    });
 }
