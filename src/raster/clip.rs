@@ -37,28 +37,43 @@ impl ClippedPolygon {
 /// right. The guard band keeps snapped screen coordinates inside the fixed-point range; triangles
 /// inside it (nearly all) are passed through untouched. Returns `None` when nothing is left.
 pub fn clip_triangle(triangle: [ClipVertex; 3], guard: f32) -> Option<ClippedPolygon> {
-    let planes: [fn(Vec4, f32) -> f32; 6] = [
-        |p, _| p.z,
-        |p, _| p.w - p.z,
-        |p, g| g * p.w - p.x,
-        |p, g| g * p.w + p.x,
-        |p, g| g * p.w - p.y,
-        |p, g| g * p.w + p.y,
-    ];
     let mut polygon = ClippedPolygon {
         vertices: [triangle[0]; MAX_CLIPPED_VERTICES],
         len: 3,
     };
     polygon.vertices[..3].copy_from_slice(&triangle);
     let mut untouched = true;
-    for plane in planes {
-        if untouched && triangle.iter().all(|v| plane(v.position, guard) >= 0.0) {
-            continue; // wholly inside this plane: the common case costs three comparisons
+    for plane in CLIP_PLANES {
+        if untouched && wholly_inside(&triangle, plane, guard) {
+            continue; // the common case costs three comparisons
         }
         polygon = clip_polygon(&polygon, |p| plane(p, guard))?;
         untouched = false;
     }
     Some(polygon)
+}
+
+/// Whether clipping would return the triangle unchanged (as nearly all triangles are): callers
+/// can then skip building a polygon.
+pub fn needs_no_clipping(triangle: &[ClipVertex; 3], guard: f32) -> bool {
+    CLIP_PLANES
+        .iter()
+        .all(|&plane| wholly_inside(triangle, plane, guard))
+}
+
+/// Signed distances of a clip-space point to the planes, non-negative inside; `guard` is the
+/// guard band's half-width.
+const CLIP_PLANES: [fn(Vec4, f32) -> f32; 6] = [
+    |p, _| p.z,
+    |p, _| p.w - p.z,
+    |p, g| g * p.w - p.x,
+    |p, g| g * p.w + p.x,
+    |p, g| g * p.w - p.y,
+    |p, g| g * p.w + p.y,
+];
+
+fn wholly_inside(triangle: &[ClipVertex; 3], plane: fn(Vec4, f32) -> f32, guard: f32) -> bool {
+    triangle.iter().all(|v| plane(v.position, guard) >= 0.0)
 }
 
 /// One Sutherland–Hodgman pass: keeps the part of the polygon where `distance ≥ 0`.
@@ -107,6 +122,7 @@ mod tests {
         ];
         let p = clip_triangle(tri, 4.0).unwrap();
         assert_eq!(p.as_slice(), &tri);
+        assert!(needs_no_clipping(&tri, 4.0));
     }
 
     #[test]
@@ -116,6 +132,7 @@ mod tests {
             vertex(0.5, 0.0, 1.0, 2.0),
             vertex(0.0, 0.5, 1.0, 2.0),
         ];
+        assert!(!needs_no_clipping(&tri, 4.0));
         let p = clip_triangle(tri, 4.0).unwrap();
         assert_eq!(p.len, 4);
         for v in p.as_slice() {

@@ -1,6 +1,6 @@
 use super::bin::{TILE_SIZE, TileBins};
 use super::camera::Camera;
-use super::clip::{ClipVertex, clip_triangle};
+use super::clip::{ClipVertex, clip_triangle, needs_no_clipping};
 use super::fragment::{FragmentShader, FrameObject};
 use super::framebuffer::Framebuffer;
 use super::setup::{ScreenTriangle, TrianglePlanes, Viewport};
@@ -239,38 +239,72 @@ fn object_triangles(
     target: &RenderTarget,
     view_projection: Mat4,
 ) -> Vec<ScreenTriangle> {
-    let (camera, viewport, interpolation) = (target.camera, target.viewport, target.interpolation);
     let mesh = &object.prepared.mesh;
-    let clip_positions: Vec<Vec4> = mesh
-        .positions
+    let setup = ObjectSetup {
+        object,
+        index,
+        clip_positions: mesh
+            .positions
+            .par_iter()
+            .map(|&p| view_projection * (object.origin + p).extend(1.0))
+            .collect(),
+        cull_back_faces: object.prepared.surface.encloses(target.camera.eye) == Some(true),
+        viewport: target.viewport,
+        interpolation: target.interpolation,
+        guard: target.viewport.guard_band(),
+    };
+    // Each piece pushes straight into its own list and the lists are joined in order: a
+    // flattening iterator moved every clipped polygon (over 200 bytes) several times.
+    let pieces: Vec<Vec<ScreenTriangle>> = mesh
+        .indices
         .par_iter()
-        .map(|&p| view_projection * (object.origin + p).extend(1.0))
-        .collect();
-    let cull_back_faces = object.prepared.surface.encloses(camera.eye) == Some(true);
-    let guard = viewport.guard_band();
-    mesh.indices
-        .par_iter()
-        .flat_map_iter(|tri| {
-            let corners = tri.map(|i| mesh.positions[i as usize]);
-            let facing_away = (corners[1] - corners[0])
-                .cross(corners[2] - corners[0])
-                .dot(object.origin + corners[0])
-                >= 0.0;
-            let vertices = tri.map(|i| ClipVertex {
-                position: clip_positions[i as usize],
-                uv: mesh.uvs[i as usize],
-            });
-            let visible = !(cull_back_faces && facing_away);
-            let planes = visible
-                .then(|| TrianglePlanes::new(&vertices, viewport, interpolation))
-                .flatten();
-            let clipped = planes.and_then(|planes| Some((planes, clip_triangle(vertices, guard)?)));
-            clipped.into_iter().flat_map(move |(planes, polygon)| {
-                let v = polygon.vertices;
-                (1..polygon.len - 1).filter_map(move |k| {
-                    ScreenTriangle::new([v[0], v[k], v[k + 1]], viewport, &planes, index)
-                })
-            })
+        .fold(Vec::new, |mut out, triangle| {
+            setup.push(triangle, &mut out);
+            out
         })
-        .collect()
+        .collect();
+    pieces.concat()
+}
+
+/// What setting up one object's triangles for a frame needs.
+struct ObjectSetup<'a> {
+    object: &'a FrameObject<'a>,
+    index: u32,
+    clip_positions: Vec<Vec4>,
+    cull_back_faces: bool,
+    viewport: Viewport,
+    interpolation: Interpolation,
+    guard: f32,
+}
+
+impl ObjectSetup<'_> {
+    /// Culls, clips and sets up the mesh triangle `corners`, pushing what is left onto `out`.
+    fn push(&self, corners: &[u32; 3], out: &mut Vec<ScreenTriangle>) {
+        let mesh = &self.object.prepared.mesh;
+        if self.cull_back_faces {
+            let p = corners.map(|i| mesh.positions[i as usize]);
+            let facing_away = (p[1] - p[0])
+                .cross(p[2] - p[0])
+                .dot(self.object.origin + p[0])
+                >= 0.0;
+            if facing_away {
+                return;
+            }
+        }
+        let vertices = corners.map(|i| ClipVertex {
+            position: self.clip_positions[i as usize],
+            uv: mesh.uvs[i as usize],
+        });
+        let Some(planes) = TrianglePlanes::new(&vertices, self.viewport, self.interpolation) else {
+            return;
+        };
+        let screen =
+            |v: [ClipVertex; 3]| ScreenTriangle::new(v, self.viewport, &planes, self.index);
+        if needs_no_clipping(&vertices, self.guard) {
+            out.extend(screen(vertices));
+        } else if let Some(polygon) = clip_triangle(vertices, self.guard) {
+            let v = polygon.as_slice();
+            out.extend((1..v.len() - 1).filter_map(|k| screen([v[0], v[k], v[k + 1]])));
+        }
+    }
 }
