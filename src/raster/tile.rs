@@ -17,7 +17,8 @@ pub struct TileBuffers {
     triangle: Vec<u32>,
     /// The batch being shaded, and where each of its fragments goes.
     fragments: Vec<Fragment>,
-    pixels: Vec<u32>,
+    /// The framebuffer pixels of the batch's fragments, as runs along rows.
+    visible_runs: Vec<std::ops::Range<usize>>,
     colors: Vec<Vec3>,
 }
 
@@ -27,7 +28,7 @@ impl Default for TileBuffers {
             inv_w: vec![0.0; TILE_PIXELS],
             triangle: vec![NO_TRIANGLE; TILE_PIXELS],
             fragments: Vec::with_capacity(TILE_PIXELS),
-            pixels: Vec::with_capacity(TILE_PIXELS),
+            visible_runs: Vec::with_capacity(TILE_PIXELS),
             colors: Vec::with_capacity(TILE_PIXELS),
         }
     }
@@ -56,10 +57,6 @@ impl StripOutput<'_> {
         })
     }
 
-    #[inline]
-    fn wanted(&self, pixel: usize) -> bool {
-        self.mask.is_none_or(|mask| mask[pixel])
-    }
 
     pub fn fill_background(self, rect: &PixelRect) {
         for y in rect.y0..=rect.y1 {
@@ -121,26 +118,32 @@ impl TileBuffers {
         out: StripOutput,
     ) -> (usize, usize) {
         self.fragments.clear();
-        self.pixels.clear();
+        self.visible_runs.clear();
         for y in rect.y0..=rect.y1 {
-            for x in rect.x0..=rect.x1 {
-                let slot = ((y - rect.y0) * TILE_SIZE + (x - rect.x0)) as usize;
-                let pixel = ((y - out.first_row) * out.width + x) as usize;
-                if !out.wanted(pixel) {
-                    continue;
-                }
-                match self.triangle[slot] {
-                    NO_TRIANGLE => {
-                        out.color[pixel] = out.background;
-                        out.depth[pixel] = f32::INFINITY;
+            let slots = &self.triangle[((y - rect.y0) * TILE_SIZE) as usize..];
+            let row = ((y - out.first_row) * out.width) as usize;
+            let mask = out.mask;
+            let kind = |x: u32| PixelKind::of(mask, row + x as usize, slots[(x - rect.x0) as usize]);
+            let mut x = rect.x0;
+            while x <= rect.x1 {
+                let run = kind(x);
+                let end = (x + 1..=rect.x1).find(|&e| kind(e) != run).unwrap_or(rect.x1 + 1);
+                let pixels = row + x as usize..row + end as usize;
+                match run {
+                    PixelKind::Unwanted => {}
+                    PixelKind::Background => {
+                        fill_colour(&mut out.color[pixels.clone()], out.background);
+                        out.depth[pixels].fill(f32::INFINITY);
                     }
-                    index => {
-                        let t = &triangles[index as usize];
-                        self.fragments
-                            .push(fragment(t, x, y, frame.perspective, frame.footprint));
-                        self.pixels.push(pixel as u32);
+                    PixelKind::Visible => {
+                        self.fragments.extend((x..end).map(|x| {
+                            let t = &triangles[slots[(x - rect.x0) as usize] as usize];
+                            fragment(t, x, y, frame.perspective, frame.footprint)
+                        }));
+                        self.visible_runs.push(pixels);
                     }
                 }
+                x = end;
             }
         }
         self.colors.resize(self.fragments.len(), Vec3::ZERO);
@@ -148,13 +151,40 @@ impl TileBuffers {
             frame
                 .shader
                 .shade(frame.objects, &self.fragments, scratch, &mut self.colors);
-        for ((&pixel, fragment), &color) in
-            self.pixels.iter().zip(&self.fragments).zip(&self.colors)
-        {
-            out.color[pixel as usize] = color;
-            out.depth[pixel as usize] = fragment.depth;
+        let mut shaded = self.fragments.iter().zip(&self.colors);
+        for pixels in &self.visible_runs {
+            let colors = out.color[pixels.clone()].iter_mut();
+            for ((color, depth), (fragment, &shaded_color)) in
+                colors.zip(&mut out.depth[pixels.clone()]).zip(&mut shaded)
+            {
+                *color = shaded_color;
+                *depth = fragment.depth;
+            }
         }
         (self.fragments.len(), flattened)
+    }
+}
+
+/// What the tile does at a pixel; consecutive pixels of one kind are handled as a run.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum PixelKind {
+    /// Outside the render's mask: left as it is.
+    Unwanted,
+    Background,
+    Visible,
+}
+
+impl PixelKind {
+    /// At `pixel` of a strip with `mask`, whose nearest triangle is `triangle`.
+    #[inline]
+    fn of(mask: Option<&[bool]>, pixel: usize, triangle: u32) -> PixelKind {
+        if !mask.is_none_or(|mask| mask[pixel]) {
+            PixelKind::Unwanted
+        } else if triangle == NO_TRIANGLE {
+            PixelKind::Background
+        } else {
+            PixelKind::Visible
+        }
     }
 }
 

@@ -489,22 +489,21 @@ fn group_by_object(
     starts: &mut Vec<usize>,
 ) {
     starts.clear();
+    order.clear();
+    if let Some(object) = single_object(fragments) {
+        // Most batches (a tile's visible pixels) see one object: already in order. Counting
+        // them one by one was a chain of increments of one memory slot, ~4% of a frame.
+        let object = object as usize;
+        starts.extend((0..=objects).map(|o| if o <= object { 0 } else { fragments.len() }));
+        order.extend(0..fragments.len() as u32);
+        return;
+    }
     starts.resize(objects + 1, 0);
     for f in fragments {
         starts[f.object as usize + 1] += 1;
     }
     for o in 0..objects {
         starts[o + 1] += starts[o];
-    }
-    order.clear();
-    let one_object = fragments.first().is_some_and(|first| {
-        let o = first.object as usize;
-        starts[o + 1] - starts[o] == fragments.len()
-    });
-    if one_object {
-        // Most batches (a tile's visible pixels) see one object: already in order.
-        order.extend(0..fragments.len() as u32);
-        return;
     }
     let mut next = starts.clone();
     order.resize(fragments.len(), 0);
@@ -513,6 +512,15 @@ fn group_by_object(
         order[*slot] = i as u32;
         *slot += 1;
     }
+}
+
+/// The object of every fragment, when they all share one.
+fn single_object(fragments: &[Fragment]) -> Option<u32> {
+    let object = fragments.first()?.object;
+    fragments
+        .iter()
+        .all(|f| f.object == object)
+        .then_some(object)
 }
 
 #[cfg(test)]
