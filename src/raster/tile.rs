@@ -57,7 +57,6 @@ impl StripOutput<'_> {
         })
     }
 
-
     pub fn fill_background(self, rect: &PixelRect) {
         for y in rect.y0..=rect.y1 {
             let row = ((y - self.first_row) * self.width) as usize;
@@ -123,11 +122,14 @@ impl TileBuffers {
             let slots = &self.triangle[((y - rect.y0) * TILE_SIZE) as usize..];
             let row = ((y - out.first_row) * out.width) as usize;
             let mask = out.mask;
-            let kind = |x: u32| PixelKind::of(mask, row + x as usize, slots[(x - rect.x0) as usize]);
+            let kind =
+                |x: u32| PixelKind::of(mask, row + x as usize, slots[(x - rect.x0) as usize]);
             let mut x = rect.x0;
             while x <= rect.x1 {
                 let run = kind(x);
-                let end = (x + 1..=rect.x1).find(|&e| kind(e) != run).unwrap_or(rect.x1 + 1);
+                let end = (x + 1..=rect.x1)
+                    .find(|&e| kind(e) != run)
+                    .unwrap_or(rect.x1 + 1);
                 let pixels = row + x as usize..row + end as usize;
                 match run {
                     PixelKind::Unwanted => {}

@@ -151,17 +151,42 @@ impl LitShader {
         }
         let mut flattened = self.base_colors(object, fragments, group, scratch);
         flattened += self.bump_gradients(object, fragments, group, scratch);
-        scratch.points.clear();
-        scratch.normals.clear();
-        for (k, &i) in group.iter().enumerate() {
-            let fragment = &fragments[i as usize];
-            let frame = &scratch.frames[k];
+        self.lighting_inputs(object, fragments, group, scratch);
+        if self.mode == ViewMode::Shaded {
+            self.light(material, group, scratch, out);
+        } else {
+            for (k, &i) in group.iter().enumerate() {
+                // Without a bump there are no heights: the surface is at height 0.
+                let height = scratch.heights.get(k).copied().unwrap_or(0.0);
+                let normal = scratch.normals[k];
+                out[i as usize] = self.view_colour(&fragments[i as usize], normal, height);
+            }
+        }
+        flattened
+    }
+
+    /// Camera-relative points and facing (bumped) normals of the group, into `scratch.points`
+    /// and `scratch.normals`.
+    fn lighting_inputs(
+        &self,
+        object: &FrameObject,
+        fragments: &[Fragment],
+        group: &[u32],
+        scratch: &mut ShadeScratch,
+    ) {
+        let surface = &object.prepared.surface;
+        let bumped = object.prepared.material.bump.is_some();
+        let (points, normals) = (&mut scratch.points, &mut scratch.normals);
+        points.clear();
+        normals.clear();
+        for (k, (&i, frame)) in group.iter().zip(&scratch.frames).enumerate() {
             let p = object.origin + frame.p;
-            let (b, gradient) = (scratch.heights[k], scratch.gradients[k]);
-            let n = if material.bump.is_some() {
+            let n = if bumped {
+                let (b, gradient) = (scratch.heights[k], scratch.gradients[k]);
+                let uv = fragments[i as usize].uv;
                 bumped_normal(
                     surface,
-                    fragment.uv,
+                    uv,
                     frame,
                     b,
                     gradient.x,
@@ -171,37 +196,43 @@ impl LitShader {
             } else {
                 frame.n
             };
-            let n = n * facing_sign(p, frame.n);
-            out[i as usize] = match self.mode {
-                ViewMode::Shaded => {
-                    // Lit below, all of the group in one batch.
-                    scratch.points.push(p);
-                    scratch.normals.push(n);
-                    continue;
-                }
-                ViewMode::Height => Vec3::splat(0.5 + 0.5 * (b * 0.2).tanh()),
-                ViewMode::Normals => n * 0.5 + Vec3::splat(0.5),
-                ViewMode::Uv => (fragment.uv / 30.0).fract_gl().extend(0.0),
-                ViewMode::Depth => Vec3::splat((-fragment.depth / self.depth_scale).exp2()),
-            };
+            points.push(p);
+            normals.push(n * facing_sign(p, frame.n));
         }
-        if self.mode == ViewMode::Shaded {
-            let lit = &mut scratch.lit;
-            lit.resize(group.len(), Vec3::ZERO);
-            let (points, normals) = (&scratch.points, &scratch.normals);
-            blinn_phong_many(
-                &self.lights,
-                material,
-                &scratch.colors,
-                points,
-                normals,
-                lit,
-            );
-            for (&i, &color) in group.iter().zip(lit.iter()) {
-                out[i as usize] = color;
-            }
+    }
+
+    /// Lights the group in one batch into `out` (straight into it when the group's fragments
+    /// are consecutive, as a one-object batch's are).
+    fn light(
+        &self,
+        material: &crate::scene::Material,
+        group: &[u32],
+        scratch: &mut ShadeScratch,
+        out: &mut [Vec3],
+    ) {
+        let (colors, points, normals) = (&scratch.colors, &scratch.points, &scratch.normals);
+        if let Some(range) = consecutive(group) {
+            let out = &mut out[range];
+            blinn_phong_many(&self.lights, material, colors, points, normals, out);
+            return;
         }
-        flattened
+        let lit = &mut scratch.lit;
+        lit.resize(group.len(), Vec3::ZERO);
+        blinn_phong_many(&self.lights, material, colors, points, normals, lit);
+        for (&i, &color) in group.iter().zip(lit.iter()) {
+            out[i as usize] = color;
+        }
+    }
+
+    /// What a view mode other than `Shaded` shows at a fragment.
+    fn view_colour(&self, fragment: &Fragment, normal: Vec3, height: f32) -> Vec3 {
+        match self.mode {
+            ViewMode::Shaded => unreachable!("shaded fragments are lit as a batch"),
+            ViewMode::Height => Vec3::splat(0.5 + 0.5 * (height * 0.2).tanh()),
+            ViewMode::Normals => normal * 0.5 + Vec3::splat(0.5),
+            ViewMode::Uv => (fragment.uv / 30.0).fract_gl().extend(0.0),
+            ViewMode::Depth => Vec3::splat((-fragment.depth / self.depth_scale).exp2()),
+        }
     }
 
     /// The diffuse colour of each fragment of the group, into `scratch.colors`.
@@ -267,8 +298,8 @@ impl LitShader {
         scratch: &mut ShadeScratch,
     ) -> usize {
         let Some(bump) = &object.prepared.material.bump else {
-            reset(&mut scratch.heights, group.len(), 0.0);
-            reset(&mut scratch.gradients, group.len(), Vec2::ZERO);
+            scratch.heights.clear();
+            scratch.gradients.clear();
             return 0;
         };
         let gives_slope = matches!(&bump.source,
@@ -458,6 +489,13 @@ fn mapping_on<'a>(mapping: &'a Mapping, surface: &Surface, wrap_s: Wrap) -> Cow<
         }
         _ => Cow::Borrowed(mapping),
     }
+}
+
+/// The range `group` lists, when its indices are consecutive and ascending.
+fn consecutive(group: &[u32]) -> Option<std::ops::Range<usize>> {
+    let first = *group.first()?;
+    let ascending = (first..).zip(group).all(|(expected, &i)| i == expected);
+    ascending.then(|| first as usize..first as usize + group.len())
 }
 
 fn reset<T: Copy>(values: &mut Vec<T>, len: usize, value: T) {
