@@ -39,11 +39,14 @@ impl Sampler {
     ) {
         assert_eq!(st.len(), out.len(), "one output per point");
         match self.filter {
-            Filter::Bilinear if fits_taps(chain.base()) => {
-                for (st, out) in st.chunks(CHUNK).zip(out.chunks_mut(CHUNK)) {
-                    self.bilinear_chunk(chain.base(), st, out);
-                }
-            }
+            Filter::Bilinear if fits_taps(chain.base()) => crate::simd::widest(
+                #[inline(always)]
+                || {
+                    for (st, out) in st.chunks(CHUNK).zip(out.chunks_mut(CHUNK)) {
+                        self.bilinear_chunk(chain.base(), st, out);
+                    }
+                },
+            ),
             Filter::Bilinear => {
                 for (o, &p) in out.iter_mut().zip(st) {
                     *o = self.bilinear(chain.base(), p);
@@ -64,6 +67,7 @@ impl Sampler {
     }
 
     /// Bilinear samples of up to `CHUNK` points: taps first, then the gather.
+    #[inline(always)]
     fn bilinear_chunk<T: Blend>(&self, level: &Raster<T>, st: &[Vec2], out: &mut [T]) {
         let (width, height) = (level.width(), level.height());
         let mut across = AxisTaps::default();
@@ -101,6 +105,7 @@ impl Default for AxisTaps {
 
 impl AxisTaps {
     /// The taps of `coords` (at most `CHUNK`) on an axis of `n` texels; one loop per wrap mode.
+    #[inline(always)]
     fn fill(&mut self, wrap: Wrap, n: u32, coords: impl Iterator<Item = f32>) {
         let mut s = [0.0; CHUNK];
         for (s, c) in s.iter_mut().zip(coords) {
