@@ -176,10 +176,13 @@ impl LitShader {
     ) {
         let surface = &object.prepared.surface;
         let bumped = object.prepared.material.bump.is_some();
+        // Every point and normal is written below: resized, not cleared.
         let (points, normals) = (&mut scratch.points, &mut scratch.normals);
-        points.clear();
-        normals.clear();
-        for (k, (&i, frame)) in group.iter().zip(&scratch.frames).enumerate() {
+        points.resize(group.len(), Vec3::ZERO);
+        normals.resize(group.len(), Vec3::ZERO);
+        let frames = group.iter().zip(&scratch.frames);
+        let outputs = points.iter_mut().zip(normals);
+        for (k, ((&i, frame), (point, normal))) in frames.zip(outputs).enumerate() {
             let p = object.origin + frame.p;
             let n = if bumped {
                 let (b, gradient) = (scratch.heights[k], scratch.gradients[k]);
@@ -196,8 +199,8 @@ impl LitShader {
             } else {
                 frame.n
             };
-            points.push(p);
-            normals.push(n * facing_sign(p, frame.n));
+            *point = p;
+            *normal = n * facing_sign(p, frame.n);
         }
     }
 
@@ -245,10 +248,13 @@ impl LitShader {
     ) -> usize {
         let material = &object.prepared.material;
         scratch.colors.clear();
-        scratch.colors.resize(group.len(), material.color);
         match &material.texture {
-            None => 0,
+            None => {
+                scratch.colors.resize(group.len(), material.color);
+                0
+            }
             Some(Texturing::Pattern(binding)) => {
+                scratch.colors.resize(group.len(), material.color);
                 let at = Sites {
                     fragments,
                     group,
@@ -279,10 +285,12 @@ impl LitShader {
                 image
                     .texture
                     .sample_many(&image.sampler, st, footprints, &mut texture.texels);
-                for (color, texel) in scratch.colors.iter_mut().zip(&texture.texels) {
-                    // Premultiplied: where the image is transparent the material shows through.
-                    *color = texel.truncate() + material.color * (1.0 - texel.w);
-                }
+                // Premultiplied: where the image is transparent the material shows through.
+                let over_material =
+                    |texel: &Texel| texel.truncate() + material.color * (1.0 - texel.w);
+                scratch
+                    .colors
+                    .extend(texture.texels.iter().map(over_material));
                 0
             }
         }
