@@ -412,11 +412,14 @@ impl LitShader {
         group: &[u32],
         output: &mut BumpOutput,
     ) -> usize {
-        reset(output.heights, group.len(), 0.0);
-        reset(output.gradients, group.len(), Vec2::ZERO);
         let Some(bump) = &object.prepared.material.bump else {
+            reset(output.heights, group.len(), 0.0);
+            reset(output.gradients, group.len(), Vec2::ZERO);
             return 0;
         };
+        // Both sources write every height and gradient: resized, not cleared.
+        output.heights.resize(group.len(), 0.0);
+        output.gradients.resize(group.len(), Vec2::ZERO);
         match &bump.source {
             BumpSource::Pattern(binding) => {
                 let at = Sites {
