@@ -115,12 +115,32 @@ impl FragmentShader for LitShader {
             );
             if start < end {
                 let group = &order[start..end];
-                flattened +=
-                    self.shade_object(object_index, object, fragments, group, scratch, out);
+                for part in group.chunks(chunk_size(object)) {
+                    flattened +=
+                        self.shade_object(object_index, object, fragments, part, scratch, out);
+                }
             }
         }
         scratch.order = order;
         flattened
+    }
+}
+
+/// How many of an object's fragments are shaded together. Without patterns, a chunk's working
+/// arrays (frames, texels, points, normals…) stay in L1 cache from stage to stage: 256 made the
+/// euc peer's frame 2-3% faster than whole tiles (64, 128 and 1024 gained less). The pattern
+/// interpreter instead spreads its per-instruction dispatch over every lane it gets, so
+/// patterned objects are shaded whole (chunks of 256 made the POV-Ray peer's frame 3-5% slower).
+fn chunk_size(object: &FrameObject) -> usize {
+    const IN_CACHE: usize = 256;
+    let material = &object.prepared.material;
+    let pattern_texture = matches!(material.texture, Some(Texturing::Pattern(_)));
+    let pattern_bump =
+        matches!(&material.bump, Some(bump) if matches!(bump.source, BumpSource::Pattern(_)));
+    if pattern_texture || pattern_bump {
+        usize::MAX
+    } else {
+        IN_CACHE
     }
 }
 
