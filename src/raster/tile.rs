@@ -7,13 +7,14 @@ use super::scan::{PixelRect, RowSpan, triangle_rows};
 use super::setup::ScreenTriangle;
 use glam::{Vec2, Vec3};
 
-const NO_TRIANGLE: u32 = u32::MAX;
 const TILE_PIXELS: usize = (TILE_SIZE * TILE_SIZE) as usize;
 
 /// A tile's visibility: the nearest triangle per pixel, by interpolated 1/w (greater is nearer,
 /// and f32 keeps its precision best near 0, i.e. far away: the "reversed-z" trick).
 pub struct TileBuffers {
+    /// 0 where nothing was drawn.
     inv_w: Vec<f32>,
+    /// Meaningful only where `inv_w` is positive (see `nearest`).
     triangle: Vec<u32>,
     /// The batch being shaded, and where each of its fragments goes.
     fragments: Vec<Fragment>,
@@ -26,7 +27,7 @@ impl Default for TileBuffers {
     fn default() -> Self {
         TileBuffers {
             inv_w: vec![0.0; TILE_PIXELS],
-            triangle: vec![NO_TRIANGLE; TILE_PIXELS],
+            triangle: vec![0; TILE_PIXELS],
             fragments: Vec::with_capacity(TILE_PIXELS),
             visible_runs: Vec::with_capacity(TILE_PIXELS),
             colors: Vec::with_capacity(TILE_PIXELS),
@@ -84,8 +85,9 @@ impl TileBuffers {
         bin: &[u32],
         rect: &PixelRect,
     ) {
+        // A triangle is recorded only where it wins, which needs 1/w > 0: the triangle slots
+        // are read only where `inv_w` says one was drawn, so they need no clearing.
         self.inv_w.fill(0.0);
-        self.triangle.fill(NO_TRIANGLE);
         // AVX2 compares four of the i64 edge functions at once; SSE2 has no 64-bit compare.
         crate::simd::widest(
             #[inline(always)]
@@ -106,6 +108,12 @@ impl TileBuffers {
         );
     }
 
+    /// The nearest triangle at `slot`, if one was drawn there.
+    #[cfg(test)]
+    fn nearest(&self, slot: usize) -> Option<u32> {
+        (self.inv_w[slot] > 0.0).then(|| self.triangle[slot])
+    }
+
     /// Turns the tile's visible pixels into fragments, shades them as one batch and writes the
     /// tile (background where nothing is visible). Returns the fragments shaded and flattened.
     pub fn shade<S: FragmentShader>(
@@ -119,11 +127,12 @@ impl TileBuffers {
         self.fragments.clear();
         self.visible_runs.clear();
         for y in rect.y0..=rect.y1 {
-            let slots = &self.triangle[((y - rect.y0) * TILE_SIZE) as usize..];
+            let first_slot = ((y - rect.y0) * TILE_SIZE) as usize;
+            let (slots, drawn) = (&self.triangle[first_slot..], &self.inv_w[first_slot..]);
             let row = ((y - out.first_row) * out.width) as usize;
             let mask = out.mask;
             let kind =
-                |x: u32| PixelKind::of(mask, row + x as usize, slots[(x - rect.x0) as usize]);
+                |x: u32| PixelKind::of(mask, row + x as usize, drawn[(x - rect.x0) as usize] > 0.0);
             let mut x = rect.x0;
             while x <= rect.x1 {
                 let run = kind(x);
@@ -177,15 +186,15 @@ enum PixelKind {
 }
 
 impl PixelKind {
-    /// At `pixel` of a strip with `mask`, whose nearest triangle is `triangle`.
+    /// At `pixel` of a strip with `mask`, where a triangle was `drawn` or not.
     #[inline]
-    fn of(mask: Option<&[bool]>, pixel: usize, triangle: u32) -> PixelKind {
+    fn of(mask: Option<&[bool]>, pixel: usize, drawn: bool) -> PixelKind {
         if !mask.is_none_or(|mask| mask[pixel]) {
             PixelKind::Unwanted
-        } else if triangle == NO_TRIANGLE {
-            PixelKind::Background
-        } else {
+        } else if drawn {
             PixelKind::Visible
+        } else {
+            PixelKind::Background
         }
     }
 }
@@ -272,6 +281,8 @@ mod tests {
     use crate::raster::setup::{TrianglePlanes, Viewport};
     use glam::Vec4;
 
+    const NO_TRIANGLE: u32 = u32::MAX;
+
     const VIEWPORT: Viewport = Viewport {
         width: 100,
         height: 90,
@@ -340,6 +351,8 @@ mod tests {
         triangles.extend(copies);
         let bin: Vec<u32> = (0..triangles.len() as u32).collect();
         // A whole tile, and one cut by the viewport's edge.
+        // One buffer for both, so nothing from the first tile may show through in the second.
+        let mut tile = TileBuffers::default();
         for rect in [
             PixelRect {
                 x0: 0,
@@ -354,10 +367,12 @@ mod tests {
                 y1: 89,
             },
         ] {
-            let mut tile = TileBuffers::default();
             tile.resolve_visibility(&triangles, &bin, &rect);
             let expected = nearest_by_pixel(&triangles, &rect);
-            assert_eq!(tile.triangle, expected, "tile {rect:?}");
+            let nearest: Vec<u32> = (0..TILE_PIXELS)
+                .map(|slot| tile.nearest(slot).unwrap_or(NO_TRIANGLE))
+                .collect();
+            assert_eq!(nearest, expected, "tile {rect:?}");
             let drawn = expected.iter().filter(|&&t| t != NO_TRIANGLE).count();
             assert!(drawn > 500, "the tile saw triangles: {drawn} pixels");
         }
