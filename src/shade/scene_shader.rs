@@ -288,11 +288,12 @@ impl LitShader {
                 let mapping = mapping_on(&image.mapping, surface, image.sampler.wrap_s);
                 let points = self.surface_points(fragments, group, &scratch.frames);
                 let texture = &mut scratch.texture;
-                texture.st.clear();
+                // Every coordinate is written below: resized, not cleared.
+                texture.st.resize(group.len(), Vec2::ZERO);
                 texture.footprints.clear();
                 let wants_footprint = image.sampler.filter.uses_footprint();
                 mapping.map_each(points, |k, mapped| {
-                    texture.st.push(mapped.st);
+                    texture.st[k] = mapped.st;
                     if wants_footprint {
                         let fragment = &fragments[group[k] as usize];
                         let footprint = mapped.footprint(fragment.duv_dx, fragment.duv_dy);
