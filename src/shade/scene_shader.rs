@@ -288,16 +288,17 @@ impl LitShader {
                 let mapping = mapping_on(&image.mapping, surface, image.sampler.wrap_s);
                 let points = self.surface_points(fragments, group, &scratch.frames);
                 let texture = &mut scratch.texture;
-                // Every coordinate is written below: resized, not cleared.
-                texture.st.resize(group.len(), Vec2::ZERO);
-                texture.footprints.clear();
+                // Every coordinate (and footprint, if wanted) is written below: resized, not
+                // cleared, and written in place (a push per fragment stalled on the list's length).
                 let wants_footprint = image.sampler.filter.uses_footprint();
+                texture.st.resize(group.len(), Vec2::ZERO);
+                let footprints = if wants_footprint { group.len() } else { 0 };
+                texture.footprints.resize(footprints, Footprint::POINT);
                 mapping.map_each(points, |k, mapped| {
                     texture.st[k] = mapped.st;
                     if wants_footprint {
                         let fragment = &fragments[group[k] as usize];
-                        let footprint = mapped.footprint(fragment.duv_dx, fragment.duv_dy);
-                        texture.footprints.push(footprint);
+                        texture.footprints[k] = mapped.footprint(fragment.duv_dx, fragment.duv_dy);
                     }
                 });
                 // Every texel is written by the sampler: resized, not cleared.
