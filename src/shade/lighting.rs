@@ -1,5 +1,6 @@
 use crate::scene::{Light, Material};
 use glam::{DVec3, Vec3};
+use std::ops::Range;
 
 /// The scene's lights for one frame, moved into camera-relative space (eye at the origin).
 #[derive(Clone, Debug)]
@@ -86,40 +87,40 @@ pub fn blinn_phong(
 /// Fragments lit together by `blinn_phong_many`.
 const LANES: usize = 64;
 
-/// `blinn_phong` for a batch: `out[k]` lights `colors[k]` at `points[k]` with `normals[k]`.
-/// The same arithmetic in the same order (so the same colours to the bit), rearranged as
-/// structure-of-arrays loops over lanes of fragments, one light at a time, which the compiler
-/// turns into SIMD: the normalisations and the highlight's power run four fragments at once
-/// (eight where the CPU has AVX2).
-pub fn blinn_phong_many(
+/// `blinn_phong` for a batch: `out[k]` lights `colors[k]` at fragment k's camera-relative
+/// point and facing unit normal. The same arithmetic in the same order (so the same
+/// colours to the bit), rearranged as structure-of-arrays loops over lanes of fragments, one
+/// light at a time, which the compiler turns into SIMD: the normalisations and the highlight's
+/// power run four fragments at once (eight where the CPU has AVX2). `surface(range)` gives
+/// those of fragments `range` (a lane's worth at a time), read straight into the lanes: callers
+/// need not store points and normals first.
+pub fn blinn_phong_many<Pairs: Iterator<Item = (Vec3, Vec3)>>(
     lights: &FrameLights,
     material: &Material,
     colors: &[Vec3],
-    points: &[Vec3],
-    normals: &[Vec3],
+    surface: impl Fn(Range<usize>) -> Pairs,
     out: &mut [Vec3],
 ) {
     crate::simd::widest(
         #[inline(always)]
-        || blinn_phong_lanes(lights, material, colors, points, normals, out),
+        || blinn_phong_lanes(lights, material, colors, surface, out),
     );
 }
 
 /// The batch loops, inlined into `blinn_phong_many`'s call so they are compiled for the widest
 /// SIMD the CPU has.
 #[inline(always)]
-fn blinn_phong_lanes(
+fn blinn_phong_lanes<Pairs: Iterator<Item = (Vec3, Vec3)>>(
     lights: &FrameLights,
     material: &Material,
     colors: &[Vec3],
-    points: &[Vec3],
-    normals: &[Vec3],
+    surface: impl Fn(Range<usize>) -> Pairs,
     out: &mut [Vec3],
 ) {
-    let chunks = colors.chunks(LANES).zip(points.chunks(LANES));
-    let chunks = chunks.zip(normals.chunks(LANES)).zip(out.chunks_mut(LANES));
-    for (((colors, points), normals), out) in chunks {
-        let (p, n) = (Lanes::load(points), Lanes::load(normals));
+    let chunks = colors.chunks(LANES).zip(out.chunks_mut(LANES));
+    for (chunk, (colors, out)) in chunks.enumerate() {
+        let first = chunk * LANES;
+        let (p, n) = Lanes::load_pairs(surface(first..first + colors.len()));
         let to_eye = Lanes::from_fn(|k| crate::surface::normalize_or(-p.at(k), n.at(k)));
         let mut diffuse = Lanes::splat(lights.ambient);
         let mut specular = Lanes::splat(Vec3::ZERO);
@@ -198,14 +199,15 @@ impl Lanes {
         }
     }
 
-    /// Up to `LANES` vectors; the lanes past the end hold zero.
+    /// Up to `LANES` pairs of vectors as two sets of lanes; the lanes past the end hold zero.
     #[inline(always)]
-    fn load(vectors: &[Vec3]) -> Lanes {
-        let mut lanes = Lanes::splat(Vec3::ZERO);
-        for (k, v) in vectors.iter().enumerate() {
-            lanes.set(k, *v);
+    fn load_pairs(pairs: impl Iterator<Item = (Vec3, Vec3)>) -> (Lanes, Lanes) {
+        let (mut first, mut second) = (Lanes::splat(Vec3::ZERO), Lanes::splat(Vec3::ZERO));
+        for (k, (a, b)) in pairs.take(LANES).enumerate() {
+            first.set(k, a);
+            second.set(k, b);
         }
-        lanes
+        (first, second)
     }
 
     #[inline(always)]
@@ -315,16 +317,15 @@ mod tests {
             };
             // The dispatching entry (the AVX2 build where the CPU has it) and the portable build.
             let mut batch = vec![Vec3::NAN; n];
-            blinn_phong_many(&lights, &material, &colors, &points, &normals, &mut batch);
+            let surface = |range: Range<usize>| {
+                points[range.clone()]
+                    .iter()
+                    .copied()
+                    .zip(normals[range].iter().copied())
+            };
+            blinn_phong_many(&lights, &material, &colors, surface, &mut batch);
             let mut portable = vec![Vec3::NAN; n];
-            blinn_phong_lanes(
-                &lights,
-                &material,
-                &colors,
-                &points,
-                &normals,
-                &mut portable,
-            );
+            blinn_phong_lanes(&lights, &material, &colors, surface, &mut portable);
             for k in 0..n {
                 let one = blinn_phong(&lights, &material, colors[k], points[k], normals[k]);
                 for (lit, build) in [(batch[k], "dispatched"), (portable[k], "portable")] {

@@ -10,11 +10,12 @@ use super::vertex_normals::VertexNormals;
 use super::view_mode::ViewMode;
 use crate::pattern::OutputKind;
 use crate::raster::{Camera, Fragment, FragmentShader, FrameObject};
-use crate::scene::{BumpSource, Scene, Texturing};
+use crate::scene::{BumpSource, Material, Scene, Texturing};
 use crate::surface::{Frame, Surface};
 use crate::texture::{Footprint, Mapping, SurfacePoint, SurfaceUv, Texel, Wrap};
 use glam::{Vec2, Vec3};
 use std::borrow::Cow;
+use std::ops::Range;
 use std::sync::Arc;
 
 /// The default program for a scene: Blinn-Phong with textures and bump maps.
@@ -171,9 +172,42 @@ impl LitShader {
         }
         let mut flattened = self.base_colors(object, fragments, group, scratch);
         flattened += self.bump_gradients(object, fragments, group, scratch);
+        if self.mode == ViewMode::Shaded && material.bump.is_none() {
+            // The frames' own points and normals, read straight into the lighting's lanes.
+            let (frames, origin) = (&scratch.frames, object.origin);
+            let surface = |range: Range<usize>| {
+                frames[range].iter().map(move |frame| {
+                    let p = origin + frame.p;
+                    (p, frame.n * facing_sign(p, frame.n))
+                })
+            };
+            light(
+                &self.lights,
+                material,
+                group,
+                &scratch.colors,
+                surface,
+                &mut scratch.lit,
+                out,
+            );
+            return flattened;
+        }
         self.lighting_inputs(object, fragments, group, scratch);
         if self.mode == ViewMode::Shaded {
-            self.light(material, group, scratch, out);
+            let (points, normals) = (&scratch.points, &scratch.normals);
+            let surface = |range: Range<usize>| {
+                let points = points[range.clone()].iter().copied();
+                points.zip(normals[range].iter().copied())
+            };
+            light(
+                &self.lights,
+                material,
+                group,
+                &scratch.colors,
+                surface,
+                &mut scratch.lit,
+                out,
+            );
         } else {
             for (k, &i) in group.iter().enumerate() {
                 // Without a bump there are no heights: the surface is at height 0.
@@ -186,7 +220,7 @@ impl LitShader {
     }
 
     /// Camera-relative points and facing (bumped) normals of the group, into `scratch.points`
-    /// and `scratch.normals`.
+    /// and `scratch.normals` (shading without a bump reads them from the frames instead).
     fn lighting_inputs(
         &self,
         object: &FrameObject,
@@ -221,29 +255,6 @@ impl LitShader {
             };
             *point = p;
             *normal = n * facing_sign(p, frame.n);
-        }
-    }
-
-    /// Lights the group in one batch into `out` (straight into it when the group's fragments
-    /// are consecutive, as a one-object batch's are).
-    fn light(
-        &self,
-        material: &crate::scene::Material,
-        group: &[u32],
-        scratch: &mut ShadeScratch,
-        out: &mut [Vec3],
-    ) {
-        let (colors, points, normals) = (&scratch.colors, &scratch.points, &scratch.normals);
-        if let Some(range) = consecutive(group) {
-            let out = &mut out[range];
-            blinn_phong_many(&self.lights, material, colors, points, normals, out);
-            return;
-        }
-        let lit = &mut scratch.lit;
-        lit.resize(group.len(), Vec3::ZERO);
-        blinn_phong_many(&self.lights, material, colors, points, normals, lit);
-        for (&i, &color) in group.iter().zip(lit.iter()) {
-            out[i as usize] = color;
         }
     }
 
@@ -521,6 +532,28 @@ fn mapping_on<'a>(mapping: &'a Mapping, surface: &Surface, wrap_s: Wrap) -> Cow<
             }))
         }
         _ => Cow::Borrowed(mapping),
+    }
+}
+
+/// Lights the group in one batch into `out`: straight into it when the group's fragments are
+/// consecutive (as a one-object batch's are), else through `lit` and a scatter.
+fn light<Pairs: Iterator<Item = (Vec3, Vec3)>>(
+    lights: &FrameLights,
+    material: &Material,
+    group: &[u32],
+    colors: &[Vec3],
+    surface: impl Fn(Range<usize>) -> Pairs,
+    lit: &mut Vec<Vec3>,
+    out: &mut [Vec3],
+) {
+    if let Some(range) = consecutive(group) {
+        blinn_phong_many(lights, material, colors, surface, &mut out[range]);
+        return;
+    }
+    lit.resize(group.len(), Vec3::ZERO);
+    blinn_phong_many(lights, material, colors, surface, lit);
+    for (&i, &color) in group.iter().zip(lit.iter()) {
+        out[i as usize] = color;
     }
 }
 
