@@ -120,7 +120,8 @@ fn blinn_phong_lanes<Pairs: Iterator<Item = (Vec3, Vec3)>>(
     let chunks = colors.chunks(LANES).zip(out.chunks_mut(LANES));
     for (chunk, (colors, out)) in chunks.enumerate() {
         let first = chunk * LANES;
-        let (p, n) = Lanes::load_pairs(surface(first..first + colors.len()));
+        let (mut p, mut n) = (Lanes::splat(Vec3::ZERO), Lanes::splat(Vec3::ZERO));
+        Lanes::set_pairs(&mut p, &mut n, surface(first..first + colors.len()));
         let to_eye = Lanes::from_fn(|k| crate::surface::normalize_or(-p.at(k), n.at(k)));
         let mut diffuse = Lanes::splat(lights.ambient);
         let mut specular = Lanes::splat(Vec3::ZERO);
@@ -199,15 +200,14 @@ impl Lanes {
         }
     }
 
-    /// Up to `LANES` pairs of vectors as two sets of lanes; the lanes past the end hold zero.
+    /// Sets the first lanes of `first` and `second` from up to `LANES` pairs of vectors (in
+    /// place: returning the pair of 768-byte lane sets cost a memcpy of each per chunk).
     #[inline(always)]
-    fn load_pairs(pairs: impl Iterator<Item = (Vec3, Vec3)>) -> (Lanes, Lanes) {
-        let (mut first, mut second) = (Lanes::splat(Vec3::ZERO), Lanes::splat(Vec3::ZERO));
+    fn set_pairs(first: &mut Lanes, second: &mut Lanes, pairs: impl Iterator<Item = (Vec3, Vec3)>) {
         for (k, (a, b)) in pairs.take(LANES).enumerate() {
             first.set(k, a);
             second.set(k, b);
         }
-        (first, second)
     }
 
     #[inline(always)]
