@@ -32,6 +32,13 @@ pub trait FragmentShader: Sync {
 
     fn scratch(&self) -> Self::Scratch;
 
+    /// Whether the program reads the fragments' (u,v) derivatives (`duv_dx`, `duv_dy`) for
+    /// these objects; where it does not, the rasterizer leaves them zero and saves their
+    /// arithmetic at every pixel. A program that says false must not read them.
+    fn reads_derivatives(&self, _objects: &[FrameObject]) -> bool {
+        true
+    }
+
     /// Writes one linear RGB colour per fragment into `out` (same length as `fragments`).
     /// Returns how many fragments were drawn flat because a pattern gave no finite value there.
     fn shade(

@@ -174,6 +174,7 @@ pub fn render_into(
         shader,
         perspective: target.interpolation == Interpolation::PerspectiveCorrect,
         footprint: target.footprint,
+        derivatives: shader.reads_derivatives(&objects),
     };
     let background = prepared.scene.background;
     framebuffer.resize(viewport.width, viewport.height);

@@ -149,7 +149,7 @@ impl TileBuffers {
                     PixelKind::Visible => {
                         self.fragments.extend((x..end).map(|x| {
                             let t = &triangles[slots[(x - rect.x0) as usize] as usize];
-                            fragment(t, x, y, frame.perspective, frame.footprint)
+                            fragment(t, x, y, frame)
                         }));
                         self.visible_runs.push(pixels);
                     }
@@ -233,33 +233,44 @@ pub struct TileFrame<'a, S> {
     pub perspective: bool,
     /// Sample spacing in pixels: scales the (u,v) derivatives (see `RenderTarget::footprint`).
     pub footprint: f32,
+    /// Whether the shader reads the (u,v) derivatives (`FragmentShader::reads_derivatives`).
+    pub derivatives: bool,
 }
 
-/// The fragment at pixel (x, y) of a triangle: (u,v) and its screen derivatives from the
-/// interpolated planes (for u = U/Q with U = u/w and Q = 1/w: ∂u/∂x = (U_x − u·Q_x)/Q).
+/// The fragment at pixel (x, y) of a triangle: (u,v) and, if the shader reads them, its screen
+/// derivatives from the interpolated planes (for u = U/Q with U = u/w and Q = 1/w:
+/// ∂u/∂x = (U_x − u·Q_x)/Q).
 #[inline]
-fn fragment(t: &ScreenTriangle, x: u32, y: u32, perspective: bool, footprint: f32) -> Fragment {
+fn fragment<S>(t: &ScreenTriangle, x: u32, y: u32, frame: &TileFrame<S>) -> Fragment {
     let offset = pixel_offset(t, x, y);
     let q = t.inv_w.at(offset);
     let w = 1.0 / q;
     let plane_uv = Vec2::new(t.u_over_w.at(offset), t.v_over_w.at(offset));
-    let plane_dx = Vec2::new(t.u_over_w.dx, t.v_over_w.dx);
-    let plane_dy = Vec2::new(t.u_over_w.dy, t.v_over_w.dy);
-    let (uv, duv_dx, duv_dy) = if perspective {
-        let uv = plane_uv * w;
-        (
-            uv,
-            (plane_dx - uv * t.inv_w.dx) * w,
-            (plane_dy - uv * t.inv_w.dy) * w,
-        )
+    let uv = if frame.perspective {
+        plane_uv * w
     } else {
-        (plane_uv, plane_dx, plane_dy)
+        plane_uv
+    };
+    let (duv_dx, duv_dy) = if frame.derivatives {
+        let plane_dx = Vec2::new(t.u_over_w.dx, t.v_over_w.dx);
+        let plane_dy = Vec2::new(t.u_over_w.dy, t.v_over_w.dy);
+        let (dx, dy) = if frame.perspective {
+            (
+                (plane_dx - uv * t.inv_w.dx) * w,
+                (plane_dy - uv * t.inv_w.dy) * w,
+            )
+        } else {
+            (plane_dx, plane_dy)
+        };
+        (dx * frame.footprint, dy * frame.footprint)
+    } else {
+        (Vec2::ZERO, Vec2::ZERO)
     };
     Fragment {
         object: t.object,
         uv,
-        duv_dx: duv_dx * footprint,
-        duv_dy: duv_dy * footprint,
+        duv_dx,
+        duv_dy,
         depth: w,
         x,
         y,

@@ -94,6 +94,19 @@ impl FragmentShader for LitShader {
         ShadeScratch::default()
     }
 
+    /// Only image lookups read the derivatives: a colour image through a filter that picks a
+    /// mip level, and image bump maps (whose gradient is filtered over the footprint).
+    fn reads_derivatives(&self, objects: &[FrameObject]) -> bool {
+        objects.iter().any(|o| {
+            let material = &o.prepared.material;
+            let filtered_image = matches!(&material.texture,
+                Some(Texturing::Image(image)) if image.sampler.filter.uses_footprint());
+            let image_bump = matches!(&material.bump,
+                Some(bump) if matches!(bump.source, BumpSource::Image(_)));
+            filtered_image || image_bump
+        })
+    }
+
     fn shade(
         &self,
         objects: &[FrameObject],
@@ -630,6 +643,97 @@ fn single_object(fragments: &[Fragment]) -> Option<u32> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::raster::{PreparedScene, RenderTarget, Viewport, frame_objects, render_with};
+    use crate::scene::{ImageTexture, preset};
+    use crate::surface::Tessellation;
+    use crate::texture::{Filter, Raster, Sampler, Texture};
+
+    /// `LitShader` with every fragment's derivatives computed (the trait's default).
+    struct AllDerivatives<'a>(&'a LitShader);
+
+    impl FragmentShader for AllDerivatives<'_> {
+        type Scratch = ShadeScratch;
+
+        fn scratch(&self) -> ShadeScratch {
+            self.0.scratch()
+        }
+
+        fn shade(
+            &self,
+            objects: &[FrameObject],
+            fragments: &[Fragment],
+            scratch: &mut ShadeScratch,
+            out: &mut [Vec3],
+        ) -> usize {
+            self.0.shade(objects, fragments, scratch, out)
+        }
+    }
+
+    /// A 64×64 checkerboard of 4-texel squares: its mip levels differ, so a footprint changes
+    /// what a trilinear filter reads.
+    fn checkerboard(filter: Filter) -> Texturing {
+        let texels = Raster::from_fn(64, 64, |x, y| {
+            let bright = (x / 4 + y / 4) % 2 == 0;
+            Texel::new(0.9, 0.2, 0.1, 1.0) * if bright { 1.0 } else { 0.2 }
+        });
+        Texturing::Image(ImageTexture {
+            name: "checkerboard".into(),
+            texture: Arc::new(Texture::from_raster(texels)),
+            mapping: Mapping::SurfaceUv(SurfaceUv {
+                scale: Vec2::splat(1.0 / 45.0),
+                offset: Vec2::ZERO,
+            }),
+            sampler: Sampler {
+                filter,
+                wrap_s: Wrap::Repeat,
+                wrap_t: Wrap::Repeat,
+            },
+        })
+    }
+
+    /// The shader skips derivatives only where nothing it reads needs them: frames rendered
+    /// without them are the bits of frames rendered with them, and a trilinear image (which
+    /// would change without them) asks for them.
+    #[test]
+    fn derivatives_are_skipped_only_where_unread() {
+        let cases = [
+            ("sphere-on-plane-dimples", None, false),
+            ("big-sphere-squares", Some(Filter::Bilinear), false),
+            ("big-sphere-squares", Some(Filter::Nearest), false),
+            ("big-sphere-squares", Some(Filter::Trilinear), true),
+        ];
+        for (name, filter, reads) in cases {
+            let mut scene = preset(name).expect("a built-in scene");
+            if let Some(filter) = filter {
+                scene.objects[0].material.texture = Some(checkerboard(filter));
+            }
+            let camera = scene.camera.clone();
+            let prepared = PreparedScene::new(scene, Tessellation { density: 24 });
+            let target = RenderTarget::new(
+                &camera,
+                Viewport {
+                    width: 96,
+                    height: 64,
+                },
+            );
+            let shader = LitShader::new(&prepared.scene, &camera);
+            let objects = frame_objects(&prepared, &camera);
+            assert_eq!(
+                shader.reads_derivatives(&objects),
+                reads,
+                "{name} {filter:?}"
+            );
+            let (skipped, _) = render_with(&prepared, &target, &shader);
+            let (computed, _) = render_with(&prepared, &target, &AllDerivatives(&shader));
+            let bits = |f: &crate::raster::Framebuffer| -> Vec<[u32; 3]> {
+                f.color()
+                    .iter()
+                    .map(|c| c.to_array().map(f32::to_bits))
+                    .collect()
+            };
+            assert!(bits(&skipped) == bits(&computed), "{name} {filter:?}");
+        }
+    }
 
     fn fragments_of(objects: &[u32]) -> Vec<Fragment> {
         objects
