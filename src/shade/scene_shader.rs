@@ -194,15 +194,8 @@ impl LitShader {
                     (p, frame.n * facing_sign(p, frame.n))
                 })
             };
-            light(
-                &self.lights,
-                material,
-                group,
-                &scratch.colors,
-                surface,
-                &mut scratch.lit,
-                out,
-            );
+            self.lighting(material, group, &scratch.colors)
+                .light(surface, &mut scratch.lit, out);
             return flattened;
         }
         self.lighting_inputs(object, fragments, group, scratch);
@@ -212,15 +205,8 @@ impl LitShader {
                 let points = points[range.clone()].iter().copied();
                 points.zip(normals[range].iter().copied())
             };
-            light(
-                &self.lights,
-                material,
-                group,
-                &scratch.colors,
-                surface,
-                &mut scratch.lit,
-                out,
-            );
+            self.lighting(material, group, &scratch.colors)
+                .light(surface, &mut scratch.lit, out);
         } else {
             for (k, &i) in group.iter().enumerate() {
                 // Without a bump there are no heights: the surface is at height 0.
@@ -230,6 +216,20 @@ impl LitShader {
             }
         }
         flattened
+    }
+
+    fn lighting<'a>(
+        &'a self,
+        material: &'a Material,
+        group: &'a [u32],
+        colors: &'a [Vec3],
+    ) -> GroupLighting<'a> {
+        GroupLighting {
+            lights: &self.lights,
+            material,
+            group,
+            colors,
+        }
     }
 
     /// Camera-relative points and facing (bumped) normals of the group, into `scratch.points`
@@ -548,25 +548,35 @@ fn mapping_on<'a>(mapping: &'a Mapping, surface: &Surface, wrap_s: Wrap) -> Cow<
     }
 }
 
-/// Lights the group in one batch into `out`: straight into it when the group's fragments are
-/// consecutive (as a one-object batch's are), else through `lit` and a scatter.
-fn light<Pairs: Iterator<Item = (Vec3, Vec3)>>(
-    lights: &FrameLights,
-    material: &Material,
-    group: &[u32],
-    colors: &[Vec3],
-    surface: impl Fn(Range<usize>) -> Pairs,
-    lit: &mut Vec<Vec3>,
-    out: &mut [Vec3],
-) {
-    if let Some(range) = consecutive(group) {
-        blinn_phong_many(lights, material, colors, surface, &mut out[range]);
-        return;
-    }
-    lit.resize(group.len(), Vec3::ZERO);
-    blinn_phong_many(lights, material, colors, surface, lit);
-    for (&i, &color) in group.iter().zip(lit.iter()) {
-        out[i as usize] = color;
+/// What lighting one group takes: the lights, the material, the group's fragments and their
+/// base colours.
+struct GroupLighting<'a> {
+    lights: &'a FrameLights,
+    material: &'a Material,
+    group: &'a [u32],
+    colors: &'a [Vec3],
+}
+
+impl GroupLighting<'_> {
+    /// Lights the group in one batch into `out`, from the points and normals `surface` gives:
+    /// straight into `out` when the group's fragments are consecutive (as a one-object batch's
+    /// are), else through `lit` and a scatter.
+    fn light<Pairs: Iterator<Item = (Vec3, Vec3)>>(
+        &self,
+        surface: impl Fn(Range<usize>) -> Pairs,
+        lit: &mut Vec<Vec3>,
+        out: &mut [Vec3],
+    ) {
+        let (lights, material, colors) = (self.lights, self.material, self.colors);
+        if let Some(range) = consecutive(self.group) {
+            blinn_phong_many(lights, material, colors, surface, &mut out[range]);
+            return;
+        }
+        lit.resize(self.group.len(), Vec3::ZERO);
+        blinn_phong_many(lights, material, colors, surface, lit);
+        for (&i, &color) in self.group.iter().zip(lit.iter()) {
+            out[i as usize] = color;
+        }
     }
 }
 
