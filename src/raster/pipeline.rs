@@ -256,14 +256,20 @@ fn object_triangles(
     };
     // Each piece pushes straight into its own list and the lists are joined in order: a
     // flattening iterator moved every clipped polygon (over 200 bytes) several times.
-    let pieces: Vec<Vec<ScreenTriangle>> = mesh
+    // One piece a thread: on one thread the list is then moved, not copied.
+    let per_thread = mesh.indices.len().div_ceil(rayon::current_num_threads());
+    let mut pieces: Vec<Vec<ScreenTriangle>> = mesh
         .indices
         .par_iter()
+        .with_min_len(per_thread.max(1))
         .fold(Vec::new, |mut out, triangle| {
             setup.push(triangle, &mut out);
             out
         })
         .collect();
+    if pieces.len() == 1 {
+        return pieces.pop().unwrap_or_default();
+    }
     pieces.concat()
 }
 
