@@ -131,17 +131,22 @@ pub fn frame_objects<'a>(prepared: &'a PreparedScene, camera: &Camera) -> Vec<Fr
 /// Transforms, culls, clips and sets up every triangle of the scene, in submission order.
 pub fn screen_triangles(objects: &[FrameObject], target: &RenderTarget) -> Vec<ScreenTriangle> {
     let view_projection = target.view_projection();
-    let mut all: Vec<ScreenTriangle> = Vec::new();
-    for (index, object) in objects.iter().enumerate() {
-        let mut triangles = object_triangles(object, index as u32, target, view_projection);
-        // Moved, not copied triangle by triangle: they are large and there are many.
-        if all.is_empty() {
-            all = triangles;
-        } else {
-            all.append(&mut triangles);
-        }
+    let per_object = objects
+        .iter()
+        .enumerate()
+        .map(|(index, object)| object_triangles(object, index as u32, target, view_projection))
+        .collect();
+    join_in_order(per_object)
+}
+
+/// The lists one after another. Screen triangles are large and there are many: a lone list is
+/// moved, and several are copied once into a list of the exact size (growing the first by
+/// appending took fresh pages, and page faults, every frame).
+fn join_in_order<T: Copy>(mut lists: Vec<Vec<T>>) -> Vec<T> {
+    if lists.len() == 1 {
+        return lists.pop().unwrap_or_default();
     }
-    all
+    lists.concat()
 }
 
 /// Renders a frame with any fragment program into a new framebuffer.
@@ -258,7 +263,7 @@ fn object_triangles(
     // flattening iterator moved every clipped polygon (over 200 bytes) several times.
     // One piece a thread: on one thread the list is then moved, not copied.
     let per_thread = mesh.indices.len().div_ceil(rayon::current_num_threads());
-    let mut pieces: Vec<Vec<ScreenTriangle>> = mesh
+    let pieces = mesh
         .indices
         .par_iter()
         .with_min_len(per_thread.max(1))
@@ -267,10 +272,7 @@ fn object_triangles(
             out
         })
         .collect();
-    if pieces.len() == 1 {
-        return pieces.pop().unwrap_or_default();
-    }
-    pieces.concat()
+    join_in_order(pieces)
 }
 
 /// What setting up one object's triangles for a frame needs.

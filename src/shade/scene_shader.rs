@@ -581,7 +581,7 @@ impl GroupLighting<'_> {
 }
 
 /// The range `group` lists, when its indices are consecutive and ascending.
-fn consecutive(group: &[u32]) -> Option<std::ops::Range<usize>> {
+fn consecutive(group: &[u32]) -> Option<Range<usize>> {
     let first = *group.first()?;
     let ascending = (first..).zip(group).all(|(expected, &i)| i == expected);
     ascending.then(|| first as usize..first as usize + group.len())
