@@ -1,9 +1,10 @@
 //! A fixed number of frames of a peer scene, for instruction counts under callgrind: the euc
 //! peer's textured sphere, or the POV-Ray peer's scene at one sample per pixel (the still's
-//! shader and quality, no file written). Prints the fragments shaded per frame; run it with two
+//! shader and quality, no file written), or that scene at 16 samples as the POV-Ray peer renders
+//! it, adaptive at CONTRAST if given. Prints the fragments shaded per frame; run it with two
 //! frame counts and divide the difference in instructions by the difference in fragments.
 //!
-//! Run: `cargo bench --bench frame_cost -- euc|pov FRAMES`, e.g. under
+//! Run: `cargo bench --bench frame_cost -- euc|pov|pov16 FRAMES [CONTRAST]`, e.g. under
 //! `valgrind --tool=callgrind target/release/deps/frame_cost-* euc 3`.
 
 mod bench_support;
@@ -14,6 +15,7 @@ use bumpwork::raster::{
     Camera, FragmentShader, Framebuffer, PreparedScene, RenderTarget, Viewport, render_into,
 };
 use bumpwork::scene::load_scene_file;
+use bumpwork::still::{BandBuffers, BandJob, ResolveFilter, Supersampling, render_supersampled};
 use bumpwork::surface::Tessellation;
 use glam::Vec3;
 
@@ -32,6 +34,18 @@ fn frames(prepared: &PreparedScene, camera: &Camera, shader: &impl FragmentShade
     println!("{n} frames of {fragments} fragments");
 }
 
+/// The POV-Ray peer's scene, prepared at the interactive quality it is benchmarked at.
+fn pov_peer_scene() -> (PreparedScene, Camera, Quality) {
+    let dir = std::env::temp_dir().join(format!("bumpwork-cost-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let scene = load_scene_file(&write_pov_peer_scene(&dir)).expect("peer scene");
+    let _ = std::fs::remove_dir_all(&dir);
+    let camera = scene.camera.clone();
+    let quality = Quality::interactive();
+    let prepared = quality.prepare(scene, &camera, VIEWPORT);
+    (prepared, camera, quality)
+}
+
 fn main() {
     let args: Vec<String> = std::env::args()
         .skip(1)
@@ -41,15 +55,32 @@ fn main() {
     let n = args.get(1).and_then(|a| a.parse().ok()).unwrap_or(1);
     match scene {
         "pov" => {
-            let dir = std::env::temp_dir().join(format!("bumpwork-cost-{}", std::process::id()));
-            std::fs::create_dir_all(&dir).expect("temp dir");
-            let scene = load_scene_file(&write_pov_peer_scene(&dir)).expect("peer scene");
-            let _ = std::fs::remove_dir_all(&dir);
-            let camera = scene.camera.clone();
-            let quality = Quality::interactive();
-            let prepared = quality.prepare(scene, &camera, VIEWPORT);
+            let (prepared, camera, quality) = pov_peer_scene();
             let shader = quality.shader(&prepared, &camera);
             frames(&prepared, &camera, &shader, n);
+        }
+        "pov16" => {
+            let (prepared, camera, quality) = pov_peer_scene();
+            let shader = quality.shader(&prepared, &camera);
+            let job = BandJob {
+                prepared: &prepared,
+                camera: &camera,
+                full: VIEWPORT,
+                shader: &shader,
+                // As `peer_povray` renders its 16-sample stills.
+                supersampling: Supersampling {
+                    samples: 16,
+                    filter: ResolveFilter::Box,
+                },
+                interpolation: quality.interpolation,
+                adaptive: args.get(2).and_then(|a| a.parse().ok()),
+            };
+            let mut buffers = BandBuffers::default();
+            let mut fragments = 0;
+            for _ in 0..n {
+                fragments = render_supersampled(&job, &mut buffers).1.fragments;
+            }
+            println!("{n} frames of {fragments} fragments");
         }
         _ => {
             let (scene, _) = textured_sphere_scene();
