@@ -1,12 +1,14 @@
 //! A still rendered a band of rows at a time, each band supersampled by shifted passes and
 //! resolved in linear light: memory depends on the band, not on the image.
 
+use super::contrast::contrast_mask;
 use super::samples::Supersampling;
 use crate::raster::{
     Camera, FragmentShader, FrameStats, Framebuffer, ImageWindow, Interpolation, PreparedScene,
     RenderTarget, TILE_SIZE, Viewport, render_into,
 };
 use glam::{Vec2, Vec3};
+use rayon::prelude::*;
 use std::ops::Range;
 
 /// Bytes a band may hold per pixel: the pass framebuffer (colour and depth) and the sum.
@@ -116,10 +118,7 @@ impl<S: FragmentShader> BandJob<'_, S> {
             return Some(stats);
         }
         buffers.sum.clear();
-        buffers.sum.resize(
-            viewport.width as usize * viewport.height as usize,
-            Vec3::ZERO,
-        );
+        let pixels = viewport.width as usize * viewport.height as usize;
         let mut stats = FrameStats::default();
         let mut mask = std::mem::take(&mut buffers.mask);
         if let Some(threshold) = self.adaptive_threshold() {
@@ -136,13 +135,16 @@ impl<S: FragmentShader> BandJob<'_, S> {
                 mask[..width].fill(true);
             }
             if rows.end < self.full.height {
-                let n = mask.len();
-                mask[n - width..].fill(true);
+                mask[pixels - width..].fill(true);
             }
-            for ((sum, c), &marked) in buffers.sum.iter_mut().zip(buffers.pass.color()).zip(&mask) {
-                *sum = if marked { Vec3::ZERO } else { *c };
-            }
+            // The sum starts as the centre where that is the pixel's value; in parallel, as
+            // fresh memory costs a page fault a page.
+            let centres = buffers.pass.color().par_iter().zip(&mask);
+            (buffers.sum)
+                .par_extend(centres.map(|(&c, &marked)| if marked { Vec3::ZERO } else { c }));
             on_pass();
+        } else {
+            (buffers.sum).par_extend((0..pixels).into_par_iter().map(|_| Vec3::ZERO));
         }
         let only = self.adaptive_threshold().map(|_| &mask[..]);
         let marked: Vec<usize> = only.map_or_else(Vec::new, |mask| {
@@ -157,7 +159,7 @@ impl<S: FragmentShader> BandJob<'_, S> {
             stats = add_stats(stats, pass);
             let (sums, colors) = (&mut buffers.sum, buffers.pass.color());
             match only {
-                None => (sums.iter_mut().zip(colors)).for_each(|(sum, c)| *sum += *c * weight),
+                None => (sums.par_iter_mut().zip(colors)).for_each(|(sum, c)| *sum += *c * weight),
                 Some(_) => marked.iter().for_each(|&i| sums[i] += colors[i] * weight),
             }
             on_pass();
@@ -196,55 +198,4 @@ pub fn render_supersampled<S: FragmentShader>(
         )
     };
     (framebuffer, stats)
-}
-
-/// Marks the pixels of a centre pass that adaptive supersampling must sample fully: where a
-/// neighbour differs in coverage (surface against background), or where the picture is not
-/// locally linear: in any of the four directions through the pixel (across, down, both
-/// diagonals) |c₋ + c₊ − 2c| exceeds `threshold` in a channel of √colour (a cheap perceptual
-/// scale: a step in a dark region counts as much as a brighter one).
-///
-/// Why that suffices: the resolve filters are symmetric and reach at most a pixel from the
-/// centre, and over a linear ramp a symmetric filter returns the centre value, so smooth shading
-/// needs no samples however steep it is. A step (an edge, a rim, a check) crossing a pixel's
-/// filter square separates its centre from some neighbour's, so the second difference towards
-/// that neighbour is the full step and the pixel is marked: on flat regions the result is that
-/// of full supersampling. What no centre sees (detail below a pixel, a corner poking between
-/// centres) is missed, the usual limit of adaptive schemes.
-fn contrast_mask(pass: &Framebuffer, threshold: f32, mask: &mut Vec<bool>) {
-    let (w, h) = (pass.width as usize, pass.height as usize);
-    mask.clear();
-    mask.resize(w * h, false);
-    let keys: Vec<Vec3> = pass
-        .color()
-        .iter()
-        .map(|c| {
-            let c = c.max(Vec3::ZERO);
-            Vec3::new(c.x.sqrt(), c.y.sqrt(), c.z.sqrt())
-        })
-        .collect();
-    let depth = pass.depth();
-    for y in 0..h {
-        // Rows and columns clamped at the band's border: a one-sided difference there.
-        let (up, down) = (y.saturating_sub(1) * w, (y + 1).min(h - 1) * w);
-        let row = y * w;
-        for x in 0..w {
-            let (left, right) = (x.saturating_sub(1), (x + 1).min(w - 1));
-            let i = row + x;
-            let covered = depth[i].is_finite();
-            let twice = 2.0 * keys[i];
-            let mut mark = false;
-            for (a, b) in [
-                (row + left, row + right),
-                (up + x, down + x),
-                (up + left, down + right),
-                (up + right, down + left),
-            ] {
-                mark |= (keys[a] + keys[b] - twice).abs().max_element() > threshold
-                    || depth[a].is_finite() != covered
-                    || depth[b].is_finite() != covered;
-            }
-            mask[i] = mark;
-        }
-    }
 }

@@ -2,6 +2,7 @@
 //! and the recipe that lets a still be rendered again from its own metadata.
 
 mod bands;
+mod contrast;
 mod recipe;
 mod samples;
 mod stream;
