@@ -12,6 +12,7 @@ mod clip;
 mod fragment;
 mod framebuffer;
 mod pipeline;
+mod row_runs;
 mod scan;
 mod setup;
 mod tile;

@@ -3,6 +3,7 @@
 
 use super::bin::TILE_SIZE;
 use super::fragment::{Fragment, FragmentShader, FrameObject};
+use super::row_runs::{PixelKind, RowRuns};
 use super::scan::{PixelRect, RowSpan, triangle_rows};
 use super::setup::ScreenTriangle;
 use glam::{Vec2, Vec3};
@@ -126,35 +127,27 @@ impl TileBuffers {
     ) -> (usize, usize) {
         self.fragments.clear();
         self.visible_runs.clear();
+        let width = (rect.x1 - rect.x0 + 1) as usize;
         for y in rect.y0..=rect.y1 {
             let first_slot = ((y - rect.y0) * TILE_SIZE) as usize;
-            let (slots, drawn) = (&self.triangle[first_slot..], &self.inv_w[first_slot..]);
-            let row = ((y - out.first_row) * out.width) as usize;
-            let mask = out.mask;
-            let kind =
-                |x: u32| PixelKind::of(mask, row + x as usize, drawn[(x - rect.x0) as usize] > 0.0);
-            let mut x = rect.x0;
-            while x <= rect.x1 {
-                let run = kind(x);
-                let end = (x + 1..=rect.x1)
-                    .find(|&e| kind(e) != run)
-                    .unwrap_or(rect.x1 + 1);
-                let pixels = row + x as usize..row + end as usize;
-                match run {
-                    PixelKind::Unwanted => {}
+            let slots = &self.triangle[first_slot..first_slot + width];
+            let row = ((y - out.first_row) * out.width) as usize + rect.x0 as usize;
+            let wanted = out.mask.map(|mask| &mask[row..row + width]);
+            for (kind, xs) in RowRuns::new(&self.inv_w[first_slot..first_slot + width], wanted) {
+                let pixels = row + xs.start as usize..row + xs.end as usize;
+                match kind {
                     PixelKind::Background => {
                         fill_colour(&mut out.color[pixels.clone()], out.background);
                         out.depth[pixels].fill(f32::INFINITY);
                     }
                     PixelKind::Visible => {
-                        self.fragments.extend((x..end).map(|x| {
-                            let t = &triangles[slots[(x - rect.x0) as usize] as usize];
-                            fragment(t, x, y, frame)
+                        self.fragments.extend(xs.map(|i| {
+                            let t = &triangles[slots[i as usize] as usize];
+                            fragment(t, rect.x0 + i, y, frame)
                         }));
                         self.visible_runs.push(pixels);
                     }
                 }
-                x = end;
             }
         }
         self.colors.resize(self.fragments.len(), Vec3::ZERO);
@@ -173,29 +166,6 @@ impl TileBuffers {
             }
         }
         (self.fragments.len(), flattened)
-    }
-}
-
-/// What the tile does at a pixel; consecutive pixels of one kind are handled as a run.
-#[derive(Clone, Copy, PartialEq, Eq)]
-enum PixelKind {
-    /// Outside the render's mask: left as it is.
-    Unwanted,
-    Background,
-    Visible,
-}
-
-impl PixelKind {
-    /// At `pixel` of a strip with `mask`, where a triangle was `drawn` or not.
-    #[inline]
-    fn of(mask: Option<&[bool]>, pixel: usize, drawn: bool) -> PixelKind {
-        if !mask.is_none_or(|mask| mask[pixel]) {
-            PixelKind::Unwanted
-        } else if drawn {
-            PixelKind::Visible
-        } else {
-            PixelKind::Background
-        }
     }
 }
 
