@@ -1,8 +1,11 @@
 //! A framebuffer reused from frame to frame (the workbench's, a still's band passes) skips
 //! rewriting tiles it knows are still background: whatever happened in between, each frame
-//! must hold exactly what a fresh framebuffer would.
+//! must hold exactly what a fresh framebuffer would. Renders restricted to a mask, or adding
+//! weighted colours into what is there (supersampling's passes), touch only their pixels.
 
-use bumpwork::raster::{Framebuffer, PreparedScene, RenderTarget, Viewport, render, render_into};
+use bumpwork::raster::{
+    Blend, Framebuffer, PreparedScene, RenderTarget, Viewport, render, render_into,
+};
 use bumpwork::scene::{Scene, preset};
 use bumpwork::shade::LitShader;
 use bumpwork::surface::Tessellation;
@@ -101,4 +104,102 @@ fn pixels_written_between_frames_are_not_trusted_as_background() {
     let _ = reused.take_depth();
     render_reusing(&far, SMALL, &mut reused);
     assert_same(&reused, &fresh(&far, SMALL), "after take_depth");
+}
+
+/// A framebuffer of made-up colours and depths, none of them what a render writes.
+fn scribbled(viewport: Viewport) -> Framebuffer {
+    let n = (viewport.width * viewport.height) as usize;
+    let colours = (0..n)
+        .map(|i| Vec3::new(i as f32 * 1e-4, 0.3, -0.2))
+        .collect();
+    Framebuffer::from_parts(viewport.width, viewport.height, colours, vec![-1.0; n])
+}
+
+/// A mask wanting about a third of the pixels, scattered, plus whole rows (background tiles
+/// included) and nothing in the bottom-right corner's tile.
+fn scattered_mask(viewport: Viewport) -> Vec<bool> {
+    let mut state = 11u64;
+    (0..viewport.width * viewport.height)
+        .map(|i| {
+            state = state.wrapping_mul(6364136223846793005).wrapping_add(1);
+            let (x, y) = (i % viewport.width, i / viewport.width);
+            let corner = x >= viewport.width - 40 && y >= viewport.height - 40;
+            !corner && (y.is_multiple_of(17) || (state >> 33).is_multiple_of(3))
+        })
+        .collect()
+}
+
+fn render_as(
+    prepared: &PreparedScene,
+    mask: Option<&[bool]>,
+    blend: Blend,
+    framebuffer: &mut Framebuffer,
+) {
+    let camera = &prepared.scene.camera;
+    let target = RenderTarget {
+        mask,
+        blend,
+        ..RenderTarget::new(camera, SMALL)
+    };
+    render_into(
+        prepared,
+        &target,
+        &LitShader::new(&prepared.scene, camera),
+        framebuffer,
+    );
+}
+
+#[test]
+fn a_masked_render_writes_its_pixels_and_leaves_the_rest() {
+    let far = sphere_from(
+        preset("big-sphere-dimples").unwrap().camera.eye * 3.0,
+        Vec3::splat(0.1),
+    );
+    let want = fresh(&far, SMALL);
+    let mask = scattered_mask(SMALL);
+    let weight = 0.25;
+    for blend in [Blend::Replace, Blend::Add(weight)] {
+        let before = scribbled(SMALL);
+        let mut got = before.clone();
+        render_as(&far, Some(&mask), blend, &mut got);
+        for (i, &wanted) in mask.iter().enumerate() {
+            let (colour, depth) = if !wanted {
+                (before.color()[i], before.depth()[i])
+            } else if blend == Blend::Replace {
+                (want.color()[i], want.depth()[i])
+            } else {
+                (
+                    before.color()[i] + want.color()[i] * weight,
+                    want.depth()[i],
+                )
+            };
+            let what = format!("{blend:?} at pixel {i}, wanted {wanted}");
+            assert_eq!(
+                got.color()[i].to_array().map(f32::to_bits),
+                colour.to_array().map(f32::to_bits),
+                "{what}"
+            );
+            assert_eq!(got.depth()[i].to_bits(), depth.to_bits(), "{what}");
+        }
+    }
+}
+
+#[test]
+fn an_adding_render_neither_trusts_nor_leaves_known_background() {
+    let far = sphere_from(
+        preset("big-sphere-dimples").unwrap().camera.eye * 3.0,
+        Vec3::splat(0.1),
+    );
+    let want = fresh(&far, SMALL);
+    let mut reused = Framebuffer::new(0, 0, Vec3::ZERO);
+    // The first render records its background tiles; the adding one must still add to them.
+    render_as(&far, None, Blend::Replace, &mut reused);
+    render_as(&far, None, Blend::Add(0.5), &mut reused);
+    let doubled: Vec<Vec3> = want.color().iter().map(|&c| c + c * 0.5).collect();
+    let expected =
+        Framebuffer::from_parts(SMALL.width, SMALL.height, doubled, want.depth().to_vec());
+    assert_same(&reused, &expected, "replace then add");
+    // Nor may the sums be taken for background by the next replacing render.
+    render_as(&far, None, Blend::Replace, &mut reused);
+    assert_same(&reused, &want, "add then replace");
 }

@@ -13,6 +13,15 @@ pub struct Framebuffer {
     known_background: KnownBackground,
 }
 
+/// How a render's colours meet what the framebuffer holds; depth is always replaced.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub enum Blend {
+    #[default]
+    Replace,
+    /// Adds colour × weight: supersampling's passes summed in place, in pass order.
+    Add(f32),
+}
+
 /// The tiles the last render left holding only background, so the next render of the same
 /// size and background need not write them again: most of a frame is background, and
 /// rewriting 16 bytes a pixel of it was a sixth of a 1080p frame. Forgotten on any mutable

@@ -2,7 +2,7 @@ use super::bin::{TILE_SIZE, TileBins};
 use super::camera::Camera;
 use super::clip::{ClipVertex, clip_triangle, needs_no_clipping};
 use super::fragment::{FragmentShader, FrameObject};
-use super::framebuffer::Framebuffer;
+use super::framebuffer::{Blend, Framebuffer};
 use super::setup::{ScreenTriangle, TrianglePlanes, Viewport};
 use super::tile::{StripOutput, TileBuffers, TileFrame};
 use super::window::ImageWindow;
@@ -70,6 +70,7 @@ pub struct RenderTarget<'a> {
     /// Only these pixels (row-major over the viewport) are rendered; the rest of the
     /// framebuffer is left as it was, and tiles with none of them are skipped whole.
     pub mask: Option<&'a [bool]>,
+    pub blend: Blend,
 }
 
 impl<'a> RenderTarget<'a> {
@@ -82,6 +83,7 @@ impl<'a> RenderTarget<'a> {
             window: ImageWindow::whole(viewport),
             footprint: 1.0,
             mask: None,
+            blend: Blend::Replace,
         }
     }
 
@@ -186,6 +188,9 @@ pub fn render_into(
     let (color, depth, known_background) =
         framebuffer.tiles_mut((bins.tiles_x, bins.tiles_y), background);
     let strip = (TILE_SIZE * viewport.width) as usize;
+    // Whether a tile's known background can be relied on and recorded: only when this render
+    // writes every pixel and replaces what was there.
+    let whole_and_replacing = target.mask.is_none() && target.blend == Blend::Replace;
     let (fragments, flattened) = color
         .par_chunks_mut(strip)
         .zip(depth.par_chunks_mut(strip))
@@ -209,20 +214,21 @@ pub fn render_into(
                         first_row: rect.y0,
                         background,
                         mask,
+                        blend: target.blend,
                     };
                     if !out.any_wanted(&rect) {
                         continue;
                     }
                     if bin.is_empty() {
-                        if !*known_background {
+                        if !(whole_and_replacing && *known_background) {
                             out.fill_background(&rect);
-                            *known_background = true;
                         }
+                        *known_background = whole_and_replacing;
                         continue;
                     }
                     tile.resolve_visibility(&triangles, bin, &rect);
                     let (shaded, flattened) = tile.shade(&triangles, &frame, scratch, &rect, out);
-                    *known_background = shaded == 0 && mask.is_none();
+                    *known_background = shaded == 0 && whole_and_replacing;
                     counts = (counts.0 + shaded, counts.1 + flattened);
                 }
                 counts

@@ -3,10 +3,12 @@
 
 use super::bin::TILE_SIZE;
 use super::fragment::{Fragment, FragmentShader, FrameObject};
+use super::framebuffer::Blend;
 use super::row_runs::{PixelKind, RowRuns};
 use super::scan::{PixelRect, RowSpan, triangle_rows};
 use super::setup::ScreenTriangle;
 use glam::{Vec2, Vec3};
+use std::ops::Range;
 
 const TILE_PIXELS: usize = (TILE_SIZE * TILE_SIZE) as usize;
 
@@ -20,7 +22,7 @@ pub struct TileBuffers {
     /// The batch being shaded, and where each of its fragments goes.
     fragments: Vec<Fragment>,
     /// The framebuffer pixels of the batch's fragments, as runs along rows.
-    visible_runs: Vec<std::ops::Range<usize>>,
+    visible_runs: Vec<Range<usize>>,
     colors: Vec<Vec3>,
 }
 
@@ -45,6 +47,7 @@ pub struct StripOutput<'a> {
     pub background: Vec3,
     /// The strip's pixels to write (`None`: all); see `RenderTarget::mask`.
     pub mask: Option<&'a [bool]>,
+    pub blend: Blend,
 }
 
 impl StripOutput<'_> {
@@ -59,12 +62,59 @@ impl StripOutput<'_> {
         })
     }
 
-    pub fn fill_background(self, rect: &PixelRect) {
+    /// Writes the background over the wanted pixels of `rect`.
+    pub fn fill_background(mut self, rect: &PixelRect) {
+        const NOTHING_DRAWN: [f32; TILE_SIZE as usize] = [0.0; TILE_SIZE as usize];
+        let width = (rect.x1 - rect.x0 + 1) as usize;
         for y in rect.y0..=rect.y1 {
-            let row = ((y - self.first_row) * self.width) as usize;
-            let span = row + rect.x0 as usize..=row + rect.x1 as usize;
-            fill_colour(&mut self.color[span.clone()], self.background);
-            self.depth[span].fill(f32::INFINITY);
+            let row = ((y - self.first_row) * self.width) as usize + rect.x0 as usize;
+            let wanted = self.mask.map(|mask| &mask[row..row + width]);
+            for (_, xs) in RowRuns::new(&NOTHING_DRAWN[..width], wanted) {
+                self.background_run(row + xs.start as usize..row + xs.end as usize);
+            }
+        }
+    }
+
+    /// Writes the background over `pixels`.
+    fn background_run(&mut self, pixels: Range<usize>) {
+        let colors = &mut self.color[pixels.clone()];
+        match self.blend {
+            Blend::Replace => fill_colour(colors, self.background),
+            Blend::Add(weight) => {
+                let added = self.background * weight;
+                colors.iter_mut().for_each(|c| *c += added);
+            }
+        }
+        self.depth[pixels].fill(f32::INFINITY);
+    }
+
+    /// Writes shaded fragments over `runs` of pixels, as many as the runs hold, in order.
+    fn shaded_runs(&mut self, runs: &[Range<usize>], fragments: &[Fragment], colors: &[Vec3]) {
+        match self.blend {
+            Blend::Replace => self.put_shaded(runs, fragments, colors, |pixel, c| *pixel = c),
+            Blend::Add(weight) => {
+                self.put_shaded(runs, fragments, colors, |pixel, c| *pixel += c * weight)
+            }
+        }
+    }
+
+    #[inline(always)]
+    fn put_shaded(
+        &mut self,
+        runs: &[Range<usize>],
+        fragments: &[Fragment],
+        colors: &[Vec3],
+        put: impl Fn(&mut Vec3, Vec3),
+    ) {
+        let mut shaded = fragments.iter().zip(colors);
+        for pixels in runs {
+            let pixels = self.color[pixels.clone()]
+                .iter_mut()
+                .zip(&mut self.depth[pixels.clone()]);
+            for ((pixel, depth), (fragment, &colour)) in pixels.zip(&mut shaded) {
+                put(pixel, colour);
+                *depth = fragment.depth;
+            }
         }
     }
 }
@@ -123,7 +173,7 @@ impl TileBuffers {
         frame: &TileFrame<S>,
         scratch: &mut S::Scratch,
         rect: &PixelRect,
-        out: StripOutput,
+        mut out: StripOutput,
     ) -> (usize, usize) {
         self.fragments.clear();
         self.visible_runs.clear();
@@ -136,10 +186,7 @@ impl TileBuffers {
             for (kind, xs) in RowRuns::new(&self.inv_w[first_slot..first_slot + width], wanted) {
                 let pixels = row + xs.start as usize..row + xs.end as usize;
                 match kind {
-                    PixelKind::Background => {
-                        fill_colour(&mut out.color[pixels.clone()], out.background);
-                        out.depth[pixels].fill(f32::INFINITY);
-                    }
+                    PixelKind::Background => out.background_run(pixels),
                     PixelKind::Visible => {
                         self.fragments.extend(xs.map(|i| {
                             let t = &triangles[slots[i as usize] as usize];
@@ -155,16 +202,7 @@ impl TileBuffers {
             frame
                 .shader
                 .shade(frame.objects, &self.fragments, scratch, &mut self.colors);
-        let mut shaded = self.fragments.iter().zip(&self.colors);
-        for pixels in &self.visible_runs {
-            let colors = out.color[pixels.clone()].iter_mut();
-            for ((color, depth), (fragment, &shaded_color)) in
-                colors.zip(&mut out.depth[pixels.clone()]).zip(&mut shaded)
-            {
-                *color = shaded_color;
-                *depth = fragment.depth;
-            }
-        }
+        out.shaded_runs(&self.visible_runs, &self.fragments, &self.colors);
         (self.fragments.len(), flattened)
     }
 }

@@ -4,15 +4,16 @@
 use super::contrast::contrast_mask;
 use super::samples::Supersampling;
 use crate::raster::{
-    Camera, FragmentShader, FrameStats, Framebuffer, ImageWindow, Interpolation, PreparedScene,
-    RenderTarget, TILE_SIZE, Viewport, render_into,
+    Blend, Camera, FragmentShader, FrameStats, Framebuffer, ImageWindow, Interpolation,
+    PreparedScene, RenderTarget, TILE_SIZE, Viewport, render_into,
 };
 use glam::{Vec2, Vec3};
 use rayon::prelude::*;
 use std::ops::Range;
 
-/// Bytes a band may hold per pixel: the pass framebuffer (colour and depth) and the sum.
-const BYTES_PER_BAND_PIXEL: u64 = 28;
+/// Bytes a band may hold per pixel: the framebuffer its passes add into (colour and depth) and
+/// the adaptive mask.
+const BYTES_PER_BAND_PIXEL: u64 = 17;
 
 /// Rows per band for a `width`-wide image within `budget_bytes`: whole tiles, at least one.
 pub fn band_rows(width: u32, height: u32, budget_bytes: u64) -> u32 {
@@ -36,23 +37,18 @@ pub struct BandJob<'a, S> {
 
 /// Memory reused from band to band.
 pub struct BandBuffers {
-    pass: Framebuffer,
-    /// The weighted sum of the band's passes: linear RGB, row-major. Unused when the band is
-    /// one full pass, which is its own result (and fresh memory costs a page fault a page).
-    sum: Vec<Vec3>,
+    /// The band: each pass adds its weighted samples into it, in place (linear RGB, row-major).
+    /// Its depth is the last pass's at each pixel.
+    frame: Framebuffer,
     /// Adaptive supersampling: the pixels that get every sample.
     mask: Vec<bool>,
-    /// Whether the last band was one full pass, left in `pass`.
-    single_pass: bool,
 }
 
 impl Default for BandBuffers {
     fn default() -> Self {
         BandBuffers {
-            pass: Framebuffer::new(0, 0, Vec3::ZERO),
-            sum: Vec::new(),
+            frame: Framebuffer::new(0, 0, Vec3::ZERO),
             mask: Vec::new(),
-            single_pass: false,
         }
     }
 }
@@ -60,11 +56,7 @@ impl Default for BandBuffers {
 impl BandBuffers {
     /// The last band rendered, resolved: linear RGB, row-major.
     pub fn resolved(&self) -> &[Vec3] {
-        if self.single_pass {
-            self.pass.color()
-        } else {
-            &self.sum
-        }
+        self.frame.color()
     }
 }
 
@@ -95,8 +87,7 @@ impl<S: FragmentShader> BandJob<'_, S> {
             height: rows.end - rows.start,
         };
         let offsets = self.supersampling.offsets();
-        let weight = 1.0 / offsets.len() as f32;
-        let target = |offset, footprint, mask| RenderTarget {
+        let target = |offset, footprint, mask, blend| RenderTarget {
             window: ImageWindow {
                 full: self.full,
                 x0: 0,
@@ -105,63 +96,65 @@ impl<S: FragmentShader> BandJob<'_, S> {
             },
             footprint,
             mask,
+            blend,
             ..RenderTarget::new(self.camera, viewport).with_interpolation(self.interpolation)
         };
-        buffers.single_pass = offsets.len() == 1 && self.adaptive_threshold().is_none();
-        if buffers.single_pass {
+        let adaptive = self.adaptive_threshold();
+        if offsets.len() == 1 && adaptive.is_none() {
             if !keep_going() {
                 return None;
             }
-            let target = target(offsets[0], self.supersampling.footprint(), None);
-            let stats = render_into(self.prepared, &target, self.shader, &mut buffers.pass);
+            let target = target(
+                offsets[0],
+                self.supersampling.footprint(),
+                None,
+                Blend::Replace,
+            );
+            let stats = render_into(self.prepared, &target, self.shader, &mut buffers.frame);
             on_pass();
             return Some(stats);
         }
-        buffers.sum.clear();
-        let pixels = viewport.width as usize * viewport.height as usize;
         let mut stats = FrameStats::default();
         let mut mask = std::mem::take(&mut buffers.mask);
-        if let Some(threshold) = self.adaptive_threshold() {
+        if let Some(threshold) = adaptive {
             if !keep_going() {
                 return None;
             }
-            let centre = target(Vec2::ZERO, 1.0, None);
-            stats = render_into(self.prepared, &centre, self.shader, &mut buffers.pass);
-            contrast_mask(&buffers.pass, threshold, &mut mask);
+            let centre = target(Vec2::ZERO, 1.0, None, Blend::Replace);
+            stats = render_into(self.prepared, &centre, self.shader, &mut buffers.frame);
+            contrast_mask(&buffers.frame, threshold, &mut mask);
             // A band's outer rows cannot see across the band's border: sample them fully
             // where another band lies beyond (at most 2 rows in 64).
-            let width = viewport.width as usize;
+            let (width, pixels) = (viewport.width as usize, mask.len());
             if rows.start > 0 {
                 mask[..width].fill(true);
             }
             if rows.end < self.full.height {
                 mask[pixels - width..].fill(true);
             }
-            // The sum starts as the centre where that is the pixel's value; in parallel, as
-            // fresh memory costs a page fault a page.
-            let centres = buffers.pass.color().par_iter().zip(&mask);
-            (buffers.sum)
-                .par_extend(centres.map(|(&c, &marked)| if marked { Vec3::ZERO } else { c }));
+            // Marked pixels start their sum from nothing; the rest keep their centre.
+            let colors = buffers.frame.color_mut().par_iter_mut().zip(&mask);
+            colors.for_each(|(c, &marked)| *c = if marked { Vec3::ZERO } else { *c });
             on_pass();
         } else {
-            (buffers.sum).par_extend((0..pixels).into_par_iter().map(|_| Vec3::ZERO));
+            // Every pixel starts its sum from nothing (in parallel: fresh memory costs a page
+            // fault a page).
+            buffers.frame.resize(viewport.width, viewport.height);
+            buffers
+                .frame
+                .color_mut()
+                .par_iter_mut()
+                .for_each(|c| *c = Vec3::ZERO);
         }
-        let only = self.adaptive_threshold().map(|_| &mask[..]);
-        let marked: Vec<usize> = only.map_or_else(Vec::new, |mask| {
-            (0..mask.len()).filter(|&i| mask[i]).collect()
-        });
+        let weight = Blend::Add(1.0 / offsets.len() as f32);
+        let only = adaptive.map(|_| &mask[..]);
         for offset in offsets {
             if !keep_going() {
                 return None;
             }
-            let target = target(offset, self.supersampling.footprint(), only);
-            let pass = render_into(self.prepared, &target, self.shader, &mut buffers.pass);
+            let target = target(offset, self.supersampling.footprint(), only, weight);
+            let pass = render_into(self.prepared, &target, self.shader, &mut buffers.frame);
             stats = add_stats(stats, pass);
-            let (sums, colors) = (&mut buffers.sum, buffers.pass.color());
-            match only {
-                None => (sums.par_iter_mut().zip(colors)).for_each(|(sum, c)| *sum += *c * weight),
-                Some(_) => marked.iter().for_each(|&i| sums[i] += colors[i] * weight),
-            }
             on_pass();
         }
         buffers.mask = mask;
@@ -187,15 +180,6 @@ pub fn render_supersampled<S: FragmentShader>(
     let stats = job
         .render(0..job.full.height, buffers, &|| true, &mut || {})
         .expect("never cancelled");
-    let framebuffer = if buffers.single_pass {
-        std::mem::replace(&mut buffers.pass, Framebuffer::new(0, 0, Vec3::ZERO))
-    } else {
-        Framebuffer::from_parts(
-            job.full.width,
-            job.full.height,
-            std::mem::take(&mut buffers.sum),
-            buffers.pass.take_depth(),
-        )
-    };
+    let framebuffer = std::mem::replace(&mut buffers.frame, Framebuffer::new(0, 0, Vec3::ZERO));
     (framebuffer, stats)
 }
