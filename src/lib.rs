@@ -5,6 +5,7 @@ pub mod diagnostic;
 mod error;
 pub mod export;
 pub mod measure;
+mod memory;
 pub mod pattern;
 pub mod quality;
 pub mod raster;

@@ -129,10 +129,11 @@ impl Framebuffer {
 /// Makes `values` `n` long with contents left to the next render. Growing past its capacity takes
 /// fresh zeroed memory, which the system maps on first touch: the render's parallel tiles then
 /// take those page faults instead of one thread filling the whole buffer beforehand (for a
-/// 1080p still that fill was most of the time spent outside shading).
+/// 1080p still that fill was most of the time spent outside shading), on huge pages where the
+/// system allows (see `memory`).
 fn resize_unspecified<T: bytemuck::Zeroable + Clone>(values: &mut Vec<T>, n: usize) {
     if n > values.capacity() {
-        *values = bytemuck::allocation::zeroed_vec(n);
+        *values = crate::memory::zeroed_huge(n);
     } else {
         values.resize(n, T::zeroed());
     }

