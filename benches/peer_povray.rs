@@ -2,8 +2,10 @@
 //! checked, dimpled plane and a sphere wearing the chelsea photograph and the gravel height map,
 //! at 1920×1080, without and with antialiasing (POV-Ray `-A` / `+A0.3`, bumpwork 1 / 16 samples).
 //! POV-Ray renders the scene `render --format pov` writes (our meshes, our baked maps), so both
-//! draw the same geometry. Medians with min–max over a few runs; skipped (and said so) when
-//! `povray` is not installed.
+//! draw the same geometry. The renderers of a comparison take turns, round by round (this
+//! virtual machine's speed drifts by tens of per cent within minutes), and each ratio is the
+//! median of the rounds' ratios, with the least and greatest; times are medians with min–max.
+//! Skipped (and said so) when `povray` is not installed.
 //!
 //! Run: `cargo bench --bench peer_povray`.
 
@@ -11,7 +13,7 @@ mod bench_support;
 
 use bench_support::write_pov_peer_scene;
 use bumpwork::export::{StillFormat, StillRequest, write_pov, write_still};
-use bumpwork::measure::Timing;
+use bumpwork::measure::{Timing, ratio_by_round};
 use bumpwork::quality::Quality;
 use bumpwork::raster::{Camera, PreparedScene, Viewport};
 use bumpwork::scene::load_scene_file;
@@ -20,6 +22,7 @@ use bumpwork::still::{
     BandBuffers, BandJob, Recipe, ResolveFilter, StillSettings, render_supersampled,
 };
 use std::process::Command;
+use std::time::Duration;
 
 const SIZE: (u32, u32) = (1920, 1080);
 
@@ -68,9 +71,11 @@ fn main() {
         SIZE.1,
         runs()
     );
-    let povray =
-        |antialias: &str| Timing::measure(0, runs(), || run_povray(&dir, &[antialias], "pov.png"));
-    let ours = |samples: u32, adaptive: Option<f32>| {
+    let povray = |antialias: &'static str| {
+        let dir = dir.clone();
+        move || run_povray(&dir, &[antialias], "pov.png")
+    };
+    let request = |samples: u32, adaptive: Option<f32>| {
         let settings = settings(samples, adaptive);
         let recipe = Recipe::capture(
             &scene_path.display().to_string(),
@@ -78,36 +83,36 @@ fn main() {
             &camera,
             &settings,
         );
+        (settings, recipe)
+    };
+    let ours = |(settings, recipe): &(StillSettings, Recipe)| {
         let request = StillRequest {
             prepared: &prepared,
             camera: &camera,
-            settings,
+            settings: *settings,
             scene_text: &text,
-            recipe: &recipe,
+            recipe,
         };
         let out = dir.join("ours.png");
-        Timing::measure(1, runs(), || {
-            write_still(&request, &out, StillFormat::Png, &mut |_| {}, &|| None).expect("still");
-        })
+        write_still(&request, &out, StillFormat::Png, &mut |_| {}, &|| None).expect("still");
     };
-    let report = |label: &str, pov: &Timing, ours: &Timing| {
-        let ratio = pov.median.as_secs_f64() / ours.median.as_secs_f64();
+    let report = |label: &str, pov: &[Duration], ours: &[Duration]| {
+        let (ratio, least, most) = ratio_by_round(pov, ours);
         println!(
-            "  {label:<34} {}   POV-Ray {}   {ratio:.1}x faster",
-            ours.summary_ms(),
-            pov.summary_ms()
+            "  {label:<34} {}   POV-Ray {}   {ratio:.1}x faster (rounds {least:.1}–{most:.1}x)",
+            Timing::from_samples(ours.to_vec()).summary_ms(),
+            Timing::from_samples(pov.to_vec()).summary_ms(),
         );
     };
-    let pov_plain = povray("-A");
-    report("bumpwork 1 spp vs -A", &pov_plain, &ours(1, None));
-    let pov_aa = povray("+A0.3");
+    // Each comparison's renderers take turns after a warm-up round, so drift slows them alike;
+    // each of our stills (tenths of a second) settles with one unmeasured run first, as
+    // POV-Ray's seconds-long runs do within themselves.
+    let one_sample = request(1, None);
+    let (mut pov_plain, mut ours_plain) = (povray("-A"), || ours(&one_sample));
+    let times = Timing::interleaved(1, runs(), &mut [(0, &mut pov_plain), (1, &mut ours_plain)]);
+    report("bumpwork 1 spp vs -A", &times[0], &times[1]);
+
     let pov_aa_error = povray_error(&dir);
-    report("bumpwork 16 spp vs +A0.3", &pov_aa, &ours(16, None));
-    report(
-        &format!("bumpwork 16 spp adaptive {ADAPTIVE} vs +A0.3"),
-        &pov_aa,
-        &ours(16, Some(ADAPTIVE)),
-    );
     println!(
         "  POV-Ray +A0.3 against its own +A0.0 (every pixel supersampled): {}",
         pov_aa_error.describe()
@@ -117,12 +122,32 @@ fn main() {
     let equal_error = errors
         .iter()
         .rev()
-        .find(|(_, error)| error.no_worse_than(&pov_aa_error));
+        .find(|(_, error)| error.no_worse_than(&pov_aa_error))
+        .map(|&(contrast, _)| contrast);
+    let (full, adaptive) = (request(16, None), request(16, Some(ADAPTIVE)));
+    let equal = equal_error.map(|contrast| request(16, Some(contrast)));
+    let (mut pov_aa, mut ours_full) = (povray("+A0.3"), || ours(&full));
+    let (mut ours_adaptive, mut ours_equal) = (|| ours(&adaptive), || equal.iter().for_each(ours));
+    let mut works: Vec<(usize, &mut dyn FnMut())> = vec![
+        (0, &mut pov_aa),
+        (1, &mut ours_full),
+        (1, &mut ours_adaptive),
+    ];
+    if equal.is_some() {
+        works.push((1, &mut ours_equal));
+    }
+    let times = Timing::interleaved(1, runs(), &mut works);
+    report("bumpwork 16 spp vs +A0.3", &times[0], &times[1]);
+    report(
+        &format!("bumpwork 16 spp adaptive {ADAPTIVE} vs +A0.3"),
+        &times[0],
+        &times[2],
+    );
     match equal_error {
-        Some(&(contrast, _)) => report(
+        Some(contrast) => report(
             &format!("16 spp adaptive {contrast}, error <= POV"),
-            &pov_aa,
-            &ours(16, Some(contrast)),
+            &times[0],
+            &times[3],
         ),
         None => println!("  no adaptive contrast tried is as accurate as POV-Ray's +A0.3"),
     }

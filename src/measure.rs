@@ -41,6 +41,30 @@ impl Timing {
         Timing::from_samples(samples)
     }
 
+    /// Runs `works` in turn, round after round: `warmup` unmeasured rounds, then `runs`
+    /// measured ones. Side by side, so a machine whose speed drifts (as virtual machines' does,
+    /// by tens of per cent within minutes) slows them alike. Each work is a number of unmeasured
+    /// runs to settle before its measured one (this machine runs a short task at half speed
+    /// after an idle or a switch of task) and the work. Each work's times, in round order.
+    pub fn interleaved(
+        warmup: usize,
+        runs: usize,
+        works: &mut [(usize, &mut dyn FnMut())],
+    ) -> Vec<Vec<Duration>> {
+        let mut samples = vec![Vec::new(); works.len()];
+        for round in 0..warmup + runs.max(1) {
+            for ((settle, work), samples) in works.iter_mut().zip(&mut samples) {
+                (0..*settle).for_each(|_| work());
+                let start = Instant::now();
+                work();
+                if round >= warmup {
+                    samples.push(start.elapsed());
+                }
+            }
+        }
+        samples
+    }
+
     /// `median ms (min–max)`.
     pub fn summary_ms(&self) -> String {
         let ms = |d: Duration| d.as_secs_f64() * 1e3;
@@ -58,9 +82,53 @@ impl Timing {
     }
 }
 
+/// How many times faster `fast` was than `slow`, round by round (times from
+/// `Timing::interleaved`): the median of the rounds' ratios, with their least and greatest.
+pub fn ratio_by_round(slow: &[Duration], fast: &[Duration]) -> (f64, f64, f64) {
+    let mut ratios: Vec<f64> = slow
+        .iter()
+        .zip(fast)
+        .map(|(s, f)| s.as_secs_f64() / f.as_secs_f64())
+        .collect();
+    assert!(!ratios.is_empty(), "at least one round");
+    ratios.sort_by(f64::total_cmp);
+    (
+        ratios[ratios.len() / 2],
+        ratios[0],
+        ratios[ratios.len() - 1],
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn interleaved_works_take_turns_and_warm_up_unmeasured() {
+        let order = std::cell::RefCell::new(Vec::new());
+        let (mut a, mut b) = (
+            || order.borrow_mut().push('a'),
+            || order.borrow_mut().push('b'),
+        );
+        let samples = Timing::interleaved(1, 3, &mut [(0, &mut a), (1, &mut b)]);
+        assert_eq!(
+            order.into_inner(),
+            "abbabbabbabb".chars().collect::<Vec<_>>()
+        );
+        assert_eq!(samples.iter().map(Vec::len).collect::<Vec<_>>(), [3, 3]);
+    }
+
+    #[test]
+    fn ratios_by_round_take_the_median_round() {
+        let ms = |v: &[u64]| {
+            v.iter()
+                .map(|&m| Duration::from_millis(m))
+                .collect::<Vec<_>>()
+        };
+        // Rounds 10x, 2x and 4x faster: the median round is 4x, whatever the medians of each.
+        let (median, least, most) = ratio_by_round(&ms(&[100, 20, 40]), &ms(&[10, 10, 10]));
+        assert_eq!((median, least, most), (4.0, 2.0, 10.0));
+    }
 
     #[test]
     fn median_and_spread_of_known_samples() {
