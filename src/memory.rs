@@ -1,7 +1,8 @@
 //! Large buffers on huge pages where the system allows. On this project's virtual machines a
 //! first touch of a 4 KiB page costs microseconds and a scattered write misses the TLB: a 1080p
-//! framebuffer is 8 000 such pages but 17 huge ones of 2 MiB. Measured on a 1080p still: 106 →
-//! 92 ms at one sample, 377 → 341 ms at 16 adaptive samples (process medians, 16 and 8 runs).
+//! framebuffer is 8 000 such pages but 17 huge ones of 2 MiB. Measured on a 1080p still, process
+//! medians of alternating runs: 106 → 92–96 ms at one sample (two series of 12 and 16 runs),
+//! 377 → 341 ms at 16 adaptive samples (8 runs).
 
 /// A zeroed buffer of `n` values whose whole pages are marked for huge pages before anything
 /// touches them (Linux transparent huge pages in `madvise` mode; elsewhere a plain zeroed buffer).

@@ -24,6 +24,14 @@ fn sphere_from(eye: DVec3, background: Vec3) -> PreparedScene {
     PreparedScene::new(scene, Tessellation { density: 16 })
 }
 
+/// The sphere from three times as far: most tiles hold only background.
+fn far_sphere(background: Vec3) -> PreparedScene {
+    sphere_from(
+        preset("big-sphere-dimples").unwrap().camera.eye * 3.0,
+        background,
+    )
+}
+
 fn fresh(prepared: &PreparedScene, viewport: Viewport) -> Framebuffer {
     render(
         prepared,
@@ -88,10 +96,7 @@ fn a_reused_framebuffer_matches_a_fresh_one_whatever_came_before() {
 
 #[test]
 fn pixels_written_between_frames_are_not_trusted_as_background() {
-    let far = sphere_from(
-        preset("big-sphere-dimples").unwrap().camera.eye * 3.0,
-        Vec3::ZERO,
-    );
+    let far = far_sphere(Vec3::ZERO);
     let mut reused = Framebuffer::new(0, 0, Vec3::ZERO);
     render_reusing(&far, SMALL, &mut reused);
     // An overlay (the wireframe view draws lines this way) scribbles over background tiles.
@@ -151,10 +156,7 @@ fn render_as(
 
 #[test]
 fn a_masked_render_writes_its_pixels_and_leaves_the_rest() {
-    let far = sphere_from(
-        preset("big-sphere-dimples").unwrap().camera.eye * 3.0,
-        Vec3::splat(0.1),
-    );
+    let far = far_sphere(Vec3::splat(0.1));
     let want = fresh(&far, SMALL);
     let mask = scattered_mask(SMALL);
     let weight = 0.25;
@@ -186,10 +188,7 @@ fn a_masked_render_writes_its_pixels_and_leaves_the_rest() {
 
 #[test]
 fn an_adding_render_neither_trusts_nor_leaves_known_background() {
-    let far = sphere_from(
-        preset("big-sphere-dimples").unwrap().camera.eye * 3.0,
-        Vec3::splat(0.1),
-    );
+    let far = far_sphere(Vec3::splat(0.1));
     let want = fresh(&far, SMALL);
     let mut reused = Framebuffer::new(0, 0, Vec3::ZERO);
     // The first render records its background tiles; the adding one must still add to them.
