@@ -18,7 +18,8 @@ pub struct Framebuffer {
 pub enum Blend {
     #[default]
     Replace,
-    /// Adds colour × weight: supersampling's passes summed in place, in pass order.
+    /// Adds colour × weight: supersampling's passes summed in place, in pass order. The
+    /// framebuffer must already be the render's size and hold what is to be added to.
     Add(f32),
 }
 
