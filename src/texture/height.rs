@@ -2,7 +2,7 @@
 
 use std::path::Path;
 
-use glam::{Mat2, Vec2, Vec3};
+use glam::{Mat2, Vec2, Vec3, Vec4};
 
 use super::colour::Texel;
 use super::encoding::Encoding;
@@ -114,37 +114,48 @@ impl HeightMap {
     }
 }
 
-/// Catmull-Rom on a 4×4 neighbourhood, with the derivatives of its weights.
+/// Catmull-Rom on a 4×4 neighbourhood, with the derivatives of its weights. The four rows
+/// are weighted into one column sum (and its slope along t) four lanes at a time, then the
+/// columns are weighted along s: three dot products instead of sixteen scalar taps.
 fn bicubic(level: &Raster<f32>, st: Vec2, wrap_s: Wrap, wrap_t: Wrap) -> HeightSample {
-    let (xs, fx) = cubic_taps(wrap_s, st.x, level.width());
-    let (ys, fy) = cubic_taps(wrap_t, st.y, level.height());
-    let (wx, dx) = (catmull_rom(fx), catmull_rom_slope(fx));
+    let (x, fx) = first_tap(wrap_s, st.x, level.width());
+    let (y, fy) = first_tap(wrap_t, st.y, level.height());
     let (wy, dy) = (catmull_rom(fy), catmull_rom_slope(fy));
-    let mut out = HeightSample::default();
-    for (j, &y) in ys.iter().enumerate() {
-        let mut row = 0.0;
-        let mut row_slope = 0.0;
-        for (i, &x) in xs.iter().enumerate() {
-            let h = level.at(x, y);
-            row += wx[i] * h;
-            row_slope += dx[i] * h;
-        }
-        out.height += wy[j] * row;
-        out.dh_ds += wy[j] * row_slope;
-        out.dh_dt += dy[j] * row;
+    let mut column = Vec4::ZERO;
+    let mut column_slope = Vec4::ZERO;
+    for j in 0..4 {
+        let row = row_taps(level, wrap_s, x, wrap_t.index(y + j as i32, level.height()));
+        column += row * wy[j];
+        column_slope += row * dy[j];
     }
+    let (wx, dx) = (catmull_rom(fx), catmull_rom_slope(fx));
+    let (wx, dx) = (Vec4::from_array(wx), Vec4::from_array(dx));
     // Per texel → per unit of texture coordinate.
-    out.dh_ds *= level.width() as f32;
-    out.dh_dt *= level.height() as f32;
-    out
+    HeightSample {
+        height: column.dot(wx),
+        dh_ds: column.dot(dx) * level.width() as f32,
+        dh_dt: column_slope.dot(wx) * level.height() as f32,
+    }
 }
 
-fn cubic_taps(wrap: Wrap, s: f32, n: u32) -> ([u32; 4], f32) {
+/// The first of the four taps along an axis of `n` texels (unwrapped: it and the next three
+/// go through `wrap`) and the fraction between the second and third.
+#[inline(always)]
+fn first_tap(wrap: Wrap, s: f32, n: u32) -> (i32, f32) {
     let x = wrap.reduce(s) * n as f32 - 0.5;
     let x0 = floor(x);
-    let i = x0 as i32;
-    let taps = [i - 1, i, i + 1, i + 2].map(|k| wrap.index(k, n));
-    (taps, x - x0)
+    (x0 as i32 - 1, x - x0)
+}
+
+/// Texels `x .. x + 4` of row `y`, wrapped; away from the edges one unaligned load.
+#[inline(always)]
+fn row_taps(level: &Raster<f32>, wrap: Wrap, x: i32, y: u32) -> Vec4 {
+    let row = level.row(y);
+    let n = level.width();
+    match usize::try_from(x) {
+        Ok(first) if first + 4 <= row.len() => Vec4::from_slice(&row[first..first + 4]),
+        _ => Vec4::from_array([0, 1, 2, 3].map(|k| row[wrap.index(x + k, n) as usize])),
+    }
 }
 
 fn catmull_rom(f: f32) -> [f32; 4] {
@@ -189,6 +200,54 @@ mod tests {
             assert!((catmull_rom(f).iter().sum::<f32>() - 1.0).abs() < 1e-6);
             assert!(catmull_rom_slope(f).iter().sum::<f32>().abs() < 1e-6);
         }
+    }
+
+    /// The sixteen taps one at a time, as the weights define the reconstruction.
+    fn bicubic_by_taps(level: &Raster<f32>, st: Vec2, wrap_s: Wrap, wrap_t: Wrap) -> HeightSample {
+        let (x, fx) = first_tap(wrap_s, st.x, level.width());
+        let (y, fy) = first_tap(wrap_t, st.y, level.height());
+        let (wx, dx) = (catmull_rom(fx), catmull_rom_slope(fx));
+        let (wy, dy) = (catmull_rom(fy), catmull_rom_slope(fy));
+        let mut out = HeightSample::default();
+        for j in 0..4 {
+            for i in 0..4 {
+                let tx = wrap_s.index(x + i as i32, level.width());
+                let ty = wrap_t.index(y + j as i32, level.height());
+                let h = f64::from(level.at(tx, ty));
+                out.height += (f64::from(wx[i] * wy[j]) * h) as f32;
+                out.dh_ds += (f64::from(dx[i] * wy[j]) * h) as f32;
+                out.dh_dt += (f64::from(wx[i] * dy[j]) * h) as f32;
+            }
+        }
+        out.dh_ds *= level.width() as f32;
+        out.dh_dt *= level.height() as f32;
+        out
+    }
+
+    #[test]
+    fn vectorised_taps_agree_with_tap_by_tap_sums_across_every_edge() {
+        let level = Raster::from_fn(7, 5, |x, y| ((x * 13 + y * 29) % 11) as f32 / 10.0);
+        let wraps = [Wrap::Repeat, Wrap::Clamp, Wrap::Mirror];
+        let mut checked = 0;
+        for k in 0..4000 {
+            // Coordinates over several periods, both signs, edges included.
+            let st = Vec2::new(k as f32 * 0.00137 - 2.3, 3.1 - k as f32 * 0.00211);
+            for (wrap_s, wrap_t) in wraps.into_iter().flat_map(|a| wraps.map(|b| (a, b))) {
+                let (fast, taps) = (
+                    bicubic(&level, st, wrap_s, wrap_t),
+                    bicubic_by_taps(&level, st, wrap_s, wrap_t),
+                );
+                let close = |a: f32, b: f32| (a - b).abs() <= 2e-5 * b.abs().max(1.0);
+                assert!(
+                    close(fast.height, taps.height)
+                        && close(fast.dh_ds, taps.dh_ds)
+                        && close(fast.dh_dt, taps.dh_dt),
+                    "{st} {wrap_s:?} {wrap_t:?}: {fast:?} against {taps:?}"
+                );
+                checked += 1;
+            }
+        }
+        assert_eq!(checked, 4000 * 9);
     }
 
     #[test]

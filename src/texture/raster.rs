@@ -51,6 +51,13 @@ impl<T: Copy> Raster<T> {
         self.texels[y as usize * self.width as usize + x as usize]
     }
 
+    /// Row `y` (callers keep it in range).
+    #[inline(always)]
+    pub fn row(&self, y: u32) -> &[T] {
+        let start = y as usize * self.width as usize;
+        &self.texels[start..start + self.width as usize]
+    }
+
     pub fn map<U: Copy>(&self, f: impl Fn(T) -> U) -> Raster<U> {
         Raster {
             width: self.width,
