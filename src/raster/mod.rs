@@ -22,7 +22,7 @@ pub use bin::{TILE_SIZE, TileBins};
 pub use camera::Camera;
 pub use clip::{ClipVertex, clip_triangle};
 pub use fragment::{Fragment, FragmentShader, FrameObject, PerFragment};
-pub use framebuffer::{Blend, Framebuffer, linear_to_srgb8};
+pub use framebuffer::{Blend, Framebuffer, encode_srgb8, linear_to_srgb8};
 pub use pipeline::{
     FrameStats, Interpolation, PreparedObject, PreparedScene, RenderTarget, frame_objects, render,
     render_into, render_with, screen_triangles,
