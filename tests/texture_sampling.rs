@@ -236,10 +236,20 @@ fn batch_sampling_equals_one_at_a_time() {
         points.push(Vec2::new(s, -s));
     }
     points.extend([Vec2::NAN, Vec2::INFINITY, Vec2::NEG_INFINITY]);
-    let footprints: Vec<Footprint> = (0..points.len())
+    // Growing footprints, and footprints magnified everywhere but at one point of the third
+    // chunk of 64 (trilinear takes the bilinear batch where a whole chunk is magnified).
+    let growing: Vec<Footprint> = (0..points.len())
         .map(|i| Footprint::new(i as f32 * 0.01, 0.0, 0.0, 0.02))
         .collect();
-    for filter in [Filter::Nearest, Filter::Bilinear, Filter::Trilinear] {
+    let mostly_magnified: Vec<Footprint> = (0..points.len())
+        .map(|i| Footprint::new(if i == 140 { 0.5 } else { 0.01 }, 0.0, 0.0, 0.02))
+        .collect();
+    for (filter, footprints) in [
+        (Filter::Nearest, &growing),
+        (Filter::Bilinear, &growing),
+        (Filter::Trilinear, &growing),
+        (Filter::Trilinear, &mostly_magnified),
+    ] {
         for (wrap_s, wrap_t) in [
             (Wrap::Repeat, Wrap::Repeat),
             (Wrap::Clamp, Wrap::Mirror),
@@ -252,12 +262,12 @@ fn batch_sampling_equals_one_at_a_time() {
             };
             let mut batch = vec![Texel::ZERO; points.len()];
             let given: &[Footprint] = if filter.uses_footprint() {
-                &footprints
+                footprints
             } else {
                 &[]
             };
             sampler.sample_many(texture.mip_chain(), &points, given, &mut batch);
-            for ((p, f), b) in points.iter().zip(&footprints).zip(&batch) {
+            for ((p, f), b) in points.iter().zip(footprints).zip(&batch) {
                 let one = texture.sample(&sampler, *p, *f);
                 assert!(
                     one.to_array().map(f32::to_bits) == b.to_array().map(f32::to_bits),
