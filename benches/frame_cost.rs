@@ -3,19 +3,26 @@
 //! shader and quality, no file written), or that scene at 16 samples as the POV-Ray peer renders
 //! it, adaptive at CONTRAST if given. Prints the fragments shaded per frame; run it with two
 //! frame counts and divide the difference in instructions by the difference in fragments.
+//! `still` writes the POV-Ray peer's 1-sample PNG still FRAMES times as `peer_povray` does
+//! (render, 8-bit conversion, PNG encoding, sync) and prints the wall time's median and range,
+//! for comparing two builds run one after the other.
 //!
-//! Run: `cargo bench --bench frame_cost -- euc|pov|pov16 FRAMES [CONTRAST]`, e.g. under
+//! Run: `cargo bench --bench frame_cost -- euc|pov|pov16|still FRAMES [CONTRAST]`, e.g. under
 //! `valgrind --tool=callgrind target/release/deps/frame_cost-* euc 3`.
 
 mod bench_support;
 
 use bench_support::{textured_sphere_scene, write_pov_peer_scene};
+use bumpwork::export::{StillFormat, StillRequest, write_still};
+use bumpwork::measure::Timing;
 use bumpwork::quality::Quality;
 use bumpwork::raster::{
     Camera, FragmentShader, Framebuffer, PreparedScene, RenderTarget, Viewport, render_into,
 };
 use bumpwork::scene::load_scene_file;
-use bumpwork::still::{BandBuffers, BandJob, ResolveFilter, Supersampling, render_supersampled};
+use bumpwork::still::{
+    BandBuffers, BandJob, Recipe, ResolveFilter, StillSettings, Supersampling, render_supersampled,
+};
 use bumpwork::surface::Tessellation;
 use glam::Vec3;
 
@@ -32,6 +39,39 @@ fn frames(prepared: &PreparedScene, camera: &Camera, shader: &impl FragmentShade
         fragments = render_into(prepared, &target, shader, &mut framebuffer).fragments;
     }
     println!("{n} frames of {fragments} fragments");
+}
+
+/// `n` one-sample 1080p PNG stills of the POV-Ray peer's scene, after one that settles the
+/// machine; prints their wall times.
+fn stills(n: usize) {
+    let dir = std::env::temp_dir().join(format!("bumpwork-still-cost-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let scene_path = write_pov_peer_scene(&dir);
+    let text = std::fs::read_to_string(&scene_path).expect("scene text");
+    let scene = load_scene_file(&scene_path).expect("peer scene");
+    let camera = scene.camera.clone();
+    let settings = StillSettings {
+        size: (VIEWPORT.width, VIEWPORT.height),
+        quality: Quality::interactive(),
+        resolve: ResolveFilter::Box,
+        time: 0.0,
+        mode: bumpwork::shade::ViewMode::Shaded,
+    };
+    let prepared = settings.prepare(scene, &camera);
+    let recipe = Recipe::capture("peer", &prepared.scene, &camera, &settings);
+    let request = StillRequest {
+        prepared: &prepared,
+        camera: &camera,
+        settings,
+        scene_text: &text,
+        recipe: &recipe,
+    };
+    let out = dir.join("still.png");
+    let timing = Timing::measure(1, n, || {
+        write_still(&request, &out, StillFormat::Png, &mut |_| {}, &|| None).expect("still");
+    });
+    println!("{n} stills: {}", timing.summary_ms());
+    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// The POV-Ray peer's scene, prepared at the interactive quality it is benchmarked at.
@@ -82,6 +122,7 @@ fn main() {
             }
             println!("{n} frames of {fragments} fragments");
         }
+        "still" => stills(n),
         _ => {
             let (scene, _) = textured_sphere_scene();
             let camera = scene.camera.clone();

@@ -71,7 +71,14 @@ pub struct RenderTarget<'a> {
     /// framebuffer is left as it was, and tiles with none of them are skipped whole.
     pub mask: Option<&'a [bool]>,
     pub blend: Blend,
+    /// Told of each strip of `TILE_SIZE` rows (its index from the top, its colour row-major) as
+    /// soon as this render has finished it, on the thread that rendered it, in no set order: a
+    /// still converts and encodes its rows while the rest of the frame renders.
+    pub finished_strips: Option<&'a FinishedStrips>,
 }
+
+/// See `RenderTarget::finished_strips`.
+pub type FinishedStrips = dyn Fn(usize, &[Vec3]) + Sync;
 
 impl<'a> RenderTarget<'a> {
     /// The whole `viewport` seen by `camera`, one perspective-correct sample at each pixel centre.
@@ -84,6 +91,7 @@ impl<'a> RenderTarget<'a> {
             footprint: 1.0,
             mask: None,
             blend: Blend::Replace,
+            finished_strips: None,
         }
     }
 
@@ -230,6 +238,9 @@ pub fn render_into(
                     let (shaded, flattened) = tile.shade(&triangles, &frame, scratch, &rect, out);
                     *known_background = shaded == 0 && whole_and_replacing;
                     counts = (counts.0 + shaded, counts.1 + flattened);
+                }
+                if let Some(finished) = target.finished_strips {
+                    finished(ty, color);
                 }
                 counts
             },

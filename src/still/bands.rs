@@ -4,8 +4,8 @@
 use super::contrast::contrast_mask;
 use super::samples::Supersampling;
 use crate::raster::{
-    Blend, Camera, FragmentShader, FrameStats, Framebuffer, ImageWindow, Interpolation,
-    PreparedScene, RenderTarget, TILE_SIZE, Viewport, render_into,
+    Blend, Camera, FinishedStrips, FragmentShader, FrameStats, Framebuffer, ImageWindow,
+    Interpolation, PreparedScene, RenderTarget, TILE_SIZE, Viewport, render_into,
 };
 use glam::{Vec2, Vec3};
 use rayon::prelude::*;
@@ -74,13 +74,15 @@ impl<S: FragmentShader> BandJob<'_, S> {
 
     /// Renders rows `rows` into `buffers` (read back with `resolved`), one pass per sample,
     /// calling `on_pass` after each. `keep_going` is asked before every pass; when it says no,
-    /// the band is abandoned and `None` returned.
+    /// the band is abandoned and `None` returned. `finished_strips` hears each strip of the band
+    /// as the last pass finishes it (see `RenderTarget::finished_strips`).
     pub fn render(
         &self,
         rows: Range<u32>,
         buffers: &mut BandBuffers,
         keep_going: &dyn Fn() -> bool,
         on_pass: &mut dyn FnMut(),
+        finished_strips: Option<&FinishedStrips>,
     ) -> Option<FrameStats> {
         let viewport = Viewport {
             width: self.full.width,
@@ -104,12 +106,15 @@ impl<S: FragmentShader> BandJob<'_, S> {
             if !keep_going() {
                 return None;
             }
-            let target = target(
-                offsets[0],
-                self.supersampling.footprint(),
-                None,
-                Blend::Replace,
-            );
+            let target = RenderTarget {
+                finished_strips,
+                ..target(
+                    offsets[0],
+                    self.supersampling.footprint(),
+                    None,
+                    Blend::Replace,
+                )
+            };
             let stats = render_into(self.prepared, &target, self.shader, &mut buffers.frame);
             on_pass();
             return Some(stats);
@@ -148,11 +153,15 @@ impl<S: FragmentShader> BandJob<'_, S> {
         }
         let weight = Blend::Add(1.0 / offsets.len() as f32);
         let only = adaptive.map(|_| &mask[..]);
-        for offset in offsets {
+        let last = offsets.len() - 1;
+        for (k, offset) in offsets.into_iter().enumerate() {
             if !keep_going() {
                 return None;
             }
-            let target = target(offset, self.supersampling.footprint(), only, weight);
+            let target = RenderTarget {
+                finished_strips: finished_strips.filter(|_| k == last),
+                ..target(offset, self.supersampling.footprint(), only, weight)
+            };
             let pass = render_into(self.prepared, &target, self.shader, &mut buffers.frame);
             stats = add_stats(stats, pass);
             on_pass();
@@ -178,7 +187,7 @@ pub fn render_supersampled<S: FragmentShader>(
     buffers: &mut BandBuffers,
 ) -> (Framebuffer, FrameStats) {
     let stats = job
-        .render(0..job.full.height, buffers, &|| true, &mut || {})
+        .render(0..job.full.height, buffers, &|| true, &mut || {}, None)
         .expect("never cancelled");
     let framebuffer = std::mem::replace(&mut buffers.frame, Framebuffer::new(0, 0, Vec3::ZERO));
     (framebuffer, stats)

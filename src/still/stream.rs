@@ -4,9 +4,12 @@
 use super::bands::{BandBuffers, BandJob, band_rows};
 use crate::raster::{FragmentShader, FrameStats, TILE_SIZE, encode_srgb8};
 use glam::Vec3;
+use std::collections::BTreeMap;
+use std::ops::Range;
+use std::sync::mpsc::{Receiver, channel};
 
 /// Where finished rows go (a PNG or PPM encoder): 3 bytes per pixel, top row first. `Send`, so
-/// it can take one chunk of rows while the next is converted on another thread.
+/// a thread of its own can write a band's first rows while the rest of the band renders.
 pub trait RowSink: Send {
     fn write_rows(&mut self, rgb: &[u8]) -> Result<(), String>;
 }
@@ -33,48 +36,85 @@ pub fn stream_still<S: FragmentShader>(
     let passes = job.full.height.div_ceil(rows_per_band) as f64 * job.passes_per_band() as f64;
     let mut passes_done = 0.0;
     let mut buffers = BandBuffers::default();
-    let mut bytes = [Vec::new(), Vec::new()];
     let mut stats = FrameStats::default();
     for start in (0..job.full.height).step_by(rows_per_band as usize) {
         let end = (start + rows_per_band).min(job.full.height);
-        let band = job
-            .render(start..end, &mut buffers, keep_going, &mut || {
-                passes_done += 1.0;
-                progress(passes_done / passes);
-            })
-            .ok_or(StillStop::Cancelled)?;
+        let mut on_pass = || {
+            passes_done += 1.0;
+            progress(passes_done / passes);
+        };
+        let (band, written) = render_and_write(
+            job,
+            start..end,
+            &mut buffers,
+            sink,
+            keep_going,
+            &mut on_pass,
+        );
+        let band = band.ok_or(StillStop::Cancelled)?;
+        written.map_err(StillStop::Write)?;
         stats.triangles = band.triangles;
         stats.fragments += band.fragments;
         stats.flattened += band.flattened;
         stats.rasterized_triangles += band.rasterized_triangles;
-        // A tile's height of rows at a time: the 8-bit copy stays small and in cache.
-        let rows = job.full.width as usize * TILE_SIZE as usize;
-        write_srgb(buffers.resolved(), rows, sink, &mut bytes).map_err(StillStop::Write)?;
     }
     Ok(stats)
 }
 
-/// Hands `linear` to `sink` as 8-bit sRGB, `pixels_per_write` pixels at a time. Each chunk is
-/// converted while the sink takes the one before (a PNG's deflate is serial), on another thread
-/// when rayon has one; `bytes` are the two chunks' buffers, reused.
-fn write_srgb(
-    linear: &[Vec3],
-    pixels_per_write: usize,
+/// Renders one band while a thread of its own writes it to `sink`: the last pass converts each
+/// strip of `TILE_SIZE` rows to 8-bit sRGB as it finishes it (still in cache), and the writer
+/// takes the strips in order, so a PNG's deflate (serial) runs beside the render instead of
+/// after it. The band's render and the writing's result.
+fn render_and_write<S: FragmentShader>(
+    job: &BandJob<S>,
+    rows: Range<u32>,
+    buffers: &mut BandBuffers,
     sink: &mut dyn RowSink,
-    bytes: &mut [Vec<u8>; 2],
+    keep_going: &dyn Fn() -> bool,
+    on_pass: &mut dyn FnMut(),
+) -> (Option<FrameStats>, Result<(), String>) {
+    let strip_count = (rows.end - rows.start).div_ceil(TILE_SIZE) as usize;
+    let (strips, finished) = channel();
+    std::thread::scope(|scope| {
+        let writer = scope.spawn(move || write_in_order(finished, strip_count, sink));
+        let convert = move |strip: usize, linear: &[Vec3]| {
+            let mut bytes = Vec::new();
+            to_srgb_bytes(linear, &mut bytes);
+            // Refused only once the writer has stopped on a failed write, which it reports.
+            let _ = strips.send((strip, bytes));
+        };
+        let band = job.render(rows, buffers, keep_going, on_pass, Some(&convert));
+        drop(convert); // closes the channel: the writer ends with the last strip
+        let written = writer
+            .join()
+            .unwrap_or_else(|panic| std::panic::resume_unwind(panic));
+        (band, written)
+    })
+}
+
+/// Writes strips (index from the top, 8-bit rows) to `sink` in order of their index, however
+/// they arrive; stops at the first failed write. Every one of `strip_count` strips must come.
+fn write_in_order(
+    strips: Receiver<(usize, Vec<u8>)>,
+    strip_count: usize,
+    sink: &mut dyn RowSink,
 ) -> Result<(), String> {
-    let [ready, next] = bytes;
-    let mut chunks = linear.chunks(pixels_per_write);
-    let Some(first) = chunks.next() else {
-        return Ok(());
-    };
-    to_srgb_bytes(first, ready);
-    for chunk in chunks {
-        let (written, ()) = rayon::join(|| sink.write_rows(ready), || to_srgb_bytes(chunk, next));
-        written?;
-        std::mem::swap(ready, next);
+    let mut waiting = BTreeMap::new();
+    let mut next = 0;
+    for (index, bytes) in strips {
+        waiting.insert(index, bytes);
+        while let Some(bytes) = waiting.remove(&next) {
+            sink.write_rows(&bytes)?;
+            next += 1;
+        }
     }
-    sink.write_rows(ready)
+    if next == strip_count {
+        Ok(())
+    } else {
+        Err(format!(
+            "{next} of {strip_count} strips of rows were rendered"
+        ))
+    }
 }
 
 fn to_srgb_bytes(linear: &[Vec3], bytes: &mut Vec<u8>) {
@@ -85,7 +125,7 @@ fn to_srgb_bytes(linear: &[Vec3], bytes: &mut Vec<u8>) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::raster::linear_to_srgb8;
+    use std::sync::mpsc::Sender;
 
     /// Rows as the sink received them, a write at a time; fails on write number `fail_at`.
     struct Writes {
@@ -103,40 +143,44 @@ mod tests {
         }
     }
 
-    fn gradient(n: usize) -> Vec<Vec3> {
-        let level = |i: usize, k: usize| ((i * k) % 1001) as f32 / 1000.0;
-        (0..n)
-            .map(|i| Vec3::new(level(i, 7), level(i, 13), level(i, 29)))
-            .collect()
+    fn sink(fail_at: Option<usize>) -> Writes {
+        Writes {
+            writes: Vec::new(),
+            fail_at,
+        }
+    }
+
+    /// Sends strips `order` (strip k holds the byte k, k + 1 times) and closes the channel.
+    fn send(order: &[usize]) -> Receiver<(usize, Vec<u8>)> {
+        let (strips, finished): (Sender<_>, _) = channel();
+        for &k in order {
+            strips.send((k, vec![k as u8; k + 1])).unwrap();
+        }
+        finished
     }
 
     #[test]
-    fn chunks_reach_the_sink_in_order_as_their_srgb_bytes() {
-        let linear = gradient(1000);
-        let mut sink = Writes {
-            writes: Vec::new(),
-            fail_at: None,
-        };
-        let result = write_srgb(&linear, 300, &mut sink, &mut [Vec::new(), Vec::new()]);
+    fn strips_arriving_in_any_order_are_written_top_first() {
+        let mut rows = sink(None);
+        let result = write_in_order(send(&[2, 0, 4, 1, 3]), 5, &mut rows);
         assert_eq!(result, Ok(()));
-        let sizes: Vec<usize> = sink.writes.iter().map(Vec::len).collect();
-        assert_eq!(sizes, [900, 900, 900, 300]);
-        let expected: Vec<u8> = linear
-            .iter()
-            .flat_map(|c| c.to_array().map(linear_to_srgb8))
-            .collect();
-        assert_eq!(sink.writes.concat(), expected);
+        let expected: Vec<Vec<u8>> = (0..5).map(|k| vec![k as u8; k + 1]).collect();
+        assert_eq!(rows.writes, expected);
     }
 
     #[test]
     fn a_failing_sink_stops_the_rows_with_its_reason() {
-        let linear = gradient(1000);
-        let mut sink = Writes {
-            writes: Vec::new(),
-            fail_at: Some(1),
-        };
-        let result = write_srgb(&linear, 300, &mut sink, &mut [Vec::new(), Vec::new()]);
+        let mut rows = sink(Some(1));
+        let result = write_in_order(send(&[0, 1, 2]), 3, &mut rows);
         assert_eq!(result, Err("disk full".to_string()));
-        assert_eq!(sink.writes.len(), 1, "nothing written after the failure");
+        assert_eq!(rows.writes.len(), 1, "nothing written after the failure");
+    }
+
+    #[test]
+    fn a_missing_strip_is_an_error_not_a_shorter_image() {
+        let mut rows = sink(None);
+        let result = write_in_order(send(&[0, 2]), 3, &mut rows);
+        assert!(result.is_err());
+        assert_eq!(rows.writes.len(), 1, "only the rows before the gap");
     }
 }
