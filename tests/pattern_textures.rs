@@ -1,5 +1,6 @@
 //! Stripes and checks use a floored modulo: periodic, and the same size across 0
-//! (unlike the seed's `x % 50`, which mirrors there).
+//! (unlike the seed's `x % 50`, which mirrors there). Checks are solid (x, y and z), so every
+//! plane parallel to a coordinate plane shows squares.
 
 mod pattern_support;
 
@@ -44,18 +45,77 @@ fn stripes_are_periodic_across_zero() {
     assert_eq!(red, here.len() / 2, "stripes keep equal widths across 0");
 }
 
-#[test]
-fn checks_are_periodic_in_x_and_y_across_zero() {
+const CYAN: [f32; 3] = [0.0, 1.0, 1.0];
+const MAGENTA: [f32; 3] = [1.0, 0.0, 1.0];
+
+/// The shipped checks at object points (x, y, z).
+fn checks_at(points: &[[f32; 3]]) -> Vec<[f32; 3]> {
     let checks = shipped("checks");
-    let e = 0.01;
-    for (x, y) in [(-e, -e), (e, -e), (-e, e), (e, e), (-e, 10.0), (10.0, -e)] {
-        let c = colors(&checks, &[at(x, y), at(x + PERIOD, y), at(x, y + PERIOD)]);
-        assert_eq!(c[0], c[1], "period in x at ({x}, {y})");
-        assert_eq!(c[0], c[2], "period in y at ({x}, {y})");
+    let mut batch = pattern_support::Batch::default();
+    for point in points {
+        batch.u.push(0.0);
+        batch.v.push(0.0);
+        for (k, lane) in batch.p.iter_mut().enumerate() {
+            lane.push(if k < 3 { point[k] } else { 0.0 });
+        }
     }
-    let c = colors(&checks, &[at(-e, -e), at(e, -e), at(e, e)]);
-    assert_ne!(c[0], c[1], "colour changes across x = 0");
-    assert_eq!(c[0], c[2], "diagonal neighbours across the corner match");
+    let mut out = vec![[0.0; 3]; points.len()];
+    checks.eval_color(&batch.inputs(), &[], &mut checks.scratch(), &mut out);
+    out
+}
+
+#[test]
+fn checks_are_the_seeds_with_a_floored_modulo_where_z_is_zero() {
+    let low = |a: f32| a.rem_euclid(PERIOD) < PERIOD / 2.0;
+    let points: Vec<[f32; 3]> = (-40..40)
+        .flat_map(|i| (-40..40).map(move |j| [i as f32 * 3.7 + 0.1, j as f32 * 4.3 + 0.2, 0.0]))
+        .collect();
+    for (point, colour) in points.iter().zip(checks_at(&points)) {
+        let [x, y, _] = *point;
+        let seed = if low(x) == low(y) { CYAN } else { MAGENTA };
+        assert_eq!(colour, seed, "at ({x}, {y}, 0)");
+    }
+}
+
+#[test]
+fn checks_are_squares_on_a_plane_parallel_to_each_coordinate_plane_across_zero() {
+    let e = 0.01;
+    // Each plane: a point on it and its two in-plane axes.
+    let planes: [([f32; 3], usize, usize); 3] = [
+        ([0.0, 0.0, 0.0], 0, 2), // the floor, y = 0 (where x and y alone gave stripes)
+        ([0.0, 0.0, -137.0], 0, 1), // a wall z = const
+        ([512.0, 0.0, 0.0], 1, 2), // a wall x = const
+    ];
+    for (origin, a, b) in planes {
+        let along = |da: f32, db: f32| {
+            let mut p = origin;
+            p[a] += da;
+            p[b] += db;
+            p
+        };
+        for (da, db) in [(-e, -e), (e, e), (10.0, -e), (-e, 30.0), (-60.0, 70.0)] {
+            let c = checks_at(&[
+                along(da, db),
+                along(da + PERIOD, db),
+                along(da, db + PERIOD),
+                along(da + PERIOD / 2.0, db),
+                along(da, db + PERIOD / 2.0),
+                along(da + PERIOD / 2.0, db + PERIOD / 2.0),
+            ]);
+            let at = format!("plane through {origin:?}, offset ({da}, {db})");
+            assert_eq!(c[0], c[1], "period along the first axis: {at}");
+            assert_eq!(c[0], c[2], "period along the second axis: {at}");
+            assert_ne!(
+                c[0], c[3],
+                "half a period along the first axis changes it: {at}"
+            );
+            assert_ne!(
+                c[0], c[4],
+                "half a period along the second axis changes it: {at}"
+            );
+            assert_eq!(c[0], c[5], "diagonal neighbours match: {at}");
+        }
+    }
 }
 
 #[test]
