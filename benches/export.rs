@@ -6,7 +6,10 @@
 //!
 //! Run: `cargo bench --bench export`.
 
-use bumpwork::export::{StillFormat, StillRequest, write_png, write_still};
+mod bench_support;
+
+use bench_support::time_png_stills;
+use bumpwork::export::{StillRequest, write_png};
 use bumpwork::measure::Timing;
 use bumpwork::quality::Quality;
 use bumpwork::raster::{PreparedScene, RenderTarget, Viewport, render};
@@ -83,9 +86,7 @@ fn main() {
             scene_text: &text,
             recipe: &recipe,
         };
-        let timing = Timing::measure(1, runs(), || {
-            write_still(&request, &out, StillFormat::Png, &mut |_| {}, &|| None).expect("still");
-        });
+        let timing = time_png_stills(&request, &out, runs());
         let ratio = timing.median.as_secs_f64() / whole.median.as_secs_f64();
         println!(
             "  still, {samples:>2} spp: {}  ({ratio:.2}x the whole-frame path)",

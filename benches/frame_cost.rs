@@ -12,16 +12,17 @@
 
 mod bench_support;
 
-use bench_support::{textured_sphere_scene, write_pov_peer_scene};
-use bumpwork::export::{StillFormat, StillRequest, write_still};
-use bumpwork::measure::Timing;
+use bench_support::{
+    pov_peer_files, pov_peer_settings, textured_sphere_scene, time_png_stills, write_pov_peer_scene,
+};
+use bumpwork::export::StillRequest;
 use bumpwork::quality::Quality;
 use bumpwork::raster::{
     Camera, FragmentShader, Framebuffer, PreparedScene, RenderTarget, Viewport, render_into,
 };
 use bumpwork::scene::load_scene_file;
 use bumpwork::still::{
-    BandBuffers, BandJob, Recipe, ResolveFilter, StillSettings, Supersampling, render_supersampled,
+    BandBuffers, BandJob, Recipe, ResolveFilter, Supersampling, render_supersampled,
 };
 use bumpwork::surface::Tessellation;
 use glam::Vec3;
@@ -46,17 +47,9 @@ fn frames(prepared: &PreparedScene, camera: &Camera, shader: &impl FragmentShade
 fn stills(n: usize) {
     let dir = std::env::temp_dir().join(format!("bumpwork-still-cost-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("temp dir");
-    let scene_path = write_pov_peer_scene(&dir);
-    let text = std::fs::read_to_string(&scene_path).expect("scene text");
-    let scene = load_scene_file(&scene_path).expect("peer scene");
+    let (_, text, scene) = pov_peer_files(&dir);
     let camera = scene.camera.clone();
-    let settings = StillSettings {
-        size: (VIEWPORT.width, VIEWPORT.height),
-        quality: Quality::interactive(),
-        resolve: ResolveFilter::Box,
-        time: 0.0,
-        mode: bumpwork::shade::ViewMode::Shaded,
-    };
+    let settings = pov_peer_settings(1, None);
     let prepared = settings.prepare(scene, &camera);
     let recipe = Recipe::capture("peer", &prepared.scene, &camera, &settings);
     let request = StillRequest {
@@ -67,9 +60,7 @@ fn stills(n: usize) {
         recipe: &recipe,
     };
     let out = dir.join("still.png");
-    let timing = Timing::measure(1, n, || {
-        write_still(&request, &out, StillFormat::Png, &mut |_| {}, &|| None).expect("still");
-    });
+    let timing = time_png_stills(&request, &out, n);
     println!("{n} stills: {}", timing.summary_ms());
     let _ = std::fs::remove_dir_all(&dir);
 }

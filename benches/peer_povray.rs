@@ -11,16 +11,11 @@
 
 mod bench_support;
 
-use bench_support::write_pov_peer_scene;
+use bench_support::{pov_peer_files, pov_peer_settings};
 use bumpwork::export::{StillFormat, StillRequest, write_pov, write_still};
 use bumpwork::measure::{Timing, ratio_by_round};
-use bumpwork::quality::Quality;
 use bumpwork::raster::{Camera, PreparedScene, Viewport};
-use bumpwork::scene::load_scene_file;
-use bumpwork::shade::ViewMode;
-use bumpwork::still::{
-    BandBuffers, BandJob, Recipe, ResolveFilter, StillSettings, render_supersampled,
-};
+use bumpwork::still::{BandBuffers, BandJob, Recipe, StillSettings, render_supersampled};
 use std::process::Command;
 use std::time::Duration;
 
@@ -36,20 +31,6 @@ fn runs() -> usize {
 /// The adaptive supersampling contrast the peer is run with.
 const ADAPTIVE: f32 = 0.05;
 
-fn settings(samples: u32, adaptive_samples: Option<f32>) -> StillSettings {
-    StillSettings {
-        size: SIZE,
-        quality: Quality {
-            samples,
-            adaptive_samples,
-            ..Quality::interactive()
-        },
-        resolve: ResolveFilter::Box,
-        time: 0.0,
-        mode: ViewMode::Shaded,
-    }
-}
-
 fn main() {
     if Command::new("povray").arg("--version").output().is_err() {
         println!("povray is not installed (Debian package `povray`): peer benchmark skipped");
@@ -57,11 +38,9 @@ fn main() {
     }
     let dir = std::env::temp_dir().join(format!("bumpwork-bench-pov-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("temp dir");
-    let scene_path = write_pov_peer_scene(&dir);
-    let text = std::fs::read_to_string(&scene_path).expect("scene text");
-    let scene = load_scene_file(&scene_path).expect("peer scene");
+    let (scene_path, text, scene) = pov_peer_files(&dir);
     let camera = scene.camera.clone();
-    let base = settings(1, None);
+    let base = pov_peer_settings(1, None);
     let prepared = base.prepare(scene, &camera);
     let pov = dir.join("peer.pov");
     write_pov(&prepared, &camera, SIZE, 0.0, &pov).expect("pov scene");
@@ -76,7 +55,7 @@ fn main() {
         move || run_povray(&dir, &[antialias], "pov.png")
     };
     let request = |samples: u32, adaptive: Option<f32>| {
-        let settings = settings(samples, adaptive);
+        let settings = pov_peer_settings(samples, adaptive);
         let recipe = Recipe::capture(
             &scene_path.display().to_string(),
             &prepared.scene,
@@ -228,7 +207,7 @@ fn povray_error(dir: &std::path::Path) -> ChannelError {
 
 /// Adaptive supersampling at each of `CONTRASTS` against full supersampling at 16 samples.
 fn adaptive_errors(prepared: &PreparedScene, camera: &Camera) -> Vec<(f32, ChannelError)> {
-    let base = settings(16, None);
+    let base = pov_peer_settings(16, None);
     let shader = base.quality.shader(prepared, camera);
     let frame = |adaptive| {
         let job = BandJob {

@@ -1,10 +1,16 @@
 //! Scenes shared by the benchmarks.
 #![allow(dead_code)]
 
+use bumpwork::export::{StillFormat, StillRequest, write_still};
+use bumpwork::measure::Timing;
+use bumpwork::quality::Quality;
 use bumpwork::raster::Camera;
 use bumpwork::scene::{
-    BindingFile, ImageTexture, Light, MappingKind, Material, Object, Scene, Texturing, preset_file,
+    BindingFile, ImageTexture, Light, MappingKind, Material, Object, Scene, Texturing,
+    load_scene_file, preset_file,
 };
+use bumpwork::shade::ViewMode;
+use bumpwork::still::{ResolveFilter, StillSettings};
 use bumpwork::surface::{Sphere, Surface};
 use bumpwork::texture::{Filter, Mapping, Sampler, Spherical, Texture, Wrap, load_texture};
 use glam::{DVec3, Vec3};
@@ -96,4 +102,35 @@ pub fn write_pov_peer_scene(dir: &Path) -> PathBuf {
     let path = dir.join("peer.toml");
     std::fs::write(&path, file.to_toml()).expect("scene file");
     path
+}
+
+/// The POV-Ray peer's scene written into `dir`, read back: its file, its text and the scene.
+pub fn pov_peer_files(dir: &Path) -> (PathBuf, String, Scene) {
+    let path = write_pov_peer_scene(dir);
+    let text = std::fs::read_to_string(&path).expect("scene text");
+    let scene = load_scene_file(&path).expect("peer scene");
+    (path, text, scene)
+}
+
+/// The POV-Ray peer's 1920×1080 still at the interactive quality with `samples` per pixel,
+/// adaptive at `adaptive_samples` if given, box-resolved.
+pub fn pov_peer_settings(samples: u32, adaptive_samples: Option<f32>) -> StillSettings {
+    StillSettings {
+        size: (1920, 1080),
+        quality: Quality {
+            samples,
+            adaptive_samples,
+            ..Quality::interactive()
+        },
+        resolve: ResolveFilter::Box,
+        time: 0.0,
+        mode: ViewMode::Shaded,
+    }
+}
+
+/// Writes `request` as a PNG still to `out` `runs` times after one unmeasured run; their times.
+pub fn time_png_stills(request: &StillRequest, out: &Path, runs: usize) -> Timing {
+    Timing::measure(1, runs, || {
+        write_still(request, out, StillFormat::Png, &mut |_| {}, &|| None).expect("still");
+    })
 }
