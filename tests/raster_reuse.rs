@@ -202,3 +202,60 @@ fn an_adding_render_neither_trusts_nor_leaves_known_background() {
     render_as(&far, None, Blend::Replace, &mut reused);
     assert_same(&reused, &want, "add then replace");
 }
+
+fn render_without_depth(
+    prepared: &PreparedScene,
+    mask: Option<&[bool]>,
+    blend: Blend,
+    framebuffer: &mut Framebuffer,
+) {
+    let camera = &prepared.scene.camera;
+    let target = RenderTarget {
+        mask,
+        blend,
+        writes_depth: false,
+        ..RenderTarget::new(camera, SMALL)
+    };
+    render_into(
+        prepared,
+        &target,
+        &LitShader::new(&prepared.scene, camera),
+        framebuffer,
+    );
+}
+
+#[test]
+fn a_render_without_depth_writes_the_same_colours_and_leaves_every_depth() {
+    let far = far_sphere(Vec3::splat(0.1));
+    let mask = scattered_mask(SMALL);
+    for mask in [None, Some(&mask[..])] {
+        for blend in [Blend::Replace, Blend::Add(0.25)] {
+            let before = scribbled(SMALL);
+            let mut want = before.clone();
+            render_as(&far, mask, blend, &mut want);
+            let mut got = before.clone();
+            render_without_depth(&far, mask, blend, &mut got);
+            let expected = Framebuffer::from_parts(
+                SMALL.width,
+                SMALL.height,
+                want.color().to_vec(),
+                before.depth().to_vec(),
+            );
+            let what = format!("{blend:?}, masked {}", mask.is_some());
+            assert_same(&got, &expected, &what);
+        }
+    }
+}
+
+#[test]
+fn a_render_without_depth_records_no_background_for_the_next_render_to_trust() {
+    let base_eye = preset("big-sphere-dimples").unwrap().camera.eye;
+    let grey = Vec3::splat(0.1);
+    let (close, far) = (sphere_from(base_eye * 0.6, grey), far_sphere(grey));
+    let mut reused = Framebuffer::new(0, 0, Vec3::ZERO);
+    // The close sphere's depths stay where the far one leaves background but writes no depth.
+    render_reusing(&close, SMALL, &mut reused);
+    render_without_depth(&far, None, Blend::Replace, &mut reused);
+    render_reusing(&far, SMALL, &mut reused);
+    assert_same(&reused, &fresh(&far, SMALL), "depthless, then whole");
+}

@@ -4,7 +4,8 @@
 mod common;
 
 use bumpwork::raster::{
-    Camera, Fragment, FrameObject, Framebuffer, Interpolation, PerFragment, PreparedScene, Viewport,
+    Camera, Fragment, FrameObject, Framebuffer, ImageWindow, Interpolation, PerFragment,
+    PreparedScene, RenderTarget, Viewport, render_with,
 };
 use bumpwork::scene::{Material, Object, Scene};
 use bumpwork::still::{
@@ -194,4 +195,29 @@ fn adaptive_supersampling_samples_every_edge_pixel_fully_and_shades_far_fewer() 
         adaptive_stats.fragments,
         full_stats.fragments
     );
+}
+
+#[test]
+fn a_supersampled_band_keeps_the_last_passs_depth() {
+    let supersampling = Supersampling {
+        samples: 16,
+        filter: ResolveFilter::Box,
+    };
+    with_job(VIEW, supersampling, None, |job| {
+        let still = render_supersampled(job, &mut BandBuffers::default()).0;
+        let last = *supersampling.offsets().last().expect("16 offsets");
+        let target = RenderTarget {
+            window: ImageWindow {
+                offset: last,
+                ..ImageWindow::whole(VIEW)
+            },
+            footprint: supersampling.footprint(),
+            ..RenderTarget::new(job.camera, VIEW)
+        };
+        let pass = render_with(job.prepared, &target, job.shader).0;
+        let bits = |fb: &Framebuffer| fb.depth().iter().map(|d| d.to_bits()).collect::<Vec<_>>();
+        assert!(bits(&still) == bits(&pass), "depths differ");
+        assert!(still.depth().iter().any(|d| d.is_finite()));
+        assert!(still.depth().iter().any(|d| d.is_infinite()));
+    });
 }

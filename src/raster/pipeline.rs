@@ -71,6 +71,10 @@ pub struct RenderTarget<'a> {
     /// framebuffer is left as it was, and tiles with none of them are skipped whole.
     pub mask: Option<&'a [bool]>,
     pub blend: Blend,
+    /// Whether the framebuffer's depth is written. When not, it keeps what it held: a pass whose
+    /// depth nobody reads skips the stores, and a fresh framebuffer's depth is never touched
+    /// (so never mapped).
+    pub writes_depth: bool,
     /// Told of each strip of `TILE_SIZE` rows (its index from the top, its colour row-major) as
     /// soon as this render has finished it, on the thread that rendered it, in no set order: a
     /// still converts and encodes its rows while the rest of the frame renders.
@@ -91,6 +95,7 @@ impl<'a> RenderTarget<'a> {
             footprint: 1.0,
             mask: None,
             blend: Blend::Replace,
+            writes_depth: true,
             finished_strips: None,
         }
     }
@@ -196,9 +201,10 @@ pub fn render_into(
     let (color, depth, known_background) =
         framebuffer.tiles_mut((bins.tiles_x, bins.tiles_y), background);
     let strip = (TILE_SIZE * viewport.width) as usize;
-    // Whether a tile's known background can be relied on and recorded: only when this render
-    // writes every pixel and replaces what was there.
-    let whole_and_replacing = target.mask.is_none() && target.blend == Blend::Replace;
+    // Whether a tile's known background (colour and depth) can be relied on and recorded: only
+    // when this render writes every pixel, colour and depth, and replaces what was there.
+    let whole_and_replacing =
+        target.mask.is_none() && target.blend == Blend::Replace && target.writes_depth;
     let (fragments, flattened) = color
         .par_chunks_mut(strip)
         .zip(depth.par_chunks_mut(strip))
@@ -223,6 +229,7 @@ pub fn render_into(
                         background,
                         mask,
                         blend: target.blend,
+                        writes_depth: target.writes_depth,
                     };
                     if !out.any_wanted(&rect) {
                         continue;

@@ -48,6 +48,8 @@ pub struct StripOutput<'a> {
     /// The strip's pixels to write (`None`: all); see `RenderTarget::mask`.
     pub mask: Option<&'a [bool]>,
     pub blend: Blend,
+    /// See `RenderTarget::writes_depth`.
+    pub writes_depth: bool,
 }
 
 impl StripOutput<'_> {
@@ -85,21 +87,31 @@ impl StripOutput<'_> {
                 colors.iter_mut().for_each(|c| *c += added);
             }
         }
-        self.depth[pixels].fill(f32::INFINITY);
+        if self.writes_depth {
+            self.depth[pixels].fill(f32::INFINITY);
+        }
     }
 
     /// Writes shaded fragments over `runs` of pixels, as many as the runs hold, in order.
     fn shaded_runs(&mut self, runs: &[Range<usize>], fragments: &[Fragment], colors: &[Vec3]) {
-        match self.blend {
-            Blend::Replace => self.put_shaded(runs, fragments, colors, |pixel, c| *pixel = c),
-            Blend::Add(weight) => {
-                self.put_shaded(runs, fragments, colors, |pixel, c| *pixel += c * weight)
+        let replace = |pixel: &mut Vec3, c| *pixel = c;
+        match (self.blend, self.writes_depth) {
+            (Blend::Replace, true) => self.put_shaded::<true>(runs, fragments, colors, replace),
+            (Blend::Replace, false) => self.put_shaded::<false>(runs, fragments, colors, replace),
+            (Blend::Add(weight), depth) => {
+                let add = |pixel: &mut Vec3, c| *pixel += c * weight;
+                if depth {
+                    self.put_shaded::<true>(runs, fragments, colors, add)
+                } else {
+                    self.put_shaded::<false>(runs, fragments, colors, add)
+                }
             }
         }
     }
 
+    /// Puts the colours (and, with `DEPTH`, the depths) of the fragments over the runs.
     #[inline(always)]
-    fn put_shaded(
+    fn put_shaded<const DEPTH: bool>(
         &mut self,
         runs: &[Range<usize>],
         fragments: &[Fragment],
@@ -113,7 +125,9 @@ impl StripOutput<'_> {
                 .zip(&mut self.depth[pixels.clone()]);
             for ((pixel, depth), (fragment, &colour)) in pixels.zip(&mut shaded) {
                 put(pixel, colour);
-                *depth = fragment.depth;
+                if DEPTH {
+                    *depth = fragment.depth;
+                }
             }
         }
     }

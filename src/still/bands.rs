@@ -76,7 +76,10 @@ impl<S: FragmentShader> BandJob<'_, S> {
     /// Renders rows `rows` into `buffers` (read back with `resolved`), one pass per sample,
     /// calling `on_pass` after each. `keep_going` is asked before every pass; when it says no,
     /// the band is abandoned and `None` returned. `finished_strips` hears each strip of the band
-    /// as the last pass finishes it (see `RenderTarget::finished_strips`).
+    /// as the last pass finishes it (see `RenderTarget::finished_strips`); a caller that takes
+    /// the strips does not get the band's depth (no pass writes it but an adaptive centre pass,
+    /// whose depth the contrast mask reads). Otherwise the depth is the last pass's: the only
+    /// supersampling pass that writes it is the last.
     pub fn render(
         &self,
         rows: Range<u32>,
@@ -109,6 +112,7 @@ impl<S: FragmentShader> BandJob<'_, S> {
             }
             let target = RenderTarget {
                 finished_strips,
+                writes_depth: finished_strips.is_none(),
                 ..target(
                     offsets[0],
                     self.supersampling.footprint(),
@@ -161,6 +165,7 @@ impl<S: FragmentShader> BandJob<'_, S> {
             }
             let target = RenderTarget {
                 finished_strips: finished_strips.filter(|_| k == last),
+                writes_depth: k == last && finished_strips.is_none(),
                 ..target(offset, self.supersampling.footprint(), only, weight)
             };
             let pass = render_into(self.prepared, &target, self.shader, &mut buffers.frame);
