@@ -78,11 +78,11 @@ pub struct RenderTarget<'a> {
     /// Told of each strip of `TILE_SIZE` rows (its index from the top, its colour row-major) as
     /// soon as this render has finished it, on the thread that rendered it, in no set order: a
     /// still converts and encodes its rows while the rest of the frame renders.
-    pub finished_strips: Option<&'a FinishedStrips>,
+    pub finished_strips: Option<&'a FinishedStrips<'a>>,
 }
 
 /// See `RenderTarget::finished_strips`.
-pub type FinishedStrips = dyn Fn(usize, &[Vec3]) + Sync;
+pub type FinishedStrips<'a> = dyn Fn(usize, &[Vec3]) + Sync + 'a;
 
 impl<'a> RenderTarget<'a> {
     /// The whole `viewport` seen by `camera`, one perspective-correct sample at each pixel centre.

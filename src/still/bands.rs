@@ -86,7 +86,7 @@ impl<S: FragmentShader> BandJob<'_, S> {
         buffers: &mut BandBuffers,
         keep_going: &dyn Fn() -> bool,
         on_pass: &mut dyn FnMut(),
-        finished_strips: Option<&FinishedStrips>,
+        finished_strips: Option<&FinishedStrips<'_>>,
     ) -> Option<FrameStats> {
         let viewport = Viewport {
             width: self.full.width,

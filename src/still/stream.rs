@@ -7,6 +7,7 @@ use glam::Vec3;
 use std::collections::BTreeMap;
 use std::ops::Range;
 use std::sync::mpsc::{Receiver, channel};
+use std::sync::{Mutex, PoisonError};
 
 /// Where finished rows go (a PNG or PPM encoder): 3 bytes per pixel, top row first. `Send`, so
 /// a thread of its own can write a band's first rows while the rest of the band renders.
@@ -36,6 +37,7 @@ pub fn stream_still<S: FragmentShader>(
     let passes = job.full.height.div_ceil(rows_per_band) as f64 * job.passes_per_band() as f64;
     let mut passes_done = 0.0;
     let mut buffers = BandBuffers::default();
+    let spare = SpareRows::default();
     let mut stats = FrameStats::default();
     for start in (0..job.full.height).step_by(rows_per_band as usize) {
         let end = (start + rows_per_band).min(job.full.height);
@@ -47,6 +49,7 @@ pub fn stream_still<S: FragmentShader>(
             job,
             start..end,
             &mut buffers,
+            &spare,
             sink,
             keep_going,
             &mut on_pass,
@@ -69,6 +72,7 @@ fn render_and_write<S: FragmentShader>(
     job: &BandJob<S>,
     rows: Range<u32>,
     buffers: &mut BandBuffers,
+    spare: &SpareRows,
     sink: &mut dyn RowSink,
     keep_going: &dyn Fn() -> bool,
     on_pass: &mut dyn FnMut(),
@@ -76,9 +80,9 @@ fn render_and_write<S: FragmentShader>(
     let strip_count = (rows.end - rows.start).div_ceil(TILE_SIZE) as usize;
     let (strips, finished) = channel();
     std::thread::scope(|scope| {
-        let writer = scope.spawn(move || write_in_order(finished, strip_count, sink));
+        let writer = scope.spawn(move || write_in_order(finished, strip_count, sink, spare));
         let convert = move |strip: usize, linear: &[Vec3]| {
-            let mut bytes = Vec::new();
+            let mut bytes = spare.take();
             to_srgb_bytes(linear, &mut bytes);
             // Refused only once the writer has stopped on a failed write, which it reports.
             let _ = strips.send((strip, bytes));
@@ -92,12 +96,31 @@ fn render_and_write<S: FragmentShader>(
     })
 }
 
+/// Buffers of 8-bit rows already written, for the next strips to fill: a fresh one would be
+/// zeroed, and its pages first touched, for every strip.
+#[derive(Default)]
+struct SpareRows(Mutex<Vec<Vec<u8>>>);
+
+impl SpareRows {
+    fn take(&self) -> Vec<u8> {
+        let mut spare = self.0.lock().unwrap_or_else(PoisonError::into_inner);
+        spare.pop().unwrap_or_default()
+    }
+
+    fn put(&self, rows: Vec<u8>) {
+        let mut spare = self.0.lock().unwrap_or_else(PoisonError::into_inner);
+        spare.push(rows);
+    }
+}
+
 /// Writes strips (index from the top, 8-bit rows) to `sink` in order of their index, however
-/// they arrive; stops at the first failed write. Every one of `strip_count` strips must come.
+/// they arrive, handing each written buffer to `spare`; stops at the first failed write. Every
+/// one of `strip_count` strips must come.
 fn write_in_order(
     strips: Receiver<(usize, Vec<u8>)>,
     strip_count: usize,
     sink: &mut dyn RowSink,
+    spare: &SpareRows,
 ) -> Result<(), String> {
     let mut waiting = BTreeMap::new();
     let mut next = 0;
@@ -105,6 +128,7 @@ fn write_in_order(
         waiting.insert(index, bytes);
         while let Some(bytes) = waiting.remove(&next) {
             sink.write_rows(&bytes)?;
+            spare.put(bytes);
             next += 1;
         }
     }
@@ -162,16 +186,19 @@ mod tests {
     #[test]
     fn strips_arriving_in_any_order_are_written_top_first() {
         let mut rows = sink(None);
-        let result = write_in_order(send(&[2, 0, 4, 1, 3]), 5, &mut rows);
+        let spare = SpareRows::default();
+        let result = write_in_order(send(&[2, 0, 4, 1, 3]), 5, &mut rows, &spare);
         assert_eq!(result, Ok(()));
         let expected: Vec<Vec<u8>> = (0..5).map(|k| vec![k as u8; k + 1]).collect();
         assert_eq!(rows.writes, expected);
+        let spare = spare.0.into_inner().unwrap();
+        assert_eq!(spare.len(), 5, "every written buffer back for reuse");
     }
 
     #[test]
     fn a_failing_sink_stops_the_rows_with_its_reason() {
         let mut rows = sink(Some(1));
-        let result = write_in_order(send(&[0, 1, 2]), 3, &mut rows);
+        let result = write_in_order(send(&[0, 1, 2]), 3, &mut rows, &SpareRows::default());
         assert_eq!(result, Err("disk full".to_string()));
         assert_eq!(rows.writes.len(), 1, "nothing written after the failure");
     }
@@ -179,7 +206,7 @@ mod tests {
     #[test]
     fn a_missing_strip_is_an_error_not_a_shorter_image() {
         let mut rows = sink(None);
-        let result = write_in_order(send(&[0, 2]), 3, &mut rows);
+        let result = write_in_order(send(&[0, 2]), 3, &mut rows, &SpareRows::default());
         assert!(result.is_err());
         assert_eq!(rows.writes.len(), 1, "only the rows before the gap");
     }
