@@ -140,10 +140,21 @@ fn render_as(
     blend: Blend,
     framebuffer: &mut Framebuffer,
 ) {
+    render_writing(prepared, mask, blend, true, framebuffer);
+}
+
+fn render_writing(
+    prepared: &PreparedScene,
+    mask: Option<&[bool]>,
+    blend: Blend,
+    writes_depth: bool,
+    framebuffer: &mut Framebuffer,
+) {
     let camera = &prepared.scene.camera;
     let target = RenderTarget {
         mask,
         blend,
+        writes_depth,
         ..RenderTarget::new(camera, SMALL)
     };
     render_into(
@@ -209,19 +220,7 @@ fn render_without_depth(
     blend: Blend,
     framebuffer: &mut Framebuffer,
 ) {
-    let camera = &prepared.scene.camera;
-    let target = RenderTarget {
-        mask,
-        blend,
-        writes_depth: false,
-        ..RenderTarget::new(camera, SMALL)
-    };
-    render_into(
-        prepared,
-        &target,
-        &LitShader::new(&prepared.scene, camera),
-        framebuffer,
-    );
+    render_writing(prepared, mask, blend, false, framebuffer);
 }
 
 #[test]
