@@ -13,7 +13,7 @@ pub struct Framebuffer {
     known_background: KnownBackground,
 }
 
-/// How a render's colours meet what the framebuffer holds; depth is always replaced.
+/// How a render's colours meet what the framebuffer holds; depth, where written, is replaced.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub enum Blend {
     #[default]

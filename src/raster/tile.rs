@@ -94,18 +94,27 @@ impl StripOutput<'_> {
 
     /// Writes shaded fragments over `runs` of pixels, as many as the runs hold, in order.
     fn shaded_runs(&mut self, runs: &[Range<usize>], fragments: &[Fragment], colors: &[Vec3]) {
-        let replace = |pixel: &mut Vec3, c| *pixel = c;
-        match (self.blend, self.writes_depth) {
-            (Blend::Replace, true) => self.put_shaded::<true>(runs, fragments, colors, replace),
-            (Blend::Replace, false) => self.put_shaded::<false>(runs, fragments, colors, replace),
-            (Blend::Add(weight), depth) => {
-                let add = |pixel: &mut Vec3, c| *pixel += c * weight;
-                if depth {
-                    self.put_shaded::<true>(runs, fragments, colors, add)
-                } else {
-                    self.put_shaded::<false>(runs, fragments, colors, add)
-                }
+        match self.blend {
+            Blend::Replace => self.put_runs(runs, fragments, colors, |pixel, c| *pixel = c),
+            Blend::Add(weight) => {
+                self.put_runs(runs, fragments, colors, |pixel, c| *pixel += c * weight)
             }
+        }
+    }
+
+    /// `put_shaded`, compiled with or without the depth stores as the render asks.
+    #[inline(always)]
+    fn put_runs(
+        &mut self,
+        runs: &[Range<usize>],
+        fragments: &[Fragment],
+        colors: &[Vec3],
+        put: impl Fn(&mut Vec3, Vec3),
+    ) {
+        if self.writes_depth {
+            self.put_shaded::<true>(runs, fragments, colors, put)
+        } else {
+            self.put_shaded::<false>(runs, fragments, colors, put)
         }
     }
 

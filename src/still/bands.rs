@@ -105,21 +105,20 @@ impl<S: FragmentShader> BandJob<'_, S> {
             blend,
             ..RenderTarget::new(self.camera, viewport).with_interpolation(self.interpolation)
         };
+        // The pass that finishes the band hands its strips on and, when nobody takes them,
+        // leaves the band's depth; supersampling passes before it write no depth.
+        let finishing = |target| RenderTarget {
+            finished_strips,
+            writes_depth: finished_strips.is_none(),
+            ..target
+        };
         let adaptive = self.adaptive_threshold();
         if offsets.len() == 1 && adaptive.is_none() {
             if !keep_going() {
                 return None;
             }
-            let target = RenderTarget {
-                finished_strips,
-                writes_depth: finished_strips.is_none(),
-                ..target(
-                    offsets[0],
-                    self.supersampling.footprint(),
-                    None,
-                    Blend::Replace,
-                )
-            };
+            let footprint = self.supersampling.footprint();
+            let target = finishing(target(offsets[0], footprint, None, Blend::Replace));
             let stats = render_into(self.prepared, &target, self.shader, &mut buffers.frame);
             on_pass();
             return Some(stats);
@@ -163,10 +162,14 @@ impl<S: FragmentShader> BandJob<'_, S> {
             if !keep_going() {
                 return None;
             }
-            let target = RenderTarget {
-                finished_strips: finished_strips.filter(|_| k == last),
-                writes_depth: k == last && finished_strips.is_none(),
-                ..target(offset, self.supersampling.footprint(), only, weight)
+            let pass = target(offset, self.supersampling.footprint(), only, weight);
+            let target = if k == last {
+                finishing(pass)
+            } else {
+                RenderTarget {
+                    writes_depth: false,
+                    ..pass
+                }
             };
             let pass = render_into(self.prepared, &target, self.shader, &mut buffers.frame);
             stats = add_stats(stats, pass);
