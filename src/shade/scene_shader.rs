@@ -171,10 +171,8 @@ impl LitShader {
         let surface = &object.prepared.surface;
         let material = &object.prepared.material;
         scratch.frames.clear();
-        surface.frames(
-            group.iter().map(|&i| fragments[i as usize].uv),
-            &mut scratch.frames,
-        );
+        let uv = |k: usize| fragments[group[k] as usize].uv;
+        surface.frames(group.len(), uv, &mut scratch.frames);
         if let Some(normals) = &self.vertex_normals {
             interpolate_frames(
                 &normals[object_index],
@@ -423,7 +421,8 @@ impl LitShader {
         shifted.identity.clear();
         shifted.identity.extend(0..n as u32);
         shifted.frames.clear();
-        surface.frames(shifted.fragments.iter().map(|f| f.uv), &mut shifted.frames);
+        let fragments = &shifted.fragments;
+        surface.frames(n, |k| fragments[k].uv, &mut shifted.frames);
         let mut output = BumpOutput {
             frames: &shifted.frames,
             patterns,

@@ -83,16 +83,17 @@ impl Surface {
         }
     }
 
-    /// The exact frames at a batch of (u,v), appended to `out`: one dispatch per batch, so
-    /// each surface's frame is inlined into its own loop (and the sphere's is vectorised).
-    pub fn frames(&self, uvs: impl Iterator<Item = Vec2>, out: &mut Vec<Frame>) {
+    /// The exact frames at `uv(0) … uv(count − 1)`, appended to `out`: one dispatch per batch,
+    /// so each surface's frame is inlined into its own loop (and the sphere's is vectorised).
+    /// Indexed rather than an iterator: plain index loops inline the same way in every build.
+    pub fn frames(&self, count: usize, uv: impl Fn(usize) -> Vec2, out: &mut Vec<Frame>) {
         match self {
-            Surface::Plane(s) => out.extend(uvs.map(|uv| s.frame(uv.x, uv.y))),
-            Surface::Sphere(s) => s.frames(uvs, out),
-            Surface::Paraboloid(s) => out.extend(uvs.map(|uv| s.frame(uv.x, uv.y))),
-            Surface::Cone(s) => out.extend(uvs.map(|uv| s.frame(uv.x, uv.y))),
-            Surface::Wave(s) => out.extend(uvs.map(|uv| s.frame(uv.x, uv.y))),
-            Surface::Triangle(s) => out.extend(uvs.map(|uv| s.frame(uv.x, uv.y))),
+            Surface::Plane(s) => frames_each(count, uv, |u, v| s.frame(u, v), out),
+            Surface::Sphere(s) => s.frames(count, uv, out),
+            Surface::Paraboloid(s) => frames_each(count, uv, |u, v| s.frame(u, v), out),
+            Surface::Cone(s) => frames_each(count, uv, |u, v| s.frame(u, v), out),
+            Surface::Wave(s) => frames_each(count, uv, |u, v| s.frame(u, v), out),
+            Surface::Triangle(s) => frames_each(count, uv, |u, v| s.frame(u, v), out),
         }
     }
 
@@ -195,6 +196,19 @@ pub fn normalize_or(v: Vec3, fallback: Vec3) -> Vec3 {
     } else {
         fallback
     }
+}
+
+/// `frame` at `uv(0) … uv(count − 1)`, appended to `out`.
+fn frames_each(
+    count: usize,
+    uv: impl Fn(usize) -> Vec2,
+    frame: impl Fn(f32, f32) -> Frame,
+    out: &mut Vec<Frame>,
+) {
+    out.extend((0..count).map(|k| {
+        let uv = uv(k);
+        frame(uv.x, uv.y)
+    }));
 }
 
 #[cfg(test)]

@@ -29,23 +29,24 @@ impl Sphere {
         self.frame_from_angles(sin_phi, cos_phi, sin_theta, cos_theta)
     }
 
-    /// `frame` for many (u,v), appended to `out`. The four sines and cosines of a chunk are
-    /// computed first in a loop of plain arrays, which the compiler turns into SIMD (four
-    /// fragments per instruction): the same polynomials, so the same frames to the bit.
-    pub fn frames(&self, uvs: impl Iterator<Item = Vec2>, out: &mut Vec<Frame>) {
-        let mut uvs = uvs.peekable();
-        while uvs.peek().is_some() {
+    /// `frame` at `uv(0) … uv(count − 1)`, appended to `out`. The four sines and cosines of a
+    /// chunk are computed first in a loop of plain arrays, which the compiler turns into SIMD
+    /// (four fragments per instruction): the same polynomials, so the same frames to the bit.
+    pub fn frames(&self, count: usize, uv: impl Fn(usize) -> Vec2, out: &mut Vec<Frame>) {
+        out.reserve(count);
+        for start in (0..count).step_by(CHUNK) {
+            let len = CHUNK.min(count - start);
             let (mut u, mut v) = ([0.0f32; CHUNK], [0.0f32; CHUNK]);
-            let mut len = 0;
-            for (k, uv) in uvs.by_ref().take(CHUNK).enumerate() {
-                (u[k], v[k], len) = (uv.x, uv.y, k + 1);
+            for k in 0..len {
+                (u[k], v[k]) = uv(start + k).into();
             }
             let mut angles = [[0.0f32; CHUNK]; 4];
             chunk_angles(&u, &v, &mut angles);
             let [sin_phi, cos_phi, sin_theta, cos_theta] = &angles;
-            out.extend((0..len).map(|k| {
-                self.frame_from_angles(sin_phi[k], cos_phi[k], sin_theta[k], cos_theta[k])
-            }));
+            out.extend((0..len).map(
+                #[inline(always)]
+                |k| self.frame_from_angles(sin_phi[k], cos_phi[k], sin_theta[k], cos_theta[k]),
+            ));
         }
     }
 
@@ -114,7 +115,7 @@ mod tests {
             .collect();
         uvs.extend([0.0, 180.0, 360.0, 720.0, -720.0, 1e4].map(|u| Vec2::new(u, u / 2.0)));
         let mut batch = Vec::new();
-        s.frames(uvs.iter().copied(), &mut batch);
+        s.frames(uvs.len(), |k| uvs[k], &mut batch);
         assert_eq!(batch.len(), uvs.len());
         let bits = |f: &Frame| [f.p, f.pu, f.pv, f.n].map(|v| v.to_array().map(f32::to_bits));
         for (uv, got) in uvs.iter().zip(&batch) {
