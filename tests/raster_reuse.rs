@@ -4,12 +4,14 @@
 //! weighted colours into what is there (supersampling's passes), touch only their pixels.
 
 use bumpwork::raster::{
-    Blend, Framebuffer, PreparedScene, RenderTarget, Viewport, render, render_into,
+    Blend, Framebuffer, ImageWindow, PreparedScene, RenderTarget, Viewport, render, render_into,
+    render_passes_into,
 };
 use bumpwork::scene::{Scene, preset};
 use bumpwork::shade::LitShader;
 use bumpwork::surface::Tessellation;
-use glam::{DVec3, Vec3};
+use glam::{DVec3, Vec2, Vec3};
+use std::sync::Mutex;
 
 const SMALL: Viewport = Viewport {
     width: 200,
@@ -257,4 +259,87 @@ fn a_render_without_depth_records_no_background_for_the_next_render_to_trust() {
     render_without_depth(&far, None, Blend::Replace, &mut reused);
     render_reusing(&far, SMALL, &mut reused);
     assert_same(&reused, &fresh(&far, SMALL), "depthless, then whole");
+}
+
+/// Supersampling-like passes over `SMALL`: each shifted within the pixel, adding or replacing,
+/// with or without depth, over `mask`.
+fn shifted_passes<'a>(
+    prepared: &'a PreparedScene,
+    mask: Option<&'a [bool]>,
+) -> Vec<RenderTarget<'a>> {
+    let pass = |(x, y), blend, writes_depth| RenderTarget {
+        window: ImageWindow {
+            offset: Vec2::new(x, y),
+            ..ImageWindow::whole(SMALL)
+        },
+        footprint: 0.5,
+        mask,
+        blend,
+        writes_depth,
+        ..RenderTarget::new(&prepared.scene.camera, SMALL)
+    };
+    vec![
+        pass((0.0, 0.0), Blend::Replace, true),
+        pass((0.3, -0.2), Blend::Add(0.25), false),
+        pass((-0.4, 0.1), Blend::Add(0.25), true),
+        pass((0.1, 0.45), Blend::Add(0.25), false),
+    ]
+}
+
+/// A framebuffer holding a whole render, so its background tiles are known.
+fn rendered_once(prepared: &PreparedScene) -> Framebuffer {
+    let mut framebuffer = Framebuffer::new(0, 0, Vec3::ZERO);
+    render_reusing(prepared, SMALL, &mut framebuffer);
+    framebuffer
+}
+
+#[test]
+fn passes_rendered_tile_by_tile_equal_the_passes_one_after_another() {
+    let far = far_sphere(Vec3::splat(0.1));
+    let shader = LitShader::new(&far.scene, &far.scene.camera);
+    let mask = scattered_mask(SMALL);
+    for mask in [None, Some(&mask[..])] {
+        let passes = shifted_passes(&far, mask);
+        let mut want = rendered_once(&far);
+        for pass in &passes {
+            render_into(&far, pass, &shader, &mut want);
+        }
+        let mut got = rendered_once(&far);
+        let stats = render_passes_into(&far, &passes, &shader, &mut got);
+        let what = format!("masked {}", mask.is_some());
+        assert_same(&got, &want, &what);
+        assert!(stats.fragments > 0, "{what}: nothing shaded");
+        // The background recorded for the next render is only what still is background.
+        render_reusing(&far, SMALL, &mut got);
+        assert_same(&got, &fresh(&far, SMALL), &format!("{what}, then whole"));
+    }
+}
+
+#[test]
+fn passes_rendered_tile_by_tile_hand_on_each_strip_once_finished() {
+    let far = far_sphere(Vec3::splat(0.1));
+    let shader = LitShader::new(&far.scene, &far.scene.camera);
+    let heard = Mutex::new(Vec::new());
+    let hear =
+        |strip: usize, colours: &[Vec3]| heard.lock().unwrap().push((strip, colours.to_vec()));
+    let mut passes = shifted_passes(&far, None);
+    if let Some(last) = passes.last_mut() {
+        last.finished_strips = Some(&hear);
+    }
+    let mut framebuffer = rendered_once(&far);
+    render_passes_into(&far, &passes, &shader, &mut framebuffer);
+    let mut heard = heard.into_inner().unwrap();
+    heard.sort_by_key(|&(strip, _)| strip);
+    let strip_pixels = (64 * SMALL.width) as usize;
+    let strips: Vec<&[Vec3]> = framebuffer.color().chunks(strip_pixels).collect();
+    assert_eq!(heard.len(), strips.len(), "each strip heard once");
+    for ((index, colours), (expected_index, expected)) in
+        heard.iter().zip(strips.iter().enumerate())
+    {
+        assert_eq!(*index, expected_index);
+        assert!(
+            colours[..] == expected[..],
+            "strip {index} heard before its last pass"
+        );
+    }
 }

@@ -168,6 +168,31 @@ fn a_cancelled_still_stops_before_writing() {
 }
 
 #[test]
+fn a_still_cancelled_between_its_passes_writes_nothing() {
+    let supersampling = Supersampling {
+        samples: 16,
+        filter: ResolveFilter::Box,
+    };
+    with_job(VIEW, supersampling, Some(0.05), |job| {
+        // Yes for the centre pass, no before the supersampling passes.
+        let asked = std::sync::atomic::AtomicUsize::new(0);
+        let keep_going = || asked.fetch_add(1, std::sync::atomic::Ordering::Relaxed) == 0;
+        let mut rows = Rows(Vec::new());
+        let mut fractions = Vec::new();
+        let result = stream_still(
+            job,
+            1 << 30,
+            &mut rows,
+            &mut |f| fractions.push(f),
+            &keep_going,
+        );
+        assert!(result.is_err());
+        assert!(rows.0.is_empty());
+        assert_eq!(fractions.len(), 1, "only the centre pass was reported");
+    });
+}
+
+#[test]
 fn adaptive_supersampling_samples_every_edge_pixel_fully_and_shades_far_fewer() {
     let supersampling = Supersampling {
         samples: 16,

@@ -1,5 +1,5 @@
-//! Ctrl-C, SIGTERM and SIGHUP during a long render: noted, so the render stops between passes
-//! and removes its temporary file instead of dying with a partial one.
+//! Ctrl-C, SIGTERM and SIGHUP during a long render: noted, so the render stops between groups of
+//! passes and removes its temporary file instead of dying with a partial one.
 
 use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
 use std::sync::Arc;

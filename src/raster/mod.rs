@@ -25,7 +25,7 @@ pub use fragment::{Fragment, FragmentShader, FrameObject, PerFragment};
 pub use framebuffer::{Blend, Framebuffer, encode_srgb8, linear_to_srgb8};
 pub use pipeline::{
     FinishedStrips, FrameStats, Interpolation, PreparedObject, PreparedScene, RenderTarget,
-    frame_objects, render, render_into, render_with, screen_triangles,
+    frame_objects, render, render_into, render_passes_into, render_with, screen_triangles,
 };
 pub use scan::{PixelRect, scan_triangle};
 pub use setup::{SUBPIXEL_BITS, ScreenTriangle, TrianglePlanes, Viewport};

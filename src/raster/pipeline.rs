@@ -3,6 +3,7 @@ use super::camera::Camera;
 use super::clip::{ClipVertex, clip_triangle, needs_no_clipping};
 use super::fragment::{FragmentShader, FrameObject};
 use super::framebuffer::{Blend, Framebuffer};
+use super::scan::PixelRect;
 use super::setup::{ScreenTriangle, TrianglePlanes, Viewport};
 use super::tile::{StripOutput, TileBuffers, TileFrame};
 use super::window::ImageWindow;
@@ -185,68 +186,79 @@ pub fn render_into(
     shader: &impl FragmentShader,
     framebuffer: &mut Framebuffer,
 ) -> FrameStats {
-    let viewport = target.viewport;
-    let objects = frame_objects(prepared, target.camera);
-    let triangles = screen_triangles(&objects, target);
-    let bins = TileBins::new(viewport, &triangles);
-    let frame = TileFrame {
-        objects: &objects,
-        shader,
-        perspective: target.interpolation == Interpolation::PerspectiveCorrect,
-        footprint: target.footprint,
-        derivatives: shader.reads_derivatives(&objects),
+    render_passes_into(prepared, std::slice::from_ref(target), shader, framebuffer)
+}
+
+/// Renders several passes into `framebuffer` as `render_into` would one after another, with the
+/// same result to the bit, but tile by tile: every pass of a tile before the next tile, so the
+/// tile's pixels (which supersampling passes add into) and the texels its fragments read stay
+/// in cache from pass to pass. The targets share the viewport, camera and mask; they differ in
+/// where they sample (the window's offset), footprint, blend and depth writes. Only the last
+/// pass's `finished_strips` is told of the strips, once every pass has finished them.
+pub fn render_passes_into(
+    prepared: &PreparedScene,
+    targets: &[RenderTarget],
+    shader: &impl FragmentShader,
+    framebuffer: &mut Framebuffer,
+) -> FrameStats {
+    let Some(last) = targets.last() else {
+        return FrameStats::default();
     };
+    let shared = |t: &RenderTarget| {
+        t.viewport == last.viewport
+            && std::ptr::eq(t.camera, last.camera)
+            && t.mask.map(<[bool]>::as_ptr) == last.mask.map(<[bool]>::as_ptr)
+    };
+    assert!(
+        targets.iter().all(shared),
+        "passes rendered together share viewport, camera and mask"
+    );
+    let viewport = last.viewport;
+    let objects = frame_objects(prepared, last.camera);
+    let derivatives = shader.reads_derivatives(&objects);
+    let passes: Vec<Pass<_>> = targets
+        .iter()
+        .map(|target| Pass::new(&objects, target, shader, derivatives))
+        .collect();
     let background = prepared.scene.background;
     framebuffer.resize(viewport.width, viewport.height);
-    let (color, depth, known_background) =
-        framebuffer.tiles_mut((bins.tiles_x, bins.tiles_y), background);
+    let (tiles_x, tiles_y) = (passes[0].bins.tiles_x, passes[0].bins.tiles_y);
+    let (color, depth, known_background) = framebuffer.tiles_mut((tiles_x, tiles_y), background);
     let strip = (TILE_SIZE * viewport.width) as usize;
-    // Whether a tile's known background (colour and depth) can be relied on and recorded: only
-    // when this render writes every pixel, colour and depth, and replaces what was there.
-    let whole_and_replacing =
-        target.mask.is_none() && target.blend == Blend::Replace && target.writes_depth;
     let (fragments, flattened) = color
         .par_chunks_mut(strip)
         .zip(depth.par_chunks_mut(strip))
-        .zip(known_background.par_chunks_mut(bins.tiles_x.max(1) as usize))
+        .zip(known_background.par_chunks_mut(tiles_x.max(1) as usize))
         .enumerate()
         .map_init(
             // Once per rayon job, not per tile row: the buffers keep their grown capacity.
             || (TileBuffers::default(), shader.scratch()),
             |(tile, scratch), (ty, ((color, depth), known_background))| {
                 let mut counts = (0, 0);
-                let mask = target
-                    .mask
-                    .map(|m| &m[ty * strip..ty * strip + color.len()]);
-                for (tx, known_background) in (0..bins.tiles_x).zip(known_background) {
+                let mask = last.mask.map(|m| &m[ty * strip..ty * strip + color.len()]);
+                for (tx, known_background) in (0..tiles_x).zip(known_background) {
                     let rect = TileBins::tile_rect(viewport, tx, ty as u32);
-                    let bin = &bins.bins[(ty as u32 * bins.tiles_x + tx) as usize];
-                    let out = StripOutput {
+                    let mut out = StripOutput {
                         color,
                         depth,
                         width: viewport.width,
                         first_row: rect.y0,
                         background,
                         mask,
-                        blend: target.blend,
-                        writes_depth: target.writes_depth,
+                        blend: last.blend,
+                        writes_depth: last.writes_depth,
                     };
                     if !out.any_wanted(&rect) {
                         continue;
                     }
-                    if bin.is_empty() {
-                        if !(whole_and_replacing && *known_background) {
-                            out.fill_background(&rect);
-                        }
-                        *known_background = whole_and_replacing;
-                        continue;
+                    for pass in &passes {
+                        let out = out.for_pass(pass.target.blend, pass.target.writes_depth);
+                        let (shaded, flattened) =
+                            pass.render_tile(tx, &rect, known_background, tile, scratch, out);
+                        counts = (counts.0 + shaded, counts.1 + flattened);
                     }
-                    tile.resolve_visibility(&triangles, bin, &rect);
-                    let (shaded, flattened) = tile.shade(&triangles, &frame, scratch, &rect, out);
-                    *known_background = shaded == 0 && whole_and_replacing;
-                    counts = (counts.0 + shaded, counts.1 + flattened);
                 }
-                if let Some(finished) = target.finished_strips {
+                if let Some(finished) = last.finished_strips {
                     finished(ty, color);
                 }
                 counts
@@ -255,9 +267,72 @@ pub fn render_into(
         .reduce(|| (0, 0), |a, b| (a.0 + b.0, a.1 + b.1));
     FrameStats {
         triangles: prepared.triangle_count(),
-        rasterized_triangles: triangles.len(),
+        rasterized_triangles: passes.iter().map(|p| p.triangles.len()).sum(),
         fragments,
         flattened,
+    }
+}
+
+/// One pass of `render_passes_into`: its target's triangles, set up and binned.
+struct Pass<'a, S> {
+    target: &'a RenderTarget<'a>,
+    triangles: Vec<ScreenTriangle>,
+    bins: TileBins,
+    frame: TileFrame<'a, S>,
+    /// Whether a tile's known background (colour and depth) can be relied on and recorded: only
+    /// when this pass writes every pixel, colour and depth, and replaces what was there.
+    whole_and_replacing: bool,
+}
+
+impl<'a, S: FragmentShader> Pass<'a, S> {
+    fn new(
+        objects: &'a [FrameObject<'a>],
+        target: &'a RenderTarget<'a>,
+        shader: &'a S,
+        derivatives: bool,
+    ) -> Pass<'a, S> {
+        let triangles = screen_triangles(objects, target);
+        let bins = TileBins::new(target.viewport, &triangles);
+        Pass {
+            target,
+            triangles,
+            bins,
+            frame: TileFrame {
+                objects,
+                shader,
+                perspective: target.interpolation == Interpolation::PerspectiveCorrect,
+                footprint: target.footprint,
+                derivatives,
+            },
+            whole_and_replacing: target.mask.is_none()
+                && target.blend == Blend::Replace
+                && target.writes_depth,
+        }
+    }
+
+    /// Renders tile `tx` of the strip `out` writes to; the fragments shaded and flattened.
+    fn render_tile(
+        &self,
+        tx: u32,
+        rect: &PixelRect,
+        known_background: &mut bool,
+        tile: &mut TileBuffers,
+        scratch: &mut S::Scratch,
+        out: StripOutput,
+    ) -> (usize, usize) {
+        let ty = rect.y0 / TILE_SIZE;
+        let bin = &self.bins.bins[(ty * self.bins.tiles_x + tx) as usize];
+        if bin.is_empty() {
+            if !(self.whole_and_replacing && *known_background) {
+                out.fill_background(rect);
+            }
+            *known_background = self.whole_and_replacing;
+            return (0, 0);
+        }
+        tile.resolve_visibility(&self.triangles, bin, rect);
+        let (shaded, flattened) = tile.shade(&self.triangles, &self.frame, scratch, rect, out);
+        *known_background = shaded == 0 && self.whole_and_replacing;
+        (shaded, flattened)
     }
 }
 

@@ -53,6 +53,17 @@ pub struct StripOutput<'a> {
 }
 
 impl StripOutput<'_> {
+    /// The same rows, written as a pass that blends by `blend` and stores depth or not.
+    pub fn for_pass(&mut self, blend: Blend, writes_depth: bool) -> StripOutput<'_> {
+        StripOutput {
+            color: self.color,
+            depth: self.depth,
+            blend,
+            writes_depth,
+            ..*self
+        }
+    }
+
     /// Whether any pixel of `rect` is to be written.
     pub fn any_wanted(&self, rect: &PixelRect) -> bool {
         let Some(mask) = self.mask else {

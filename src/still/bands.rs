@@ -5,7 +5,8 @@ use super::contrast::contrast_mask;
 use super::samples::Supersampling;
 use crate::raster::{
     Blend, Camera, FinishedStrips, FragmentShader, FrameStats, Framebuffer, ImageWindow,
-    Interpolation, PreparedScene, RenderTarget, TILE_SIZE, Viewport, render_into,
+    Interpolation, PreparedScene, RenderTarget, ScreenTriangle, TILE_SIZE, Viewport, render_into,
+    render_passes_into,
 };
 use glam::{Vec2, Vec3};
 use rayon::prelude::*;
@@ -15,6 +16,16 @@ use std::ops::Range;
 /// the adaptive mask. Not counted: the band's 8-bit rows waiting for the still's writer, at most
 /// 3 more a pixel and in practice under half of that (an 8K adaptive still peaks at 161 MiB).
 const BYTES_PER_BAND_PIXEL: u64 = 17;
+
+/// Supersampling passes are rendered a group at a time, tile by tile (`render_passes_into`): the
+/// more passes a group holds, the less often a tile's pixels and texels leave the cache, but
+/// passes are cancelled and reported a group at a time, and each pass of a group holds its set-up
+/// triangles. A group covers at most this many pixels times passes (eight passes of a 1080p
+/// band, about a third of a second at 16 samples)…
+const PIXEL_PASSES_PER_GROUP: usize = 8 * 1920 * 1080;
+
+/// …and its passes' triangles take at most this many bytes.
+const TRIANGLE_BYTES_PER_GROUP: usize = 64 << 20;
 
 /// Rows per band for a `width`-wide image within `budget_bytes`: whole tiles, at least one.
 pub fn band_rows(width: u32, height: u32, budget_bytes: u64) -> u32 {
@@ -73,9 +84,10 @@ impl<S: FragmentShader> BandJob<'_, S> {
         self.supersampling.offsets().len() + usize::from(self.adaptive_threshold().is_some())
     }
 
-    /// Renders rows `rows` into `buffers` (read back with `resolved`), one pass per sample,
-    /// calling `on_pass` after each. `keep_going` is asked before every pass; when it says no,
-    /// the band is abandoned and `None` returned. `finished_strips` hears each strip of the band
+    /// Renders rows `rows` into `buffers` (read back with `resolved`), one pass per sample, the
+    /// supersampling passes a group at a time (`passes_per_group`), calling `on_pass` once per
+    /// pass as each group ends. `keep_going` is asked before every group; when it says no, the
+    /// band is abandoned and `None` returned. `finished_strips` hears each strip of the band
     /// as the last pass finishes it (see `RenderTarget::finished_strips`); a caller that takes
     /// the strips does not get the band's depth (no pass writes it but an adaptive centre pass,
     /// whose depth the contrast mask reads). Otherwise the depth is the last pass's: the only
@@ -158,26 +170,41 @@ impl<S: FragmentShader> BandJob<'_, S> {
         let weight = Blend::Add(1.0 / offsets.len() as f32);
         let only = adaptive.map(|_| &mask[..]);
         let last = offsets.len() - 1;
-        for (k, offset) in offsets.into_iter().enumerate() {
+        let footprint = self.supersampling.footprint();
+        let passes: Vec<RenderTarget> = (offsets.into_iter().enumerate())
+            .map(|(k, offset)| {
+                let pass = target(offset, footprint, only, weight);
+                if k == last {
+                    finishing(pass)
+                } else {
+                    RenderTarget {
+                        writes_depth: false,
+                        ..pass
+                    }
+                }
+            })
+            .collect();
+        let band_pixels = viewport.width as usize * viewport.height as usize;
+        let per_group = passes_per_group(band_pixels, self.prepared.triangle_count());
+        for group in passes.chunks(per_group) {
             if !keep_going() {
                 return None;
             }
-            let pass = target(offset, self.supersampling.footprint(), only, weight);
-            let target = if k == last {
-                finishing(pass)
-            } else {
-                RenderTarget {
-                    writes_depth: false,
-                    ..pass
-                }
-            };
-            let pass = render_into(self.prepared, &target, self.shader, &mut buffers.frame);
-            stats = add_stats(stats, pass);
-            on_pass();
+            let done = render_passes_into(self.prepared, group, self.shader, &mut buffers.frame);
+            stats = add_stats(stats, done);
+            group.iter().for_each(|_| on_pass());
         }
         buffers.mask = mask;
         Some(stats)
     }
+}
+
+/// How many supersampling passes of a band of `pixels` are rendered together, for a scene of
+/// `triangles` triangles: at least one.
+fn passes_per_group(pixels: usize, triangles: usize) -> usize {
+    let by_pixels = PIXEL_PASSES_PER_GROUP / pixels.max(1);
+    let by_triangles = TRIANGLE_BYTES_PER_GROUP / (triangles * size_of::<ScreenTriangle>()).max(1);
+    by_pixels.min(by_triangles).max(1)
 }
 
 fn add_stats(a: FrameStats, b: FrameStats) -> FrameStats {
@@ -200,4 +227,24 @@ pub fn render_supersampled<S: FragmentShader>(
         .expect("never cancelled");
     let framebuffer = std::mem::replace(&mut buffers.frame, Framebuffer::new(0, 0, Vec3::ZERO));
     (framebuffer, stats)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn groups_hold_fewer_passes_as_bands_and_meshes_grow() {
+        let hd = 1920 * 1080;
+        // The POV-Ray peer's scene (16 130 triangles) at 1080p, then in an 8K still's bands.
+        assert_eq!(passes_per_group(hd, 16_130), 8);
+        assert_eq!(passes_per_group(7680 * 1024, 16_130), 2);
+        // A sphere tessellated at the densest setting: one pass at a time.
+        assert_eq!(passes_per_group(hd, 4096 * 2048 * 2), 1);
+        assert_eq!(
+            passes_per_group(0, 0),
+            PIXEL_PASSES_PER_GROUP.min(TRIANGLE_BYTES_PER_GROUP)
+        );
+        assert!(passes_per_group(64 * 64, 100) >= 16);
+    }
 }
