@@ -4,8 +4,8 @@
 //! weighted colours into what is there (supersampling's passes), touch only their pixels.
 
 use bumpwork::raster::{
-    Blend, Framebuffer, ImageWindow, PreparedScene, RenderTarget, Viewport, render, render_into,
-    render_passes_into,
+    Blend, Framebuffer, ImageWindow, PreparedScene, RenderTarget, Srgb8Strips, Viewport, render,
+    render_into, render_passes_into,
 };
 use bumpwork::scene::{Scene, preset};
 use bumpwork::shade::LitShader;
@@ -316,30 +316,42 @@ fn passes_rendered_tile_by_tile_equal_the_passes_one_after_another() {
 }
 
 #[test]
-fn passes_rendered_tile_by_tile_hand_on_each_strip_once_finished() {
+fn passes_rendered_tile_by_tile_hand_on_each_strip_once_finished_as_srgb() {
     let far = far_sphere(Vec3::splat(0.1));
     let shader = LitShader::new(&far.scene, &far.scene.camera);
     let heard = Mutex::new(Vec::new());
-    let hear =
-        |strip: usize, colours: &[Vec3]| heard.lock().unwrap().push((strip, colours.to_vec()));
-    let mut passes = shifted_passes(&far, None);
-    if let Some(last) = passes.last_mut() {
-        last.finished_strips = Some(&hear);
-    }
-    let mut framebuffer = rendered_once(&far);
-    render_passes_into(&far, &passes, &shader, &mut framebuffer);
-    let mut heard = heard.into_inner().unwrap();
-    heard.sort_by_key(|&(strip, _)| strip);
-    let strip_pixels = (64 * SMALL.width) as usize;
-    let strips: Vec<&[Vec3]> = framebuffer.color().chunks(strip_pixels).collect();
-    assert_eq!(heard.len(), strips.len(), "each strip heard once");
-    for ((index, colours), (expected_index, expected)) in
-        heard.iter().zip(strips.iter().enumerate())
-    {
-        assert_eq!(*index, expected_index);
-        assert!(
-            colours[..] == expected[..],
-            "strip {index} heard before its last pass"
+    // Buffers holding stale bytes, as reused ones do: every byte must be written.
+    let buffer = || vec![0xAB; 7];
+    let finished = |strip: usize, bytes: Vec<u8>| heard.lock().unwrap().push((strip, bytes));
+    let strips = Srgb8Strips {
+        buffer: &buffer,
+        finished: &finished,
+    };
+    let mask = scattered_mask(SMALL);
+    for mask in [None, Some(&mask[..])] {
+        let mut passes = shifted_passes(&far, mask);
+        if let Some(last) = passes.last_mut() {
+            last.finished_strips = Some(&strips);
+        }
+        let mut framebuffer = scribbled(SMALL);
+        render_passes_into(&far, &passes, &shader, &mut framebuffer);
+        let mut heard = std::mem::take(&mut *heard.lock().unwrap());
+        heard.sort_by_key(|&(strip, _)| strip);
+        let expected: Vec<u8> = framebuffer.to_srgb8().into_iter().flatten().collect();
+        let strip_bytes = (64 * SMALL.width * 3) as usize;
+        let strips: Vec<&[u8]> = expected.chunks(strip_bytes).collect();
+        let indices: Vec<usize> = heard.iter().map(|&(strip, _)| strip).collect();
+        assert_eq!(
+            indices,
+            (0..strips.len()).collect::<Vec<_>>(),
+            "each strip once"
         );
+        for ((index, bytes), expected) in heard.iter().zip(strips) {
+            assert!(
+                bytes[..] == expected[..],
+                "strip {index}, masked {}: not the finished pixels",
+                mask.is_some()
+            );
+        }
     }
 }

@@ -24,7 +24,7 @@ pub use clip::{ClipVertex, clip_triangle};
 pub use fragment::{Fragment, FragmentShader, FrameObject, PerFragment};
 pub use framebuffer::{Blend, Framebuffer, encode_srgb8, linear_to_srgb8};
 pub use pipeline::{
-    FinishedStrips, FrameStats, Interpolation, PreparedObject, PreparedScene, RenderTarget,
+    FrameStats, Interpolation, PreparedObject, PreparedScene, RenderTarget, Srgb8Strips,
     frame_objects, render, render_into, render_passes_into, render_with, screen_triangles,
 };
 pub use scan::{PixelRect, scan_triangle};

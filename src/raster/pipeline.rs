@@ -2,7 +2,7 @@ use super::bin::{TILE_SIZE, TileBins};
 use super::camera::Camera;
 use super::clip::{ClipVertex, clip_triangle, needs_no_clipping};
 use super::fragment::{FragmentShader, FrameObject};
-use super::framebuffer::{Blend, Framebuffer};
+use super::framebuffer::{Blend, Framebuffer, encode_srgb8};
 use super::scan::PixelRect;
 use super::setup::{ScreenTriangle, TrianglePlanes, Viewport};
 use super::tile::{StripOutput, TileBuffers, TileFrame};
@@ -76,14 +76,20 @@ pub struct RenderTarget<'a> {
     /// depth nobody reads skips the stores, and a fresh framebuffer's depth is never touched
     /// (so never mapped).
     pub writes_depth: bool,
-    /// Told of each strip of `TILE_SIZE` rows (its index from the top, its colour row-major) as
-    /// soon as this render has finished it, on the thread that rendered it, in no set order: a
-    /// still converts and encodes its rows while the rest of the frame renders.
-    pub finished_strips: Option<&'a FinishedStrips<'a>>,
+    /// Where each strip of `TILE_SIZE` rows goes as 8-bit sRGB once this render has finished
+    /// it: a still encodes its rows while the rest of the frame renders.
+    pub finished_strips: Option<&'a Srgb8Strips<'a>>,
 }
 
-/// See `RenderTarget::finished_strips`.
-pub type FinishedStrips<'a> = dyn Fn(usize, &[Vec3]) + Sync + 'a;
+/// A render's strips handed on as 8-bit sRGB (3 bytes a pixel, row-major), each tile converted
+/// as soon as it is finished, while its colours are still in cache.
+pub struct Srgb8Strips<'a> {
+    /// A buffer to fill with a strip's bytes (its contents are overwritten: pass one back).
+    pub buffer: &'a (dyn Fn() -> Vec<u8> + Sync),
+    /// Strip `index` (from the top) and its bytes, on the thread that rendered it, in no set
+    /// order.
+    pub finished: &'a (dyn Fn(usize, Vec<u8>) + Sync),
+}
 
 impl<'a> RenderTarget<'a> {
     /// The whole `viewport` seen by `camera`, one perspective-correct sample at each pixel centre.
@@ -235,6 +241,11 @@ pub fn render_passes_into(
             || (TileBuffers::default(), shader.scratch()),
             |(tile, scratch), (ty, ((color, depth), known_background))| {
                 let mut counts = (0, 0);
+                let mut bytes = last.finished_strips.map(|strips| {
+                    let mut bytes = (strips.buffer)();
+                    bytes.resize(color.len() * 3, 0);
+                    bytes
+                });
                 let mask = last.mask.map(|m| &m[ty * strip..ty * strip + color.len()]);
                 for (tx, known_background) in (0..tiles_x).zip(known_background) {
                     let rect = TileBins::tile_rect(viewport, tx, ty as u32);
@@ -248,18 +259,20 @@ pub fn render_passes_into(
                         blend: last.blend,
                         writes_depth: last.writes_depth,
                     };
-                    if !out.any_wanted(&rect) {
-                        continue;
+                    if out.any_wanted(&rect) {
+                        for pass in &passes {
+                            let out = out.for_pass(pass.target.blend, pass.target.writes_depth);
+                            let (shaded, flattened) =
+                                pass.render_tile(tx, &rect, known_background, tile, scratch, out);
+                            counts = (counts.0 + shaded, counts.1 + flattened);
+                        }
                     }
-                    for pass in &passes {
-                        let out = out.for_pass(pass.target.blend, pass.target.writes_depth);
-                        let (shaded, flattened) =
-                            pass.render_tile(tx, &rect, known_background, tile, scratch, out);
-                        counts = (counts.0 + shaded, counts.1 + flattened);
+                    if let Some(bytes) = &mut bytes {
+                        encode_tile(color, viewport.width, &rect, bytes);
                     }
                 }
-                if let Some(finished) = last.finished_strips {
-                    finished(ty, color);
+                if let (Some(strips), Some(bytes)) = (last.finished_strips, bytes) {
+                    (strips.finished)(ty, bytes);
                 }
                 counts
             },
@@ -270,6 +283,18 @@ pub fn render_passes_into(
         rasterized_triangles: passes.iter().map(|p| p.triangles.len()).sum(),
         fragments,
         flattened,
+    }
+}
+
+/// The pixels of `rect` in a strip of `width`-pixel rows starting at the rect's tile row, as
+/// 8-bit sRGB into the strip's `bytes`.
+fn encode_tile(color: &[Vec3], width: u32, rect: &PixelRect, bytes: &mut [u8]) {
+    let first_row = rect.y0 / TILE_SIZE * TILE_SIZE;
+    for y in rect.y0..=rect.y1 {
+        let start = ((y - first_row) * width + rect.x0) as usize;
+        let pixels = start..start + (rect.x1 - rect.x0 + 1) as usize;
+        let linear = bytemuck::cast_slice(&color[pixels.clone()]);
+        encode_srgb8(linear, &mut bytes[pixels.start * 3..pixels.end * 3]);
     }
 }
 

@@ -4,8 +4,8 @@
 use super::contrast::contrast_mask;
 use super::samples::Supersampling;
 use crate::raster::{
-    Blend, Camera, FinishedStrips, FragmentShader, FrameStats, Framebuffer, ImageWindow,
-    Interpolation, PreparedScene, RenderTarget, ScreenTriangle, TILE_SIZE, Viewport, render_into,
+    Blend, Camera, FragmentShader, FrameStats, Framebuffer, ImageWindow, Interpolation,
+    PreparedScene, RenderTarget, ScreenTriangle, Srgb8Strips, TILE_SIZE, Viewport, render_into,
     render_passes_into,
 };
 use glam::{Vec2, Vec3};
@@ -98,7 +98,7 @@ impl<S: FragmentShader> BandJob<'_, S> {
         buffers: &mut BandBuffers,
         keep_going: &dyn Fn() -> bool,
         on_pass: &mut dyn FnMut(),
-        finished_strips: Option<&FinishedStrips<'_>>,
+        finished_strips: Option<&Srgb8Strips<'_>>,
     ) -> Option<FrameStats> {
         let viewport = Viewport {
             width: self.full.width,

@@ -2,8 +2,7 @@
 //! light happens here, after the samples are resolved.
 
 use super::bands::{BandBuffers, BandJob, band_rows};
-use crate::raster::{FragmentShader, FrameStats, TILE_SIZE, encode_srgb8};
-use glam::Vec3;
+use crate::raster::{FragmentShader, FrameStats, Srgb8Strips, TILE_SIZE};
 use std::collections::BTreeMap;
 use std::ops::Range;
 use std::sync::mpsc::{Receiver, channel};
@@ -81,14 +80,17 @@ fn render_and_write<S: FragmentShader>(
     let (strips, finished) = channel();
     std::thread::scope(|scope| {
         let writer = scope.spawn(move || write_in_order(finished, strip_count, sink, spare));
-        let convert = move |strip: usize, linear: &[Vec3]| {
-            let mut bytes = spare.take();
-            to_srgb_bytes(linear, &mut bytes);
+        let buffer = || spare.take();
+        let finished = move |strip: usize, bytes: Vec<u8>| {
             // Refused only once the writer has stopped on a failed write, which it reports.
             let _ = strips.send((strip, bytes));
         };
-        let band = job.render(rows, buffers, keep_going, on_pass, Some(&convert));
-        drop(convert); // closes the channel: the writer ends with the last strip
+        let srgb8 = Srgb8Strips {
+            buffer: &buffer,
+            finished: &finished,
+        };
+        let band = job.render(rows, buffers, keep_going, on_pass, Some(&srgb8));
+        drop(finished); // closes the channel: the writer ends with the last strip
         let written = writer
             .join()
             .unwrap_or_else(|panic| std::panic::resume_unwind(panic));
@@ -139,11 +141,6 @@ fn write_in_order(
             "{next} of {strip_count} strips of rows were rendered"
         ))
     }
-}
-
-fn to_srgb_bytes(linear: &[Vec3], bytes: &mut Vec<u8>) {
-    bytes.resize(linear.len() * 3, 0);
-    encode_srgb8(bytemuck::cast_slice(linear), bytes);
 }
 
 #[cfg(test)]
