@@ -77,7 +77,9 @@ pub struct RenderTarget<'a> {
     /// (so never mapped).
     pub writes_depth: bool,
     /// Where each strip of `TILE_SIZE` rows goes as 8-bit sRGB once this render has finished
-    /// it: a still encodes its rows while the rest of the frame renders.
+    /// it: a still encodes its rows while the rest of the frame renders. A lone pass that
+    /// replaces every pixel and writes no depth then leaves the framebuffer as it was: the
+    /// strips are its only output.
     pub finished_strips: Option<&'a Srgb8Strips<'a>>,
 }
 
@@ -226,55 +228,51 @@ pub fn render_passes_into(
         .iter()
         .map(|target| Pass::new(&objects, target, shader, derivatives))
         .collect();
-    let background = prepared.scene.background;
-    framebuffer.resize(viewport.width, viewport.height);
     let (tiles_x, tiles_y) = (passes[0].bins.tiles_x, passes[0].bins.tiles_y);
-    let (color, depth, known_background) = framebuffer.tiles_mut((tiles_x, tiles_y), background);
-    let strip = (TILE_SIZE * viewport.width) as usize;
-    let (fragments, flattened) = color
-        .par_chunks_mut(strip)
-        .zip(depth.par_chunks_mut(strip))
+    let job = StripJob {
+        passes: &passes,
+        last,
+        viewport,
+        background: prepared.scene.background,
+        tiles_x,
+        // A lone pass that replaces every pixel, keeps no depth and hands its strips on needs
+        // no framebuffer: its colours go straight into the strips' bytes (and a fresh
+        // framebuffer is never allocated, zeroed or touched).
+        bytes_only: targets.len() == 1
+            && last.finished_strips.is_some()
+            && last.mask.is_none()
+            && last.blend == Blend::Replace
+            && !last.writes_depth,
+    };
+    let mut no_framebuffer_known = Vec::new();
+    let (strips, known_background) = if job.bytes_only {
+        no_framebuffer_known.resize((tiles_x * tiles_y) as usize, false);
+        let nothing = (0..tiles_y).map(|_| (&mut [][..], &mut [][..])).collect();
+        (nothing, &mut no_framebuffer_known[..])
+    } else {
+        framebuffer.resize(viewport.width, viewport.height);
+        let (color, depth, known) = framebuffer.tiles_mut((tiles_x, tiles_y), job.background);
+        let pixels = (TILE_SIZE * viewport.width) as usize;
+        let strips: Vec<_> = color
+            .chunks_mut(pixels)
+            .zip(depth.chunks_mut(pixels))
+            .collect();
+        (strips, known)
+    };
+    let (fragments, flattened) = strips
+        .into_par_iter()
         .zip(known_background.par_chunks_mut(tiles_x.max(1) as usize))
         .enumerate()
         .map_init(
             // Once per rayon job, not per tile row: the buffers keep their grown capacity.
             || (TileBuffers::default(), shader.scratch()),
             |(tile, scratch), (ty, ((color, depth), known_background))| {
-                let mut counts = (0, 0);
-                let mut bytes = last.finished_strips.map(|strips| {
-                    let mut bytes = (strips.buffer)();
-                    bytes.resize(color.len() * 3, 0);
-                    bytes
-                });
-                let mask = last.mask.map(|m| &m[ty * strip..ty * strip + color.len()]);
-                for (tx, known_background) in (0..tiles_x).zip(known_background) {
-                    let rect = TileBins::tile_rect(viewport, tx, ty as u32);
-                    let mut out = StripOutput {
-                        color,
-                        depth,
-                        width: viewport.width,
-                        first_row: rect.y0,
-                        background,
-                        mask,
-                        blend: last.blend,
-                        writes_depth: last.writes_depth,
-                    };
-                    if out.any_wanted(&rect) {
-                        for pass in &passes {
-                            let out = out.for_pass(pass.target.blend, pass.target.writes_depth);
-                            let (shaded, flattened) =
-                                pass.render_tile(tx, &rect, known_background, tile, scratch, out);
-                            counts = (counts.0 + shaded, counts.1 + flattened);
-                        }
-                    }
-                    if let Some(bytes) = &mut bytes {
-                        encode_tile(color, viewport.width, &rect, bytes);
-                    }
-                }
-                if let (Some(strips), Some(bytes)) = (last.finished_strips, bytes) {
-                    (strips.finished)(ty, bytes);
-                }
-                counts
+                let strip = StripBuffers {
+                    color,
+                    depth,
+                    known_background,
+                };
+                job.render(ty as u32, strip, tile, scratch)
             },
         )
         .reduce(|| (0, 0), |a, b| (a.0 + b.0, a.1 + b.1));
@@ -283,6 +281,76 @@ pub fn render_passes_into(
         rasterized_triangles: passes.iter().map(|p| p.triangles.len()).sum(),
         fragments,
         flattened,
+    }
+}
+
+/// What every strip of `render_passes_into` shares.
+struct StripJob<'a, S> {
+    passes: &'a [Pass<'a, S>],
+    last: &'a RenderTarget<'a>,
+    viewport: Viewport,
+    background: Vec3,
+    tiles_x: u32,
+    /// Whether the strips' colours go only into their sRGB bytes (see `render_passes_into`).
+    bytes_only: bool,
+}
+
+/// One strip's share of the framebuffer (empty colour and depth when `bytes_only`).
+struct StripBuffers<'a> {
+    color: &'a mut [Vec3],
+    depth: &'a mut [f32],
+    known_background: &'a mut [bool],
+}
+
+impl<S: FragmentShader> StripJob<'_, S> {
+    /// Renders every pass of strip `ty`, tile by tile, and hands its bytes on if asked; the
+    /// fragments shaded and flattened.
+    fn render(
+        &self,
+        ty: u32,
+        strip: StripBuffers,
+        tile: &mut TileBuffers,
+        scratch: &mut S::Scratch,
+    ) -> (usize, usize) {
+        let width = self.viewport.width;
+        let rows = (self.viewport.height - ty * TILE_SIZE).min(TILE_SIZE);
+        let (first, pixels) = ((ty * TILE_SIZE * width) as usize, (rows * width) as usize);
+        let mut bytes = self.last.finished_strips.map(|strips| {
+            let mut bytes = (strips.buffer)();
+            bytes.resize(pixels * 3, 0);
+            bytes
+        });
+        let mut counts = (0, 0);
+        let (color, depth) = (strip.color, strip.depth);
+        for (tx, known_background) in (0..self.tiles_x).zip(strip.known_background) {
+            let rect = TileBins::tile_rect(self.viewport, tx, ty);
+            let mut out = StripOutput {
+                color: &mut *color,
+                depth: &mut *depth,
+                srgb8: bytes.as_deref_mut().filter(|_| self.bytes_only),
+                width,
+                first_row: rect.y0,
+                background: self.background,
+                mask: self.last.mask.map(|m| &m[first..first + pixels]),
+                blend: self.last.blend,
+                writes_depth: self.last.writes_depth,
+            };
+            if out.any_wanted(&rect) {
+                for pass in self.passes {
+                    let out = out.for_pass(pass.target.blend, pass.target.writes_depth);
+                    let (shaded, flattened) =
+                        pass.render_tile(tx, &rect, known_background, tile, scratch, out);
+                    counts = (counts.0 + shaded, counts.1 + flattened);
+                }
+            }
+            if let Some(bytes) = bytes.as_deref_mut().filter(|_| !self.bytes_only) {
+                encode_tile(color, width, &rect, bytes);
+            }
+        }
+        if let (Some(strips), Some(bytes)) = (self.last.finished_strips, bytes) {
+            (strips.finished)(ty as usize, bytes);
+        }
+        counts
     }
 }
 

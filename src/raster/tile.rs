@@ -3,7 +3,7 @@
 
 use super::bin::TILE_SIZE;
 use super::fragment::{Fragment, FragmentShader, FrameObject};
-use super::framebuffer::Blend;
+use super::framebuffer::{Blend, encode_srgb8, linear_to_srgb8};
 use super::row_runs::{PixelKind, RowRuns};
 use super::scan::{PixelRect, RowSpan, triangle_rows};
 use super::setup::ScreenTriangle;
@@ -42,6 +42,9 @@ impl Default for TileBuffers {
 pub struct StripOutput<'a> {
     pub color: &'a mut [Vec3],
     pub depth: &'a mut [f32],
+    /// When given, colours go here as 8-bit sRGB (3 bytes a pixel, row-major) instead of into
+    /// `color`: for a lone replacing pass whose only output is the encoded strip.
+    pub srgb8: Option<&'a mut [u8]>,
     pub width: u32,
     pub first_row: u32,
     pub background: Vec3,
@@ -58,6 +61,7 @@ impl StripOutput<'_> {
         StripOutput {
             color: self.color,
             depth: self.depth,
+            srgb8: self.srgb8.as_deref_mut(),
             blend,
             writes_depth,
             ..*self
@@ -90,6 +94,13 @@ impl StripOutput<'_> {
 
     /// Writes the background over `pixels`.
     fn background_run(&mut self, pixels: Range<usize>) {
+        if let Some(bytes) = self.srgb8.as_deref_mut() {
+            let encoded = self.background.to_array().map(linear_to_srgb8);
+            for pixel in bytes[pixels.start * 3..pixels.end * 3].chunks_exact_mut(3) {
+                pixel.copy_from_slice(&encoded);
+            }
+            return;
+        }
         let colors = &mut self.color[pixels.clone()];
         match self.blend {
             Blend::Replace => fill_colour(colors, self.background),
@@ -105,6 +116,19 @@ impl StripOutput<'_> {
 
     /// Writes shaded fragments over `runs` of pixels, as many as the runs hold, in order.
     fn shaded_runs(&mut self, runs: &[Range<usize>], fragments: &[Fragment], colors: &[Vec3]) {
+        if let Some(bytes) = self.srgb8.as_deref_mut() {
+            debug_assert!(self.blend == Blend::Replace && !self.writes_depth);
+            // The runs take the colours in order, one per pixel.
+            let mut first = 0;
+            for pixels in runs {
+                let n = pixels.len().min(colors.len() - first);
+                let linear = bytemuck::cast_slice(&colors[first..first + n]);
+                let start = pixels.start * 3;
+                encode_srgb8(linear, &mut bytes[start..start + 3 * n]);
+                first += n;
+            }
+            return;
+        }
         match self.blend {
             Blend::Replace => self.put_runs(runs, fragments, colors, |pixel, c| *pixel = c),
             Blend::Add(weight) => {
