@@ -32,10 +32,10 @@ pub trait FragmentShader: Sync {
 
     fn scratch(&self) -> Self::Scratch;
 
-    /// Whether the program reads the fragments' (u,v) derivatives (`duv_dx`, `duv_dy`) for
-    /// these objects; where it does not, the rasterizer leaves them zero and saves their
-    /// arithmetic at every pixel. A program that says false must not read them.
-    fn reads_derivatives(&self, _objects: &[FrameObject]) -> bool {
+    /// Whether the program reads the (u,v) derivatives (`duv_dx`, `duv_dy`) of `object`'s
+    /// fragments; where it does not, the rasterizer leaves them zero and saves their
+    /// arithmetic at every pixel of that object. A program that says false must not read them.
+    fn reads_derivatives(&self, _object: &FrameObject) -> bool {
         true
     }
 

@@ -223,10 +223,13 @@ pub fn render_passes_into(
     );
     let viewport = last.viewport;
     let objects = frame_objects(prepared, last.camera);
-    let derivatives = shader.reads_derivatives(&objects);
+    let derivatives: Vec<bool> = objects
+        .iter()
+        .map(|o| shader.reads_derivatives(o))
+        .collect();
     let passes: Vec<Pass<_>> = targets
         .iter()
-        .map(|target| Pass::new(&objects, target, shader, derivatives))
+        .map(|target| Pass::new(&objects, target, shader, &derivatives))
         .collect();
     let (tiles_x, tiles_y) = (passes[0].bins.tiles_x, passes[0].bins.tiles_y);
     let job = StripJob {
@@ -382,7 +385,7 @@ impl<'a, S: FragmentShader> Pass<'a, S> {
         objects: &'a [FrameObject<'a>],
         target: &'a RenderTarget<'a>,
         shader: &'a S,
-        derivatives: bool,
+        derivatives: &'a [bool],
     ) -> Pass<'a, S> {
         let triangles = screen_triangles(objects, target);
         let bins = TileBins::new(target.viewport, &triangles);

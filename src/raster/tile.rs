@@ -299,8 +299,9 @@ pub struct TileFrame<'a, S> {
     pub perspective: bool,
     /// Sample spacing in pixels: scales the (u,v) derivatives (see `RenderTarget::footprint`).
     pub footprint: f32,
-    /// Whether the shader reads the (u,v) derivatives (`FragmentShader::reads_derivatives`).
-    pub derivatives: bool,
+    /// By object: whether the shader reads the (u,v) derivatives of its fragments
+    /// (`FragmentShader::reads_derivatives`).
+    pub derivatives: &'a [bool],
 }
 
 /// The fragment at pixel (x, y) of a triangle: (u,v) and, if the shader reads them, its screen
@@ -317,7 +318,7 @@ fn fragment<S>(t: &ScreenTriangle, x: u32, y: u32, frame: &TileFrame<S>) -> Frag
     } else {
         plane_uv
     };
-    let (duv_dx, duv_dy) = if frame.derivatives {
+    let (duv_dx, duv_dy) = if frame.derivatives[t.object as usize] {
         let plane_dx = Vec2::new(t.u_over_w.dx, t.v_over_w.dx);
         let plane_dy = Vec2::new(t.u_over_w.dy, t.v_over_w.dy);
         let (dx, dy) = if frame.perspective {

@@ -96,15 +96,13 @@ impl FragmentShader for LitShader {
 
     /// Only image lookups read the derivatives: a colour image through a filter that picks a
     /// mip level, and image bump maps (whose gradient is filtered over the footprint).
-    fn reads_derivatives(&self, objects: &[FrameObject]) -> bool {
-        objects.iter().any(|o| {
-            let material = &o.prepared.material;
-            let filtered_image = matches!(&material.texture,
-                Some(Texturing::Image(image)) if image.sampler.filter.uses_footprint());
-            let image_bump = matches!(&material.bump,
-                Some(bump) if matches!(bump.source, BumpSource::Image(_)));
-            filtered_image || image_bump
-        })
+    fn reads_derivatives(&self, object: &FrameObject) -> bool {
+        let material = &object.prepared.material;
+        let filtered_image = matches!(&material.texture,
+            Some(Texturing::Image(image)) if image.sampler.filter.uses_footprint());
+        let image_bump = matches!(&material.bump,
+            Some(bump) if matches!(bump.source, BumpSource::Image(_)));
+        filtered_image || image_bump
     }
 
     fn shade(
@@ -700,22 +698,32 @@ mod tests {
         })
     }
 
-    /// The shader skips derivatives only where nothing it reads needs them: frames rendered
-    /// without them are the bits of frames rendered with them, and a trilinear image (which
-    /// would change without them) asks for them.
+    /// The shader skips derivatives only where nothing it reads needs them, object by object:
+    /// frames rendered without them are the bits of frames rendered with them, and an object
+    /// wearing a trilinear image (which would change without them) asks for them, alone in a
+    /// scene of pattern-textured ones too.
     #[test]
     fn derivatives_are_skipped_only_where_unread() {
-        let cases = [
-            ("sphere-on-plane-dimples", None, false),
-            ("big-sphere-squares", Some(Filter::Bilinear), false),
-            ("big-sphere-squares", Some(Filter::Nearest), false),
-            ("big-sphere-squares", Some(Filter::Trilinear), true),
+        // The preset, which object wears a checkerboard image through which filter, and
+        // which objects read derivatives.
+        type Case = (&'static str, Option<(usize, Filter)>, &'static [bool]);
+        let cases: [Case; 5] = [
+            ("sphere-on-plane-dimples", None, &[false, false]),
+            (
+                "sphere-on-plane-dimples",
+                Some((1, Filter::Trilinear)),
+                &[false, true],
+            ),
+            ("big-sphere-squares", Some((0, Filter::Bilinear)), &[false]),
+            ("big-sphere-squares", Some((0, Filter::Nearest)), &[false]),
+            ("big-sphere-squares", Some((0, Filter::Trilinear)), &[true]),
         ];
-        for (name, filter, reads) in cases {
+        for (name, image, reads) in cases {
             let mut scene = preset(name).expect("a built-in scene");
-            if let Some(filter) = filter {
-                scene.objects[0].material.texture = Some(checkerboard(filter));
-            }
+            let filter = image.map(|(object, filter)| {
+                scene.objects[object].material.texture = Some(checkerboard(filter));
+                filter
+            });
             let camera = scene.camera.clone();
             let prepared = PreparedScene::new(scene, Tessellation { density: 24 });
             let target = RenderTarget::new(
@@ -727,11 +735,11 @@ mod tests {
             );
             let shader = LitShader::new(&prepared.scene, &camera);
             let objects = frame_objects(&prepared, &camera);
-            assert_eq!(
-                shader.reads_derivatives(&objects),
-                reads,
-                "{name} {filter:?}"
-            );
+            let read: Vec<bool> = objects
+                .iter()
+                .map(|o| shader.reads_derivatives(o))
+                .collect();
+            assert_eq!(read, reads, "{name} {filter:?}");
             let (skipped, _) = render_with(&prepared, &target, &shader);
             let (computed, _) = render_with(&prepared, &target, &AllDerivatives(&shader));
             let bits = |f: &crate::raster::Framebuffer| -> Vec<[u32; 3]> {
