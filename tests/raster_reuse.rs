@@ -173,20 +173,21 @@ fn a_masked_render_writes_its_pixels_and_leaves_the_rest() {
     let want = fresh(&far, SMALL);
     let mask = scattered_mask(SMALL);
     let weight = 0.25;
-    for blend in [Blend::Replace, Blend::Add(weight)] {
+    for blend in [Blend::Replace, Blend::Scale(weight), Blend::Add(weight)] {
         let before = scribbled(SMALL);
         let mut got = before.clone();
         render_as(&far, Some(&mask), blend, &mut got);
         for (i, &wanted) in mask.iter().enumerate() {
-            let (colour, depth) = if !wanted {
-                (before.color()[i], before.depth()[i])
-            } else if blend == Blend::Replace {
-                (want.color()[i], want.depth()[i])
+            let colour = match blend {
+                _ if !wanted => before.color()[i],
+                Blend::Replace => want.color()[i],
+                Blend::Scale(_) => want.color()[i] * weight,
+                Blend::Add(_) => before.color()[i] + want.color()[i] * weight,
+            };
+            let depth = if wanted {
+                want.depth()[i]
             } else {
-                (
-                    before.color()[i] + want.color()[i] * weight,
-                    want.depth()[i],
-                )
+                before.depth()[i]
             };
             let what = format!("{blend:?} at pixel {i}, wanted {wanted}");
             assert_eq!(
@@ -230,7 +231,7 @@ fn a_render_without_depth_writes_the_same_colours_and_leaves_every_depth() {
     let far = far_sphere(Vec3::splat(0.1));
     let mask = scattered_mask(SMALL);
     for mask in [None, Some(&mask[..])] {
-        for blend in [Blend::Replace, Blend::Add(0.25)] {
+        for blend in [Blend::Replace, Blend::Scale(0.25), Blend::Add(0.25)] {
             let before = scribbled(SMALL);
             let mut want = before.clone();
             render_as(&far, mask, blend, &mut want);
@@ -280,7 +281,7 @@ fn shifted_passes<'a>(
     };
     vec![
         pass((0.0, 0.0), Blend::Replace, true),
-        pass((0.3, -0.2), Blend::Add(0.25), false),
+        pass((0.3, -0.2), Blend::Scale(0.25), false),
         pass((-0.4, 0.1), Blend::Add(0.25), true),
         pass((0.1, 0.45), Blend::Add(0.25), false),
     ]

@@ -18,6 +18,9 @@ pub struct Framebuffer {
 pub enum Blend {
     #[default]
     Replace,
+    /// Replaces with colour × weight: the first of supersampling's passes, so their sum starts
+    /// from no zeroed framebuffer (the same bits as adding to zero, but for the sign of a zero).
+    Scale(f32),
     /// Adds colour × weight: supersampling's passes summed in place, in pass order. The
     /// framebuffer must already be the render's size and hold what is to be added to.
     Add(f32),

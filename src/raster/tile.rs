@@ -104,6 +104,7 @@ impl StripOutput<'_> {
         let colors = &mut self.color[pixels.clone()];
         match self.blend {
             Blend::Replace => fill_colour(colors, self.background),
+            Blend::Scale(weight) => fill_colour(colors, self.background * weight),
             Blend::Add(weight) => {
                 let added = self.background * weight;
                 colors.iter_mut().for_each(|c| *c += added);
@@ -131,6 +132,9 @@ impl StripOutput<'_> {
         }
         match self.blend {
             Blend::Replace => self.put_runs(runs, fragments, colors, |pixel, c| *pixel = c),
+            Blend::Scale(weight) => {
+                self.put_runs(runs, fragments, colors, |pixel, c| *pixel = c * weight)
+            }
             Blend::Add(weight) => {
                 self.put_runs(runs, fragments, colors, |pixel, c| *pixel += c * weight)
             }

@@ -9,7 +9,6 @@ use crate::raster::{
     render_passes_into,
 };
 use glam::{Vec2, Vec3};
-use rayon::prelude::*;
 use std::ops::Range;
 
 /// Bytes a band may hold per pixel: the framebuffer its passes add into (colour and depth) and
@@ -153,27 +152,22 @@ impl<S: FragmentShader> BandJob<'_, S> {
             if rows.end < self.full.height {
                 mask[pixels - width..].fill(true);
             }
-            // Marked pixels start their sum from nothing; the rest keep their centre.
-            let colors = buffers.frame.color_mut().par_iter_mut().zip(&mask);
-            colors.for_each(|(c, &marked)| *c = if marked { Vec3::ZERO } else { *c });
             on_pass();
-        } else {
-            // Every pixel starts its sum from nothing (in parallel: fresh memory costs a page
-            // fault a page).
-            buffers.frame.resize(viewport.width, viewport.height);
-            buffers
-                .frame
-                .color_mut()
-                .par_iter_mut()
-                .for_each(|c| *c = Vec3::ZERO);
         }
-        let weight = Blend::Add(1.0 / offsets.len() as f32);
+        // The first pass replaces (marked) pixels with its weighted sample, the others add
+        // theirs: unmarked pixels keep their centre.
+        let weight = 1.0 / offsets.len() as f32;
         let only = adaptive.map(|_| &mask[..]);
         let last = offsets.len() - 1;
         let footprint = self.supersampling.footprint();
         let passes: Vec<RenderTarget> = (offsets.into_iter().enumerate())
             .map(|(k, offset)| {
-                let pass = target(offset, footprint, only, weight);
+                let blend = if k == 0 {
+                    Blend::Scale(weight)
+                } else {
+                    Blend::Add(weight)
+                };
+                let pass = target(offset, footprint, only, blend);
                 if k == last {
                     finishing(pass)
                 } else {
