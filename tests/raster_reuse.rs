@@ -316,15 +316,22 @@ fn passes_rendered_tile_by_tile_equal_the_passes_one_after_another() {
     }
 }
 
-/// The strips heard, in order of their index, joined.
-fn joined(heard: &Mutex<Vec<(usize, Vec<u8>)>>) -> (Vec<usize>, Vec<u8>) {
-    let mut heard = std::mem::take(&mut *heard.lock().unwrap());
+/// Runs `render` with strips whose buffers come holding stale bytes (as reused ones do, so
+/// every byte must be written), and collects what it hands on: its result, the strip indices in
+/// order, and their bytes joined.
+fn hearing_strips<R>(render: impl FnOnce(&Srgb8Strips) -> R) -> (R, Vec<usize>, Vec<u8>) {
+    let heard = Mutex::new(Vec::new());
+    let buffer = || vec![0xAB; 5];
+    let finished = |strip: usize, bytes: Vec<u8>| heard.lock().unwrap().push((strip, bytes));
+    let result = render(&Srgb8Strips {
+        buffer: &buffer,
+        finished: &finished,
+    });
+    let mut heard = heard.into_inner().unwrap();
     heard.sort_by_key(|&(strip, _)| strip);
     let indices = heard.iter().map(|&(strip, _)| strip).collect();
-    (
-        indices,
-        heard.into_iter().flat_map(|(_, bytes)| bytes).collect(),
-    )
+    let bytes = heard.into_iter().flat_map(|(_, bytes)| bytes).collect();
+    (result, indices, bytes)
 }
 
 #[test]
@@ -332,28 +339,18 @@ fn a_lone_replacing_pass_hands_on_its_strips_and_leaves_the_framebuffer_alone() 
     // A background that is not grey, so background runs are encoded channel by channel.
     let far = far_sphere(Vec3::new(0.05, 0.2, 0.6));
     let camera = &far.scene.camera;
-    let heard = Mutex::new(Vec::new());
-    let buffer = || vec![0xAB; 5];
-    let finished = |strip: usize, bytes: Vec<u8>| heard.lock().unwrap().push((strip, bytes));
-    let strips = Srgb8Strips {
-        buffer: &buffer,
-        finished: &finished,
-    };
-    let target = RenderTarget {
-        writes_depth: false,
-        finished_strips: Some(&strips),
-        ..RenderTarget::new(camera, SMALL)
-    };
     let before = scribbled(SMALL);
     let mut framebuffer = before.clone();
-    let stats = render_into(
-        &far,
-        &target,
-        &LitShader::new(&far.scene, camera),
-        &mut framebuffer,
-    );
+    let (stats, indices, bytes) = hearing_strips(|strips| {
+        let target = RenderTarget {
+            writes_depth: false,
+            finished_strips: Some(strips),
+            ..RenderTarget::new(camera, SMALL)
+        };
+        let shader = LitShader::new(&far.scene, camera);
+        render_into(&far, &target, &shader, &mut framebuffer)
+    });
     assert_same(&framebuffer, &before, "the framebuffer");
-    let (indices, bytes) = joined(&heard);
     assert_eq!(indices, [0, 1, 2], "each strip once");
     let want = fresh(&far, SMALL);
     let expected: Vec<u8> = want.to_srgb8().into_iter().flatten().collect();
@@ -366,23 +363,16 @@ fn a_lone_replacing_pass_hands_on_its_strips_and_leaves_the_framebuffer_alone() 
 fn passes_rendered_tile_by_tile_hand_on_each_strip_once_finished_as_srgb() {
     let far = far_sphere(Vec3::splat(0.1));
     let shader = LitShader::new(&far.scene, &far.scene.camera);
-    let heard = Mutex::new(Vec::new());
-    // Buffers holding stale bytes, as reused ones do: every byte must be written.
-    let buffer = || vec![0xAB; 7];
-    let finished = |strip: usize, bytes: Vec<u8>| heard.lock().unwrap().push((strip, bytes));
-    let strips = Srgb8Strips {
-        buffer: &buffer,
-        finished: &finished,
-    };
     let mask = scattered_mask(SMALL);
     for mask in [None, Some(&mask[..])] {
-        let mut passes = shifted_passes(&far, mask);
-        if let Some(last) = passes.last_mut() {
-            last.finished_strips = Some(&strips);
-        }
         let mut framebuffer = scribbled(SMALL);
-        render_passes_into(&far, &passes, &shader, &mut framebuffer);
-        let (indices, bytes) = joined(&heard);
+        let ((), indices, bytes) = hearing_strips(|strips| {
+            let mut passes = shifted_passes(&far, mask);
+            if let Some(last) = passes.last_mut() {
+                last.finished_strips = Some(strips);
+            }
+            render_passes_into(&far, &passes, &shader, &mut framebuffer);
+        });
         assert_eq!(indices, [0, 1, 2], "each strip once");
         let expected: Vec<u8> = framebuffer.to_srgb8().into_iter().flatten().collect();
         assert!(
