@@ -15,6 +15,7 @@ mod pipeline;
 mod row_runs;
 mod scan;
 mod setup;
+mod strips;
 mod tile;
 mod window;
 

@@ -1,0 +1,156 @@
+//! A frame's strips of tiles, each rendered by every pass of `render_passes_into` tile by tile,
+//! and handed on as 8-bit sRGB when asked.
+
+use super::bin::{TILE_SIZE, TileBins};
+use super::fragment::{FragmentShader, FrameObject};
+use super::framebuffer::{Blend, encode_srgb8};
+use super::pipeline::{Interpolation, RenderTarget, screen_triangles};
+use super::scan::PixelRect;
+use super::setup::{ScreenTriangle, Viewport};
+use super::tile::{StripOutput, TileBuffers, TileFrame};
+use glam::Vec3;
+
+/// What every strip of `render_passes_into` shares.
+pub(super) struct StripJob<'a, S> {
+    pub passes: &'a [Pass<'a, S>],
+    pub last: &'a RenderTarget<'a>,
+    pub viewport: Viewport,
+    pub background: Vec3,
+    pub tiles_x: u32,
+    /// Whether the strips' colours go only into their sRGB bytes (see `render_passes_into`).
+    pub bytes_only: bool,
+}
+
+/// One strip's share of the framebuffer (empty colour and depth when `bytes_only`).
+pub(super) struct StripBuffers<'a> {
+    pub color: &'a mut [Vec3],
+    pub depth: &'a mut [f32],
+    pub known_background: &'a mut [bool],
+}
+
+impl<S: FragmentShader> StripJob<'_, S> {
+    /// Renders every pass of strip `ty`, tile by tile, and hands its bytes on if asked; the
+    /// fragments shaded and flattened.
+    pub fn render(
+        &self,
+        ty: u32,
+        strip: StripBuffers,
+        tile: &mut TileBuffers,
+        scratch: &mut S::Scratch,
+    ) -> (usize, usize) {
+        let width = self.viewport.width;
+        let rows = (self.viewport.height - ty * TILE_SIZE).min(TILE_SIZE);
+        let (first, pixels) = ((ty * TILE_SIZE * width) as usize, (rows * width) as usize);
+        let mut bytes = self.last.finished_strips.map(|strips| {
+            let mut bytes = (strips.buffer)();
+            bytes.resize(pixels * 3, 0);
+            bytes
+        });
+        let mut counts = (0, 0);
+        let (color, depth) = (strip.color, strip.depth);
+        for (tx, known_background) in (0..self.tiles_x).zip(strip.known_background) {
+            let rect = TileBins::tile_rect(self.viewport, tx, ty);
+            let mut out = StripOutput {
+                color: &mut *color,
+                depth: &mut *depth,
+                srgb8: bytes.as_deref_mut().filter(|_| self.bytes_only),
+                width,
+                first_row: rect.y0,
+                background: self.background,
+                mask: self.last.mask.map(|m| &m[first..first + pixels]),
+                blend: self.last.blend,
+                writes_depth: self.last.writes_depth,
+            };
+            if out.any_wanted(&rect) {
+                for pass in self.passes {
+                    let out = out.for_pass(pass.target.blend, pass.target.writes_depth);
+                    let (shaded, flattened) =
+                        pass.render_tile(tx, &rect, known_background, tile, scratch, out);
+                    counts = (counts.0 + shaded, counts.1 + flattened);
+                }
+            }
+            if let Some(bytes) = bytes.as_deref_mut().filter(|_| !self.bytes_only) {
+                encode_tile(color, width, &rect, bytes);
+            }
+        }
+        if let (Some(strips), Some(bytes)) = (self.last.finished_strips, bytes) {
+            (strips.finished)(ty as usize, bytes);
+        }
+        counts
+    }
+}
+
+/// The pixels of `rect` in a strip of `width`-pixel rows starting at the rect's tile row, as
+/// 8-bit sRGB into the strip's `bytes`.
+fn encode_tile(color: &[Vec3], width: u32, rect: &PixelRect, bytes: &mut [u8]) {
+    let first_row = rect.y0 / TILE_SIZE * TILE_SIZE;
+    for y in rect.y0..=rect.y1 {
+        let start = ((y - first_row) * width + rect.x0) as usize;
+        let pixels = start..start + (rect.x1 - rect.x0 + 1) as usize;
+        let linear = bytemuck::cast_slice(&color[pixels.clone()]);
+        encode_srgb8(linear, &mut bytes[pixels.start * 3..pixels.end * 3]);
+    }
+}
+
+/// One pass of `render_passes_into`: its target's triangles, set up and binned.
+pub(super) struct Pass<'a, S> {
+    pub target: &'a RenderTarget<'a>,
+    pub triangles: Vec<ScreenTriangle>,
+    pub bins: TileBins,
+    frame: TileFrame<'a, S>,
+    /// Whether a tile's known background (colour and depth) can be relied on and recorded: only
+    /// when this pass writes every pixel, colour and depth, and replaces what was there.
+    whole_and_replacing: bool,
+}
+
+impl<'a, S: FragmentShader> Pass<'a, S> {
+    pub fn new(
+        objects: &'a [FrameObject<'a>],
+        target: &'a RenderTarget<'a>,
+        shader: &'a S,
+        derivatives: &'a [bool],
+    ) -> Pass<'a, S> {
+        let triangles = screen_triangles(objects, target);
+        let bins = TileBins::new(target.viewport, &triangles);
+        Pass {
+            target,
+            triangles,
+            bins,
+            frame: TileFrame {
+                objects,
+                shader,
+                perspective: target.interpolation == Interpolation::PerspectiveCorrect,
+                footprint: target.footprint,
+                derivatives,
+            },
+            whole_and_replacing: target.mask.is_none()
+                && target.blend == Blend::Replace
+                && target.writes_depth,
+        }
+    }
+
+    /// Renders tile `tx` of the strip `out` writes to; the fragments shaded and flattened.
+    fn render_tile(
+        &self,
+        tx: u32,
+        rect: &PixelRect,
+        known_background: &mut bool,
+        tile: &mut TileBuffers,
+        scratch: &mut S::Scratch,
+        out: StripOutput,
+    ) -> (usize, usize) {
+        let ty = rect.y0 / TILE_SIZE;
+        let bin = &self.bins.bins[(ty * self.bins.tiles_x + tx) as usize];
+        if bin.is_empty() {
+            if !(self.whole_and_replacing && *known_background) {
+                out.fill_background(rect);
+            }
+            *known_background = self.whole_and_replacing;
+            return (0, 0);
+        }
+        tile.resolve_visibility(&self.triangles, bin, rect);
+        let (shaded, flattened) = tile.shade(&self.triangles, &self.frame, scratch, rect, out);
+        *known_background = shaded == 0 && self.whole_and_replacing;
+        (shaded, flattened)
+    }
+}
