@@ -1,5 +1,5 @@
-//! A still streamed band by band into a sink of 8-bit sRGB rows: the one conversion from linear
-//! light happens here, after the samples are resolved.
+//! A still streamed band by band into a sink of 8-bit sRGB rows, which the render's last pass
+//! hands on strip by strip (`RenderTarget::finished_strips`) once the samples are resolved.
 
 use super::bands::{BandBuffers, BandJob, band_rows};
 use crate::raster::{FragmentShader, FrameStats, Srgb8Strips, TILE_SIZE};
@@ -64,9 +64,9 @@ pub fn stream_still<S: FragmentShader>(
 }
 
 /// Renders one band while a thread of its own writes it to `sink`: the last pass converts each
-/// strip of `TILE_SIZE` rows to 8-bit sRGB as it finishes it (still in cache), and the writer
-/// takes the strips in order, so a PNG's deflate (serial) runs beside the render instead of
-/// after it. The band's render and the writing's result.
+/// tile to 8-bit sRGB as it finishes it (still in cache) and hands on each strip of `TILE_SIZE`
+/// rows, and the writer takes the strips in order, so a PNG's deflate (serial) runs beside the
+/// render instead of after it. The band's render and the writing's result.
 fn render_and_write<S: FragmentShader>(
     job: &BandJob<S>,
     rows: Range<u32>,
