@@ -9,5 +9,6 @@ let magenta = rgb(1, 0, 1)
 let low_x = x % period < period / 2
 let low_y = y % period < period / 2
 let low_z = z % period < period / 2
-let same_xy = (low_x and low_y) or (not low_x and not low_y)
-color = if (same_xy and low_z) or (not same_xy and not low_z) then cyan else magenta
+# The seed's "both low or both high", as equality of conditions.
+let same_xy = low_x == low_y
+color = if same_xy == low_z then cyan else magenta

@@ -274,12 +274,27 @@ impl Checker<'_> {
         use BinaryOp::*;
         let (operands, result) = match op {
             Add | Sub | Mul | Div | Pow | Mod => (Type::Number, Type::Number),
-            Lt | Le | Gt | Ge | Eq | Ne => (Type::Number, Type::Bool),
+            Lt | Le | Gt | Ge => (Type::Number, Type::Bool),
+            Eq | Ne => return self.equality(a, b),
             And | Or => (Type::Bool, Type::Bool),
         };
         self.expect_type(a, operands)?;
         self.expect_type(b, operands)?;
         Ok(result)
+    }
+
+    /// `==` and `!=` compare two numbers or two conditions (`!=` of conditions is their
+    /// exclusive or), whichever the left side is.
+    fn equality(&mut self, a: ExprId, b: ExprId) -> Result<Type, PatternError> {
+        let left = self.expr(a)?;
+        if left == Type::Color {
+            return Err(self.error(
+                self.ast.expr(a).span,
+                "expected a number or a condition, found a colour",
+            ));
+        }
+        self.expect_type(b, left)?;
+        Ok(Type::Bool)
     }
 
     fn conditional(&mut self, c: ExprId, a: ExprId, b: ExprId) -> Result<Type, PatternError> {
@@ -423,6 +438,27 @@ mod tests {
     fn zero_or_two_outputs_are_errors() {
         assert!(check_src("let a = 1").is_err());
         assert!(check_src("height = u\nheight = v").is_err());
+    }
+
+    #[test]
+    fn equality_compares_two_numbers_or_two_conditions() {
+        assert!(check_src("height = if (u < 1) == (v < 1) then 1 else 0").is_ok());
+        assert!(check_src("height = if (u < 1) != (v < 1) then 1 else 0").is_ok());
+        assert!(check_src("height = if u == v then 1 else 0").is_ok());
+        let mixed = check_src("height = if (u < 1) == v then 1 else 0").unwrap_err();
+        assert!(
+            mixed
+                .message
+                .contains("expected a condition (true/false), found a number"),
+            "{}",
+            mixed.message
+        );
+        let colour = check_src("height = if rgb(1, 0, 0) == u then 1 else 0").unwrap_err();
+        assert!(
+            colour.message.contains("found a colour"),
+            "{}",
+            colour.message
+        );
     }
 
     #[test]

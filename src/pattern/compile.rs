@@ -56,6 +56,17 @@ enum Operand {
     Slot(usize),
 }
 
+impl Operand {
+    /// The same slot, or constants with the same bits (so 0 and −0 differ, and NaN is itself).
+    fn same(self, other: Operand) -> bool {
+        match (self, other) {
+            (Operand::Const(a), Operand::Const(b)) => a.to_bits() == b.to_bits(),
+            (Operand::Slot(a), Operand::Slot(b)) => a == b,
+            _ => false,
+        }
+    }
+}
+
 #[derive(Clone, Copy, Debug)]
 enum Value {
     Num(Operand),
@@ -161,6 +172,9 @@ impl Lowering<'_> {
             && let Operand::Const(condition) = args[0]
         {
             return if condition != 0.0 { args[1] } else { args[2] };
+        }
+        if op == Op::Select && args[1].same(args[2]) {
+            return args[1];
         }
         if op == Op::Pow
             && let Operand::Const(exponent) = args[1]
@@ -441,6 +455,17 @@ mod tests {
         assert_eq!(p.uniform, 2); // 2π/w and cos(t)
         let ops: Vec<Op> = p.instrs.iter().map(|i| i.op).collect();
         assert_eq!(ops[..2], [Op::Div, Op::Cos]);
+    }
+
+    #[test]
+    fn a_choice_between_equal_values_is_that_value() {
+        // Red is 1 and blue 0 either way: only green is chosen.
+        let p = program("color = if u < 1 then rgb(1, 0, 0) else rgb(1, 1, 0)");
+        let ops: Vec<Op> = p.instrs.iter().map(|i| i.op).collect();
+        assert_eq!(ops, [Op::Lt, Op::Select]);
+        // 0 and −0 are different values.
+        let signed = program("height = if u < 1 then 0 else -0");
+        assert_eq!(signed.instrs.last().map(|i| i.op), Some(Op::Select));
     }
 
     #[test]

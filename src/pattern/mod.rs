@@ -349,6 +349,22 @@ mod tests {
     }
 
     #[test]
+    fn conditions_compare_as_truth_values() {
+        let (u, v) = ([0.0, 0.0, 2.0, 2.0], [0.0, 2.0, 0.0, 2.0]);
+        let heights = |source: &str| {
+            let pattern = Pattern::compile(source, "t").unwrap();
+            let mut out = [BumpSample::default(); 4];
+            let inputs = Inputs::uv(&u, &v, 0.0);
+            pattern.eval_bump(&inputs, &[], &mut Scratch::new(), &mut out);
+            out.map(|s| s.height)
+        };
+        let same = heights("height = if (u < 1) == (v < 1) then 1 else 0");
+        assert_eq!(same, [1.0, 0.0, 0.0, 1.0]);
+        let differ = heights("height = if (u < 1) != (v < 1) then 1 else 0");
+        assert_eq!(differ, [0.0, 1.0, 1.0, 0.0]);
+    }
+
+    #[test]
     fn pattern_is_shareable_between_threads() {
         fn shareable<T: Send + Sync + Clone>() {}
         shareable::<Pattern>();
