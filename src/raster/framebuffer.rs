@@ -101,7 +101,7 @@ impl Framebuffer {
         resize_unspecified(&mut self.depth, n);
     }
 
-    /// For a render in tiles of a `grid` (tiles across, down) over a `background`: colour,
+    /// For a render in tiles of a `grid` (tiles across, strips down) over a `background`: colour,
     /// depth and, per tile, whether it holds only that background already. The caller keeps
     /// the flags true exactly for the tiles it leaves (or makes) all background.
     pub(super) fn tiles_mut(

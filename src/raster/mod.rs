@@ -30,4 +30,5 @@ pub use pipeline::{
 };
 pub use scan::{PixelRect, scan_triangle};
 pub use setup::{SUBPIXEL_BITS, ScreenTriangle, TrianglePlanes, Viewport};
+pub use strips::STRIP_ROWS;
 pub use window::ImageWindow;

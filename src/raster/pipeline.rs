@@ -1,10 +1,9 @@
-use super::bin::TILE_SIZE;
 use super::camera::Camera;
 use super::clip::{ClipVertex, clip_triangle, needs_no_clipping};
 use super::fragment::{FragmentShader, FrameObject};
 use super::framebuffer::{Blend, Framebuffer};
 use super::setup::{ScreenTriangle, TrianglePlanes, Viewport};
-use super::strips::{Pass, StripBuffers, StripJob};
+use super::strips::{Pass, STRIP_ROWS, StripBuffers, StripJob};
 use super::tile::TileBuffers;
 use super::window::ImageWindow;
 use crate::scene::{Material, Scene};
@@ -76,7 +75,7 @@ pub struct RenderTarget<'a> {
     /// depth nobody reads skips the stores, and a fresh framebuffer's depth is never touched
     /// (so never mapped).
     pub writes_depth: bool,
-    /// Where each strip of `TILE_SIZE` rows goes as 8-bit sRGB once this render has finished
+    /// Where each strip of `STRIP_ROWS` rows goes as 8-bit sRGB once this render has finished
     /// it: a still encodes its rows while the rest of the frame renders. A lone pass that
     /// replaces every pixel and writes no depth then leaves the framebuffer as it was: the
     /// strips are its only output.
@@ -231,7 +230,8 @@ pub fn render_passes_into(
         .iter()
         .map(|target| Pass::new(&objects, target, shader, &derivatives))
         .collect();
-    let (tiles_x, tiles_y) = (passes[0].bins.tiles_x, passes[0].bins.tiles_y);
+    let tiles_x = passes[0].bins.tiles_x;
+    let strips_y = viewport.height.div_ceil(STRIP_ROWS);
     let job = StripJob {
         passes: &passes,
         last,
@@ -249,13 +249,13 @@ pub fn render_passes_into(
     };
     let mut no_framebuffer_known = Vec::new();
     let (strips, known_background) = if job.bytes_only {
-        no_framebuffer_known.resize((tiles_x * tiles_y) as usize, false);
-        let nothing = (0..tiles_y).map(|_| (&mut [][..], &mut [][..])).collect();
+        no_framebuffer_known.resize((tiles_x * strips_y) as usize, false);
+        let nothing = (0..strips_y).map(|_| (&mut [][..], &mut [][..])).collect();
         (nothing, &mut no_framebuffer_known[..])
     } else {
         framebuffer.resize(viewport.width, viewport.height);
-        let (color, depth, known) = framebuffer.tiles_mut((tiles_x, tiles_y), job.background);
-        let pixels = (TILE_SIZE * viewport.width) as usize;
+        let (color, depth, known) = framebuffer.tiles_mut((tiles_x, strips_y), job.background);
+        let pixels = (STRIP_ROWS * viewport.width) as usize;
         let strips: Vec<_> = color
             .chunks_mut(pixels)
             .zip(depth.chunks_mut(pixels))
@@ -269,13 +269,13 @@ pub fn render_passes_into(
         .map_init(
             // Once per rayon job, not per tile row: the buffers keep their grown capacity.
             || (TileBuffers::default(), shader.scratch()),
-            |(tile, scratch), (ty, ((color, depth), known_background))| {
+            |(tile, scratch), (index, ((color, depth), known_background))| {
                 let strip = StripBuffers {
                     color,
                     depth,
                     known_background,
                 };
-                job.render(ty as u32, strip, tile, scratch)
+                job.render(index as u32, strip, tile, scratch)
             },
         )
         .reduce(|| (0, 0), |a, b| (a.0 + b.0, a.1 + b.1));

@@ -10,6 +10,24 @@ use super::setup::{ScreenTriangle, Viewport};
 use super::tile::{StripOutput, TileBuffers, TileFrame};
 use glam::Vec3;
 
+/// Rows in a strip: the unit of work a thread takes and of finished rows handed on. Half a
+/// tile's height (a strip's tiles are the top or bottom halves of a row of tiles), so a frame's
+/// last strips are short and its threads finish close together: with whole tile rows one
+/// thread often rendered the last one alone.
+pub const STRIP_ROWS: u32 = TILE_SIZE / 2;
+const _: () = assert!(TILE_SIZE.is_multiple_of(STRIP_ROWS));
+
+/// The pixels of strip `strip`'s tile `tx`: the part of tile (tx, its tile row) the strip
+/// holds, cut to the viewport.
+pub fn strip_tile_rect(viewport: Viewport, tx: u32, strip: u32) -> PixelRect {
+    let y0 = strip * STRIP_ROWS;
+    PixelRect {
+        y0,
+        y1: (y0 + STRIP_ROWS).min(viewport.height) - 1,
+        ..TileBins::tile_rect(viewport, tx, y0 / TILE_SIZE)
+    }
+}
+
 /// What every strip of `render_passes_into` shares.
 pub(super) struct StripJob<'a, S> {
     pub passes: &'a [Pass<'a, S>],
@@ -29,18 +47,19 @@ pub(super) struct StripBuffers<'a> {
 }
 
 impl<S: FragmentShader> StripJob<'_, S> {
-    /// Renders every pass of strip `ty`, tile by tile, and hands its bytes on if asked; the
+    /// Renders every pass of strip `index`, tile by tile, and hands its bytes on if asked; the
     /// fragments shaded and flattened.
     pub fn render(
         &self,
-        ty: u32,
+        index: u32,
         strip: StripBuffers,
         tile: &mut TileBuffers,
         scratch: &mut S::Scratch,
     ) -> (usize, usize) {
         let width = self.viewport.width;
-        let rows = (self.viewport.height - ty * TILE_SIZE).min(TILE_SIZE);
-        let (first, pixels) = ((ty * TILE_SIZE * width) as usize, (rows * width) as usize);
+        let rows = (self.viewport.height - index * STRIP_ROWS).min(STRIP_ROWS);
+        let first = (index * STRIP_ROWS * width) as usize;
+        let pixels = (rows * width) as usize;
         let mut bytes = self.last.finished_strips.map(|strips| {
             let mut bytes = (strips.buffer)();
             bytes.resize(pixels * 3, 0);
@@ -49,7 +68,7 @@ impl<S: FragmentShader> StripJob<'_, S> {
         let mut counts = (0, 0);
         let (color, depth) = (strip.color, strip.depth);
         for (tx, known_background) in (0..self.tiles_x).zip(strip.known_background) {
-            let rect = TileBins::tile_rect(self.viewport, tx, ty);
+            let rect = strip_tile_rect(self.viewport, tx, index);
             let mut out = StripOutput {
                 color: &mut *color,
                 depth: &mut *depth,
@@ -74,16 +93,16 @@ impl<S: FragmentShader> StripJob<'_, S> {
             }
         }
         if let (Some(strips), Some(bytes)) = (self.last.finished_strips, bytes) {
-            (strips.finished)(ty as usize, bytes);
+            (strips.finished)(index as usize, bytes);
         }
         counts
     }
 }
 
-/// The pixels of `rect` in a strip of `width`-pixel rows starting at the rect's tile row, as
+/// The pixels of `rect` in a strip of `width`-pixel rows starting at the rect's first row, as
 /// 8-bit sRGB into the strip's `bytes`.
 fn encode_tile(color: &[Vec3], width: u32, rect: &PixelRect, bytes: &mut [u8]) {
-    let first_row = rect.y0 / TILE_SIZE * TILE_SIZE;
+    let first_row = rect.y0;
     for y in rect.y0..=rect.y1 {
         let start = ((y - first_row) * width + rect.x0) as usize;
         let pixels = start..start + (rect.x1 - rect.x0 + 1) as usize;
@@ -129,7 +148,7 @@ impl<'a, S: FragmentShader> Pass<'a, S> {
         }
     }
 
-    /// Renders tile `tx` of the strip `out` writes to; the fragments shaded and flattened.
+    /// Renders `rect`, strip `out`'s part of tile `tx`; the fragments shaded and flattened.
     fn render_tile(
         &self,
         tx: u32,

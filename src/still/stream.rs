@@ -2,7 +2,7 @@
 //! hands on strip by strip (`RenderTarget::finished_strips`) once the samples are resolved.
 
 use super::bands::{BandBuffers, BandJob, band_rows};
-use crate::raster::{FragmentShader, FrameStats, Srgb8Strips, TILE_SIZE};
+use crate::raster::{FragmentShader, FrameStats, STRIP_ROWS, Srgb8Strips};
 use std::collections::BTreeMap;
 use std::ops::Range;
 use std::sync::mpsc::{Receiver, channel};
@@ -64,7 +64,7 @@ pub fn stream_still<S: FragmentShader>(
 }
 
 /// Renders one band while a thread of its own writes it to `sink`: the last pass converts each
-/// tile to 8-bit sRGB as it finishes it (still in cache) and hands on each strip of `TILE_SIZE`
+/// tile to 8-bit sRGB as it finishes it (still in cache) and hands on each strip of `STRIP_ROWS`
 /// rows, and the writer takes the strips in order, so a PNG's deflate (serial) runs beside the
 /// render instead of after it. The band's render and the writing's result.
 fn render_and_write<S: FragmentShader>(
@@ -76,7 +76,7 @@ fn render_and_write<S: FragmentShader>(
     keep_going: &dyn Fn() -> bool,
     on_pass: &mut dyn FnMut(),
 ) -> (Option<FrameStats>, Result<(), String>) {
-    let strip_count = (rows.end - rows.start).div_ceil(TILE_SIZE) as usize;
+    let strip_count = (rows.end - rows.start).div_ceil(STRIP_ROWS) as usize;
     let (strips, finished) = channel();
     std::thread::scope(|scope| {
         let writer = scope.spawn(move || write_in_order(finished, strip_count, sink, spare));
