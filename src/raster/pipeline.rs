@@ -287,6 +287,9 @@ pub fn render_passes_into(
     }
 }
 
+/// Pieces of a mesh's triangle list each thread sets up, when there are several threads.
+const SETUP_PIECES_PER_THREAD: usize = 4;
+
 /// Transforms one object's vertices and turns its triangles into screen triangles (in parallel,
 /// order preserved).
 fn object_triangles(
@@ -311,12 +314,17 @@ fn object_triangles(
     };
     // Each piece pushes straight into its own list and the lists are joined in order: a
     // flattening iterator moved every clipped polygon (over 200 bytes) several times.
-    // One piece a thread: on one thread the list is then moved, not copied.
-    let per_thread = mesh.indices.len().div_ceil(rayon::current_num_threads());
+    let pieces = match rayon::current_num_threads() {
+        // On one thread one piece, whose list is then moved, not copied.
+        1 => 1,
+        // Several a thread: the triangles facing the camera are often one half of a mesh's
+        // list (a sphere's near side), and with a piece a thread one thread set them all up.
+        threads => threads * SETUP_PIECES_PER_THREAD,
+    };
     let pieces = mesh
         .indices
         .par_iter()
-        .with_min_len(per_thread.max(1))
+        .with_min_len(mesh.indices.len().div_ceil(pieces).max(1))
         .fold(Vec::new, |mut out, triangle| {
             setup.push(triangle, &mut out);
             out
