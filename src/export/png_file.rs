@@ -1,7 +1,7 @@
 //! PNG output with the `png` crate: 8-bit sRGB, text chunks before the image data, rows
 //! streamed in as they are rendered.
 
-use super::atomic::AtomicFile;
+use super::atomic::{AtomicFile, WritebackFile};
 use crate::Error;
 use crate::raster::Framebuffer;
 use crate::still::RowSink;
@@ -18,7 +18,7 @@ const CHUNK_BYTES: usize = 1 << 20;
 /// A PNG being written: rows go in top first; `finish` completes it and makes it appear.
 pub struct PngStill {
     file: AtomicFile,
-    writer: png::StreamWriter<'static, CheckedWriter<File>>,
+    writer: png::StreamWriter<'static, CheckedWriter<WritebackFile>>,
     failure: WriteFailure,
 }
 
@@ -75,7 +75,7 @@ impl PngStill {
         let fail = |e: png::EncodingError| Error::write(path, e);
         let failure = WriteFailure::default();
         let handle = CheckedWriter {
-            inner: handle,
+            inner: WritebackFile::new(handle),
             failure: failure.clone(),
         };
         let mut encoder = png::Encoder::new(handle, width, height);
