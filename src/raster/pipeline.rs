@@ -267,7 +267,7 @@ pub fn render_passes_into(
         .zip(known_background.par_chunks_mut(tiles_x.max(1) as usize))
         .enumerate()
         .map_init(
-            // Once per rayon job, not per tile row: the buffers keep their grown capacity.
+            // Once per rayon job, not per strip: the buffers keep their grown capacity.
             || (TileBuffers::default(), shader.scratch()),
             |(tile, scratch), (index, ((color, depth), known_background))| {
                 let strip = StripBuffers {

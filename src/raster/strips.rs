@@ -19,7 +19,7 @@ const _: () = assert!(TILE_SIZE.is_multiple_of(STRIP_ROWS));
 
 /// The pixels of strip `strip`'s tile `tx`: the part of tile (tx, its tile row) the strip
 /// holds, cut to the viewport.
-pub fn strip_tile_rect(viewport: Viewport, tx: u32, strip: u32) -> PixelRect {
+fn strip_tile_rect(viewport: Viewport, tx: u32, strip: u32) -> PixelRect {
     let y0 = strip * STRIP_ROWS;
     PixelRect {
         y0,
