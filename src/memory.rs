@@ -18,10 +18,8 @@ pub fn zeroed_huge<T: bytemuck::Zeroable + Clone>(n: usize) -> Vec<T> {
 pub fn advise_huge_pages<T>(buffer: &mut [T]) {
     #[cfg(target_os = "linux")]
     {
-        // SAFETY: sysconf only reads a system constant.
-        let page = match unsafe { libc::sysconf(libc::_SC_PAGESIZE) } {
-            size if size > 0 => size as usize,
-            _ => return,
+        let Some(page) = page_size() else {
+            return;
         };
         let start = buffer.as_mut_ptr() as usize;
         let end = start + std::mem::size_of_val(buffer);
@@ -41,6 +39,20 @@ pub fn advise_huge_pages<T>(buffer: &mut [T]) {
     }
     #[cfg(not(target_os = "linux"))]
     let _ = buffer;
+}
+
+/// The system's page size, where it says (Linux).
+pub fn page_size() -> Option<usize> {
+    #[cfg(target_os = "linux")]
+    {
+        // SAFETY: sysconf only reads a system constant.
+        match unsafe { libc::sysconf(libc::_SC_PAGESIZE) } {
+            size if size > 0 => Some(size as usize),
+            _ => None,
+        }
+    }
+    #[cfg(not(target_os = "linux"))]
+    None
 }
 
 #[cfg(test)]

@@ -16,10 +16,11 @@ pub struct WritebackFile {
     /// Bytes already handed to writeback: whole pages, never the one still being filled (a
     /// write into a page under writeback would wait for it).
     started: u64,
+    /// `None` where the system does not say (and there is no early writeback).
+    page: Option<u64>,
 }
 
 const WRITEBACK_STEP: u64 = 1 << 20;
-const PAGE: u64 = 4096;
 
 impl WritebackFile {
     pub fn new(file: File) -> WritebackFile {
@@ -27,6 +28,7 @@ impl WritebackFile {
             file,
             written: 0,
             started: 0,
+            page: crate::memory::page_size().map(|page| page as u64),
         }
     }
 }
@@ -35,7 +37,10 @@ impl Write for WritebackFile {
     fn write(&mut self, data: &[u8]) -> std::io::Result<usize> {
         let n = self.file.write(data)?;
         self.written += n as u64;
-        let whole_pages = self.written / PAGE * PAGE;
+        let Some(page) = self.page else {
+            return Ok(n);
+        };
+        let whole_pages = self.written / page * page;
         if whole_pages - self.started >= WRITEBACK_STEP {
             start_writeback(&self.file, self.started, whole_pages - self.started);
             self.started = whole_pages;
@@ -148,11 +153,12 @@ mod tests {
             .map(|i| (i * 31 % 251) as u8)
             .collect();
         let mut file = WritebackFile::new(File::create(&path).unwrap());
+        let page = file.page.expect("this system's page size");
         // Uneven writes, so writeback starts at page boundaries between them.
         for piece in bytes.chunks(100_003) {
             file.write_all(piece).unwrap();
-            assert!(file.started <= file.written / PAGE * PAGE);
-            assert_eq!(file.started % PAGE, 0);
+            assert!(file.started <= file.written / page * page);
+            assert_eq!(file.started % page, 0);
         }
         assert!(
             file.started >= 2 * WRITEBACK_STEP,
