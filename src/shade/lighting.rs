@@ -1,3 +1,4 @@
+use super::lanes::{LANES, Lanes};
 use crate::scene::{Light, Material};
 use glam::{DVec3, Vec3};
 use std::ops::Range;
@@ -83,9 +84,6 @@ pub fn blinn_phong(
     }
     color * diffuse + specular * material.specular
 }
-
-/// Fragments lit together by `blinn_phong_many`.
-const LANES: usize = 64;
 
 /// `blinn_phong` for a batch: `out[k]` lights `colors[k]` at fragment k's camera-relative
 /// point and facing unit normal. The same arithmetic in the same order (so the same
@@ -181,53 +179,6 @@ fn power_lanes(x: &mut [f32; LANES], exponent: f32) {
         n >>= 1;
     }
     *x = result;
-}
-
-/// Vectors for a lane of fragments, one array per coordinate.
-struct Lanes {
-    x: [f32; LANES],
-    y: [f32; LANES],
-    z: [f32; LANES],
-}
-
-impl Lanes {
-    #[inline(always)]
-    fn splat(v: Vec3) -> Lanes {
-        Lanes {
-            x: [v.x; LANES],
-            y: [v.y; LANES],
-            z: [v.z; LANES],
-        }
-    }
-
-    /// Sets the first lanes of `first` and `second` from up to `LANES` pairs of vectors (in
-    /// place: returning the pair of 768-byte lane sets cost a memcpy of each per chunk).
-    #[inline(always)]
-    fn set_pairs(first: &mut Lanes, second: &mut Lanes, pairs: impl Iterator<Item = (Vec3, Vec3)>) {
-        for (k, (a, b)) in pairs.take(LANES).enumerate() {
-            first.set(k, a);
-            second.set(k, b);
-        }
-    }
-
-    #[inline(always)]
-    fn from_fn(f: impl Fn(usize) -> Vec3) -> Lanes {
-        let mut lanes = Lanes::splat(Vec3::ZERO);
-        for k in 0..LANES {
-            lanes.set(k, f(k));
-        }
-        lanes
-    }
-
-    #[inline(always)]
-    fn at(&self, k: usize) -> Vec3 {
-        Vec3::new(self.x[k], self.y[k], self.z[k])
-    }
-
-    #[inline(always)]
-    fn set(&mut self, k: usize, v: Vec3) {
-        (self.x[k], self.y[k], self.z[k]) = (v.x, v.y, v.z);
-    }
 }
 
 /// Whether `power` takes `exponent` by repeated squaring.

@@ -4,6 +4,7 @@
 mod bake;
 mod bump;
 mod gradient;
+mod lanes;
 mod lighting;
 mod pattern_batch;
 mod scene_shader;

@@ -2,7 +2,7 @@
 //! frame, the texture or material colour, the bumped normal, then lighting (or a view mode).
 //! Work the scene does not need is skipped: no texture, no sampling; no bump, no perturbation.
 
-use super::bump::{NormalForm, bumped_normal};
+use super::bump::{NormalForm, blinn_normals, bumped_normal};
 use super::gradient::{GradientMethod, central_difference, shifted_fragments};
 use super::lighting::{FrameLights, blinn_phong_many, facing_sign};
 use super::pattern_batch::{PatternBatch, Sites};
@@ -243,11 +243,22 @@ impl LitShader {
         let (points, normals) = (&mut scratch.points, &mut scratch.normals);
         points.resize(group.len(), Vec3::ZERO);
         normals.resize(group.len(), Vec3::ZERO);
+        let blinn = bumped && self.normal_form == NormalForm::Blinn;
+        if blinn {
+            blinn_normals(
+                &scratch.frames,
+                &scratch.heights,
+                &scratch.gradients,
+                normals,
+            );
+        }
         let frames = group.iter().zip(&scratch.frames);
         let outputs = points.iter_mut().zip(normals);
         for (k, ((&i, frame), (point, normal))) in frames.zip(outputs).enumerate() {
             let p = object.origin + frame.p;
-            let n = if bumped {
+            let n = if blinn {
+                *normal
+            } else if bumped {
                 let (b, gradient) = (scratch.heights[k], scratch.gradients[k]);
                 let uv = fragments[i as usize].uv;
                 bumped_normal(

@@ -27,7 +27,7 @@ pub use wave::Wave;
 use glam::{DVec3, Vec2, Vec3};
 
 /// The local differential geometry of a surface at one (u,v), relative to the surface's anchor.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Frame {
     /// P(u,v) − origin.
     pub p: Vec3,
