@@ -14,8 +14,9 @@ use super::ops::{Op, apply};
 /// Fragments evaluated together; slots are `CHUNK` lanes wide.
 pub const CHUNK: usize = 64;
 
-/// The per-fragment inputs of a batch, structure-of-arrays. `u` and `v` are always read; the
-/// point `x, y, z` only if the pattern uses it (`Pattern::uses_point`), and its partials
+/// The per-fragment inputs of a batch, structure-of-arrays. `u` and `v` are read only if the
+/// pattern uses them (`Pattern::uses_uv`), the point `x, y, z` only if it uses that
+/// (`Pattern::uses_point`), and its partials
 /// `x_u … z_v` only when a height pattern's gradient is evaluated. Unused slices may be empty.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Inputs<'a> {
@@ -141,6 +142,7 @@ pub(crate) fn load_uniforms<T: Lane>(
 }
 
 /// Loads the per-fragment inputs of fragments `start..start + n` into their slots.
+#[inline(always)]
 pub(crate) fn load_inputs<T: Lane>(
     program: &Program,
     inputs: &Inputs,
@@ -193,8 +195,36 @@ pub(crate) fn run_uniform<T: Lane>(program: &Program, slots: &mut [f64]) {
 }
 
 /// Runs the per-fragment instructions over the first `n` lanes.
-pub(crate) fn run<T: Lane>(program: &Program, n: usize, slots: &mut [f64]) {
+#[cfg(test)]
+fn run<T: Lane>(program: &Program, n: usize, slots: &mut [f64]) {
     run_instrs::<T>(&program.instrs[program.uniform..], n, slots);
+}
+
+/// Evaluates fragments `0..len` a chunk at a time: loads a chunk's inputs, runs the
+/// per-fragment instructions, and has `store(start, slots)` take its outputs (returning how
+/// many were not finite). The whole loop is compiled for the widest SIMD the CPU has, so
+/// loading and storing vectorise too (pass an `#[inline(always)]` `store`).
+pub(crate) fn run_chunks<T: Lane>(
+    program: &Program,
+    inputs: &Inputs,
+    len: usize,
+    slots: &mut [f64],
+    mut store: impl FnMut(usize, &[f64]) -> usize,
+) -> usize {
+    let per_fragment = &program.instrs[program.uniform..];
+    crate::simd::widest(
+        #[inline(always)]
+        || {
+            let mut non_finite = 0;
+            for start in (0..len).step_by(CHUNK) {
+                let n = CHUNK.min(len - start);
+                load_inputs::<T>(program, inputs, start, n, slots);
+                run_instrs_here::<T>(per_fragment, n, slots);
+                non_finite += store(start, slots);
+            }
+            non_finite
+        },
+    )
 }
 
 fn run_instrs<T: Lane>(instrs: &[Instr], n: usize, slots: &mut [f64]) {

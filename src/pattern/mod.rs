@@ -119,6 +119,11 @@ impl Pattern {
         self.inner.program.uses(Input::T)
     }
 
+    /// Whether `Inputs::u` and `Inputs::v` must be supplied.
+    pub fn uses_uv(&self) -> bool {
+        self.inner.program.uses(Input::U) || self.inner.program.uses(Input::V)
+    }
+
     /// Whether `Inputs::x/y/z` (and, for height gradients, their partials) must be supplied.
     pub fn uses_point(&self) -> bool {
         [Input::X, Input::Y, Input::Z]
@@ -158,16 +163,24 @@ impl Pattern {
         out: &mut [BumpSample],
     ) -> usize {
         match self.output() {
-            OutputKind::Height => {
-                self.evaluate::<Dual>(inputs, params, scratch, out.len(), |start, slots| {
+            OutputKind::Height => self.evaluate::<Dual>(
+                inputs,
+                params,
+                scratch,
+                out.len(),
+                #[inline(always)]
+                |start, slots| {
                     output::height_gradient(&self.inner.program, slots, &mut out[start..])
-                })
-            }
-            OutputKind::Slope => {
-                self.evaluate::<f64>(inputs, params, scratch, out.len(), |start, slots| {
-                    output::slope(&self.inner.program, slots, &mut out[start..])
-                })
-            }
+                },
+            ),
+            OutputKind::Slope => self.evaluate::<f64>(
+                inputs,
+                params,
+                scratch,
+                out.len(),
+                #[inline(always)]
+                |start, slots| output::slope(&self.inner.program, slots, &mut out[start..]),
+            ),
             OutputKind::Color => panic!("eval_bump called on a colour pattern"),
         }
     }
@@ -188,9 +201,14 @@ impl Pattern {
             OutputKind::Height,
             "eval_height needs a height pattern"
         );
-        self.evaluate::<f64>(inputs, params, scratch, out.len(), |start, slots| {
-            output::height(&self.inner.program, slots, &mut out[start..])
-        })
+        self.evaluate::<f64>(
+            inputs,
+            params,
+            scratch,
+            out.len(),
+            #[inline(always)]
+            |start, slots| output::height(&self.inner.program, slots, &mut out[start..]),
+        )
     }
 
     /// Linear RGB in 0..1 (clamped); non-finite fragments are black.
@@ -209,9 +227,14 @@ impl Pattern {
             OutputKind::Color,
             "eval_color needs a colour pattern"
         );
-        self.evaluate::<f64>(inputs, params, scratch, out.len(), |start, slots| {
-            output::color(&self.inner.program, slots, &mut out[start..])
-        })
+        self.evaluate::<f64>(
+            inputs,
+            params,
+            scratch,
+            out.len(),
+            #[inline(always)]
+            |start, slots| output::color(&self.inner.program, slots, &mut out[start..]),
+        )
     }
 
     /// Runs the program chunk by chunk; `store(start, slots)` writes one chunk's outputs and
@@ -222,21 +245,14 @@ impl Pattern {
         params: &[f32],
         scratch: &mut Scratch,
         len: usize,
-        mut store: impl FnMut(usize, &[f64]) -> usize,
+        store: impl FnMut(usize, &[f64]) -> usize,
     ) -> usize {
         let program = &self.inner.program;
         self.check_lengths(inputs, len, T::DUAL);
         let slots = scratch.slots::<T>(program.sources.len());
         eval::load_uniforms::<T>(program, |p| self.param_value(p, params), inputs.t, slots);
         eval::run_uniform::<T>(program, slots);
-        let mut non_finite = 0;
-        for start in (0..len).step_by(CHUNK) {
-            let n = CHUNK.min(len - start);
-            eval::load_inputs::<T>(program, inputs, start, n, slots);
-            eval::run::<T>(program, n, slots);
-            non_finite += store(start, &slots[..]);
-        }
-        non_finite
+        eval::run_chunks::<T>(program, inputs, len, slots, store)
     }
 
     fn param_value(&self, index: usize, given: &[f32]) -> f64 {
@@ -362,6 +378,34 @@ mod tests {
         assert_eq!(same, [1.0, 0.0, 0.0, 1.0]);
         let differ = heights("height = if (u < 1) != (v < 1) then 1 else 0");
         assert_eq!(differ, [0.0, 1.0, 1.0, 0.0]);
+    }
+
+    /// A colour pattern of the point alone (so given no u or v), over more than a chunk.
+    #[test]
+    fn colours_clamp_and_non_finite_fragments_turn_black() {
+        let pattern = Pattern::compile("color = rgb(x, y, 1 / z)", "t").unwrap();
+        assert!(!pattern.uses_uv() && pattern.uses_point());
+        let n = eval::CHUNK + 3;
+        let x: Vec<f32> = (0..n).map(|i| i as f32 / n as f32 * 3.0 - 1.0).collect();
+        let y = vec![0.5; n];
+        let z: Vec<f32> = (0..n).map(|i| if i % 7 == 0 { 0.0 } else { 4.0 }).collect();
+        let inputs = Inputs {
+            x: &x,
+            y: &y,
+            z: &z,
+            ..Inputs::default()
+        };
+        let mut out = vec![[9.0; 3]; n];
+        let black = pattern.eval_color(&inputs, &[], &mut Scratch::new(), &mut out);
+        assert_eq!(black, n.div_ceil(7));
+        for (i, rgb) in out.iter().enumerate() {
+            let want = if i % 7 == 0 {
+                [0.0; 3]
+            } else {
+                [x[i].clamp(0.0, 1.0), 0.5, 0.25]
+            };
+            assert_eq!(*rgb, want, "fragment {i}");
+        }
     }
 
     #[test]

@@ -22,6 +22,7 @@ fn finite<const N: usize>(values: [f32; N]) -> bool {
     values.iter().all(|v| v.is_finite())
 }
 
+#[inline(always)]
 pub fn height_gradient(program: &Program, slots: &[f64], out: &mut [BumpSample]) -> usize {
     let n = out.len().min(CHUNK);
     let lanes = slot::<Dual>(slots, program.outputs[0]);
@@ -43,6 +44,7 @@ pub fn height_gradient(program: &Program, slots: &[f64], out: &mut [BumpSample])
     bad
 }
 
+#[inline(always)]
 pub fn slope(program: &Program, slots: &[f64], out: &mut [BumpSample]) -> usize {
     let n = out.len().min(CHUNK);
     let bu = lanes(slots, program.outputs[0], n);
@@ -64,6 +66,7 @@ pub fn slope(program: &Program, slots: &[f64], out: &mut [BumpSample]) -> usize 
     bad
 }
 
+#[inline(always)]
 pub fn height(program: &Program, slots: &[f64], out: &mut [f32]) -> usize {
     let n = out.len().min(CHUNK);
     let mut bad = 0;
@@ -75,18 +78,17 @@ pub fn height(program: &Program, slots: &[f64], out: &mut [f32]) -> usize {
     bad
 }
 
+#[inline(always)]
 pub fn color(program: &Program, slots: &[f64], out: &mut [[f32; 3]]) -> usize {
     let n = out.len().min(CHUNK);
     let [r, g, b] = [0, 1, 2].map(|i| lanes(slots, program.outputs[i], n));
     let mut bad = 0;
-    for (i, o) in out.iter_mut().take(n).enumerate() {
-        let rgb = [r[i] as f32, g[i] as f32, b[i] as f32];
-        bad += usize::from(!finite(rgb));
-        *o = if finite(rgb) {
-            rgb.map(|c| c.clamp(0.0, 1.0))
-        } else {
-            [0.0; 3]
-        };
+    // Branch-free (a select per channel), so the loop vectorises.
+    for (((o, &r), &g), &b) in out[..n].iter_mut().zip(r).zip(g).zip(b) {
+        let rgb = [r as f32, g as f32, b as f32];
+        let finite = rgb[0].is_finite() & rgb[1].is_finite() & rgb[2].is_finite();
+        bad += usize::from(!finite);
+        *o = rgb.map(|c| if finite { c.clamp(0.0, 1.0) } else { 0.0 });
     }
     bad
 }

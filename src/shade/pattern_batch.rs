@@ -23,56 +23,94 @@ enum PointPartials {
     Unneeded,
 }
 
-/// Reusable input and output buffers for one pattern evaluation at a time.
+/// Reusable input and output buffers for one pattern evaluation at a time. They grow to the
+/// largest group seen and never shrink: each evaluation writes the first `group.len()` entries
+/// of those it uses (shrinking and regrowing them, as groups of two patterns alternated, zeroed
+/// them again each time: 3% of a frame's instructions).
 #[derive(Default)]
 pub struct PatternBatch {
-    u: Vec<f32>,
-    v: Vec<f32>,
-    /// x, y, z and their partials along the pattern's coordinates: [x, y, z, x_u, y_u, z_u, x_v, y_v, z_v].
-    point: [Vec<f32>; 9],
+    inputs: InputLanes,
     samples: Vec<BumpSample>,
-    rgb: Vec<[f32; 3]>,
     /// Grows to fit whichever pattern runs; one serves them all.
     scratch: Scratch,
 }
 
-impl PatternBatch {
-    /// Loads the group's inputs: pattern coordinates q = J·(u,v) + offset, and, when the pattern
-    /// reads x, y or z, the object-space point, with ∂p/∂q = [Pu Pv]·J⁻¹ if `partials` asks.
-    fn load(&mut self, binding: &PatternBinding, at: Sites, partials: PointPartials) {
+/// A group's pattern inputs, structure-of-arrays.
+#[derive(Default)]
+struct InputLanes {
+    u: Vec<f32>,
+    v: Vec<f32>,
+    /// x, y, z and their partials along the pattern's coordinates: [x, y, z, x_u, y_u, z_u, x_v, y_v, z_v].
+    point: [Vec<f32>; 9],
+}
+
+impl InputLanes {
+    /// Loads the group's inputs that the pattern reads: pattern coordinates q = J·(u,v) +
+    /// offset, and the object-space point, with ∂p/∂q = [Pu Pv]·J⁻¹ if `partials` asks.
+    /// Returns them, each `group.len()` long (or empty where the pattern does not read it).
+    fn load<'a>(
+        &'a mut self,
+        binding: &PatternBinding,
+        at: Sites,
+        partials: PointPartials,
+    ) -> Inputs<'a> {
         let jacobian = binding.placement.jacobian();
         let n = at.group.len();
-        self.u.resize(n, 0.0);
-        self.v.resize(n, 0.0);
-        for ((&i, u), v) in at.group.iter().zip(&mut self.u).zip(&mut self.v) {
-            let q = binding
-                .placement
-                .apply(at.fragments[i as usize].uv, jacobian);
-            (*u, *v) = (q.x, q.y);
+        let pattern = &binding.pattern;
+        if pattern.uses_uv() {
+            let (u, v) = (at_least(&mut self.u, n), at_least(&mut self.v, n));
+            for ((&i, u), v) in at.group.iter().zip(u).zip(v) {
+                let q = binding
+                    .placement
+                    .apply(at.fragments[i as usize].uv, jacobian);
+                (*u, *v) = (q.x, q.y);
+            }
         }
-        let lanes = match (binding.pattern.uses_point(), partials) {
+        let lanes = match (pattern.uses_point(), partials) {
             (false, _) => 0,
             (true, PointPartials::Unneeded) => 3,
             (true, PointPartials::Needed) => 9,
         };
-        for (k, lane) in self.point.iter_mut().enumerate() {
-            lane.resize(if k < lanes { n } else { 0 }, 0.0);
+        let [x, y, z, x_u, y_u, z_u, x_v, y_v, z_v] = &mut self.point;
+        if lanes >= 3 {
+            write_vectors([x, y, z], n, at.frames.iter().map(|frame| frame.p));
         }
-        if lanes == 0 {
-            return;
-        }
-        let [x, y, z, rest @ ..] = &mut self.point;
-        write_vectors([x, y, z], at.frames.iter().map(|frame| frame.p));
         if lanes == 9 {
             let inverse = jacobian.inverse();
-            let [x_u, y_u, z_u, x_v, y_v, z_v] = rest;
             let along =
                 |column: glam::Vec2| move |frame: &Frame| frame.pu * column.x + frame.pv * column.y;
-            write_vectors([x_u, y_u, z_u], at.frames.iter().map(along(inverse.x_axis)));
-            write_vectors([x_v, y_v, z_v], at.frames.iter().map(along(inverse.y_axis)));
+            write_vectors(
+                [x_u, y_u, z_u],
+                n,
+                at.frames.iter().map(along(inverse.x_axis)),
+            );
+            write_vectors(
+                [x_v, y_v, z_v],
+                n,
+                at.frames.iter().map(along(inverse.y_axis)),
+            );
+        }
+        let read = |lane: &'a [f32], used: bool| if used { &lane[..n] } else { &[][..] };
+        let uv = pattern.uses_uv();
+        let [x, y, z, x_u, y_u, z_u, x_v, y_v, z_v] = &self.point;
+        Inputs {
+            u: read(&self.u, uv),
+            v: read(&self.v, uv),
+            x: read(x, lanes >= 3),
+            y: read(y, lanes >= 3),
+            z: read(z, lanes >= 3),
+            x_u: read(x_u, lanes == 9),
+            x_v: read(x_v, lanes == 9),
+            y_u: read(y_u, lanes == 9),
+            y_v: read(y_v, lanes == 9),
+            z_u: read(z_u, lanes == 9),
+            z_v: read(z_v, lanes == 9),
+            t: 0.0,
         }
     }
+}
 
+impl PatternBatch {
     /// Heights and (u,v) gradients of a bump pattern for the loaded group; returns how many
     /// fragments were made flat because the pattern gave no finite value.
     pub fn bump(
@@ -83,20 +121,20 @@ impl PatternBatch {
         heights: &mut [f32],
         gradients: &mut [Vec2],
     ) -> usize {
-        self.load(binding, at, PointPartials::Needed);
-        let n = self.u.len();
-        self.samples.clear();
-        self.samples.resize(n, BumpSample::default());
-        let inputs = inputs(&self.u, &self.v, &self.point, time);
-        let flattened = binding.pattern.eval_bump(
-            &inputs,
-            &binding.params,
-            &mut self.scratch,
-            &mut self.samples,
-        );
+        let n = at.group.len();
+        at_least(&mut self.samples, n);
+        let inputs = Inputs {
+            t: time,
+            ..self.inputs.load(binding, at, PointPartials::Needed)
+        };
+        let samples = &mut self.samples[..n];
+        let flattened =
+            binding
+                .pattern
+                .eval_bump(&inputs, &binding.params, &mut self.scratch, samples);
         // ∂B/∂(u,v) = Jᵀ·∂B/∂q.
         let jacobian = binding.placement.jacobian();
-        for ((sample, h), g) in self.samples.iter().zip(heights).zip(gradients) {
+        for ((sample, h), g) in samples.iter().zip(heights).zip(gradients) {
             let dq = Vec2::new(sample.du, sample.dv);
             *h = sample.height;
             *g = Vec2::new(jacobian.x_axis.dot(dq), jacobian.y_axis.dot(dq));
@@ -104,7 +142,7 @@ impl PatternBatch {
         flattened
     }
 
-    /// Colours of a colour pattern for the loaded group.
+    /// Colours of a colour pattern for the group, into `colors` (the group's length).
     pub fn colors(
         &mut self,
         binding: &PatternBinding,
@@ -112,43 +150,30 @@ impl PatternBatch {
         time: f64,
         colors: &mut [Vec3],
     ) -> usize {
-        self.load(binding, at, PointPartials::Unneeded);
-        let n = self.u.len();
-        self.rgb.clear();
-        self.rgb.resize(n, [0.0; 3]);
-        let inputs = inputs(&self.u, &self.v, &self.point, time);
-        let flattened =
-            binding
-                .pattern
-                .eval_color(&inputs, &binding.params, &mut self.scratch, &mut self.rgb);
-        for (rgb, color) in self.rgb.iter().zip(colors) {
-            *color = Vec3::from_array(*rgb);
-        }
-        flattened
+        let inputs = Inputs {
+            t: time,
+            ..self.inputs.load(binding, at, PointPartials::Unneeded)
+        };
+        binding.pattern.eval_color(
+            &inputs,
+            &binding.params,
+            &mut self.scratch,
+            bytemuck::cast_slice_mut(colors),
+        )
     }
 }
 
-fn inputs<'a>(u: &'a [f32], v: &'a [f32], point: &'a [Vec<f32>; 9], time: f64) -> Inputs<'a> {
-    let [x, y, z, x_u, y_u, z_u, x_v, y_v, z_v] = point;
-    Inputs {
-        u,
-        v,
-        x,
-        y,
-        z,
-        x_u,
-        x_v,
-        y_u,
-        y_v,
-        z_u,
-        z_v,
-        t: time,
+/// The first `n` entries of `values`, grown (never shrunk) to have them.
+fn at_least<T: Clone + Default>(values: &mut Vec<T>, n: usize) -> &mut [T] {
+    if values.len() < n {
+        values.resize(n, T::default());
     }
+    &mut values[..n]
 }
 
-/// Writes each vector's x, y and z into the three lanes (already the group's length).
-fn write_vectors(lanes: [&mut Vec<f32>; 3], vectors: impl Iterator<Item = Vec3>) {
-    let [x, y, z] = lanes;
+/// Writes the first `n` vectors' x, y and z into the three lanes.
+fn write_vectors(lanes: [&mut Vec<f32>; 3], n: usize, vectors: impl Iterator<Item = Vec3>) {
+    let [x, y, z] = lanes.map(|lane| at_least(lane, n));
     for (((v, x), y), z) in vectors.zip(x).zip(y).zip(z) {
         (*x, *y, *z) = (v.x, v.y, v.z);
     }
