@@ -68,14 +68,42 @@ fn orientation(frame: &Frame) -> f32 {
     }
 }
 
-/// Blinn's normal for a gradient that is not all zero (the caller keeps the plain normal then).
-/// Straight-line code, no early return, so the lane loop below vectorises.
+/// Blinn's normal n·|Pu × Pv| + (Bu·(n × Pv) − Bv·(n × Pu))·orientation, with the parts that
+/// depend only on the frame worked out first: once for a whole group where the frame does not
+/// vary (`blinn_normals_on_flat`). The orientation (±1, so exact) is folded into the two tilt
+/// directions.
+#[derive(Clone, Copy)]
+struct BlinnTilt {
+    n: Vec3,
+    base: Vec3,
+    along_u: Vec3,
+    along_v: Vec3,
+}
+
+impl BlinnTilt {
+    #[inline(always)]
+    fn of(frame: &Frame) -> BlinnTilt {
+        let (n, pu, pv) = (frame.n, frame.pu, frame.pv);
+        let orientation = orientation(frame);
+        BlinnTilt {
+            n,
+            base: n * pu.cross(pv).length(),
+            along_u: n.cross(pv) * orientation,
+            along_v: n.cross(pu) * orientation,
+        }
+    }
+
+    /// The normal for a gradient that is not all zero (the caller keeps the plain normal then).
+    /// Straight-line code, no early return, so the lane loops below vectorise.
+    #[inline(always)]
+    fn normal(&self, bu: f32, bv: f32) -> Vec3 {
+        normalize_or(self.base + (self.along_u * bu - self.along_v * bv), self.n)
+    }
+}
+
 #[inline(always)]
 fn blinn_normal(frame: &Frame, bu: f32, bv: f32) -> Vec3 {
-    let (n, pu, pv) = (frame.n, frame.pu, frame.pv);
-    let area = pu.cross(pv).length();
-    let tilt = (n.cross(pv) * bu - n.cross(pu) * bv) * orientation(frame);
-    normalize_or(n * area + tilt, n)
+    BlinnTilt::of(frame).normal(bu, bv)
 }
 
 /// `bumped_normal` in the Blinn form for a whole group: the same bits, computed a lane of
@@ -88,6 +116,23 @@ pub fn blinn_normals(frames: &[Frame], heights: &[f32], gradients: &[Vec2], out:
     );
 }
 
+/// `blinn_normals` where every fragment has the frame `frame` but for its point (a plane, a
+/// triangle): the same bits, without reading a frame per fragment.
+pub fn blinn_normals_on_flat(frame: &Frame, heights: &[f32], gradients: &[Vec2], out: &mut [Vec3]) {
+    let tilt = BlinnTilt::of(frame);
+    crate::simd::widest(
+        #[inline(always)]
+        || {
+            let chunks = heights.chunks(LANES).zip(gradients.chunks(LANES));
+            for ((heights, gradients), out) in chunks.zip(out.chunks_mut(LANES)) {
+                let bump = BumpLanes::new(heights, gradients);
+                let normals = Lanes::from_fn(|k| bump.normal(k, &tilt));
+                normals.write(out);
+            }
+        },
+    );
+}
+
 #[inline(always)]
 fn blinn_normal_lanes(frames: &[Frame], heights: &[f32], gradients: &[Vec2], out: &mut [Vec3]) {
     let n = out.len();
@@ -97,28 +142,55 @@ fn blinn_normal_lanes(frames: &[Frame], heights: &[f32], gradients: &[Vec2], out
         .zip(gradients[..n].chunks(LANES))
         .zip(out.chunks_mut(LANES));
     for (((frames, heights), gradients), out) in chunks {
-        // Every lane of a short chunk is computed (on zeros); only the group's are written.
         let [mut normal, mut pu, mut pv] = [(); 3].map(|_| Lanes::splat(Vec3::ZERO));
-        let (mut bu, mut bv, mut flat) = ([0.0f32; LANES], [0.0f32; LANES], [false; LANES]);
-        for (k, ((frame, &b), g)) in frames.iter().zip(heights).zip(gradients).enumerate() {
+        for (k, frame) in frames.iter().enumerate() {
             normal.set(k, frame.n);
             pu.set(k, frame.pu);
             pv.set(k, frame.pv);
-            (bu[k], bv[k], flat[k]) = (g.x, g.y, b == 0.0 && g.x == 0.0 && g.y == 0.0);
         }
-        let bumped = Lanes::from_fn(|k| {
+        let bump = BumpLanes::new(heights, gradients);
+        let normals = Lanes::from_fn(|k| {
             let frame = Frame {
                 p: Vec3::ZERO,
                 pu: pu.at(k),
                 pv: pv.at(k),
                 n: normal.at(k),
             };
-            let bumped = blinn_normal(&frame, bu[k], bv[k]);
-            if flat[k] { frame.n } else { bumped }
+            bump.normal(k, &BlinnTilt::of(&frame))
         });
-        for (k, out) in out.iter_mut().enumerate() {
-            *out = bumped.at(k);
+        normals.write(out);
+    }
+}
+
+/// A lane of fragments' bump gradients, and whether each is flat (height and gradient 0).
+/// Every lane of a short chunk is computed (on zeros); only the group's are written.
+struct BumpLanes {
+    bu: [f32; LANES],
+    bv: [f32; LANES],
+    flat: [bool; LANES],
+}
+
+impl BumpLanes {
+    #[inline(always)]
+    fn new(heights: &[f32], gradients: &[Vec2]) -> BumpLanes {
+        let mut lanes = BumpLanes {
+            bu: [0.0; LANES],
+            bv: [0.0; LANES],
+            flat: [false; LANES],
+        };
+        for (k, (&b, g)) in heights.iter().zip(gradients).enumerate() {
+            lanes.bu[k] = g.x;
+            lanes.bv[k] = g.y;
+            lanes.flat[k] = b == 0.0 && g.x == 0.0 && g.y == 0.0;
         }
+        lanes
+    }
+
+    /// Lane k's bumped normal; the plain normal, to the bit, where the bump is flat.
+    #[inline(always)]
+    fn normal(&self, k: usize, tilt: &BlinnTilt) -> Vec3 {
+        let bumped = tilt.normal(self.bu[k], self.bv[k]);
+        if self.flat[k] { tilt.n } else { bumped }
     }
 }
 
@@ -249,6 +321,52 @@ mod tests {
             assert_eq!(bits(lanes[k]), bits(one), "fragment {k}: {frame:?} {b} {g}");
         }
         assert_eq!(lanes[4], frames[4].n);
+    }
+
+    /// A plane's frames, as built and turned inwards (Pu and Pv swapped), over more than a
+    /// lane: the flat path, reading one frame, gives the bits of the one that reads them all.
+    #[test]
+    fn a_flat_surface_gives_the_bits_of_reading_every_frame() {
+        let plane = plane();
+        let count = LANES + 7;
+        let heights: Vec<f32> = (0..count).map(|k| (k % 4) as f32 * 0.5).collect();
+        let mut gradients: Vec<Vec2> = (0..count)
+            .map(|k| Vec2::new((k as f32 * 0.9).cos() * 4.0, (k as f32 * 0.4).sin()))
+            .collect();
+        gradients[0] = Vec2::ZERO; // flat: height 0 too
+        gradients[1] = Vec2::new(f32::INFINITY, 1.0);
+        gradients[2] = Vec2::new(1.0, 0.0);
+        for inward in [false, true] {
+            let frames: Vec<Frame> = (0..count)
+                .map(|k| {
+                    let frame = plane.frame(k as f32 * 3.0, 50.0 - k as f32);
+                    if inward {
+                        Frame {
+                            pu: frame.pv,
+                            pv: frame.pu,
+                            ..frame
+                        }
+                    } else {
+                        frame
+                    }
+                })
+                .collect();
+            let (mut flat, mut each) = (vec![Vec3::NAN; count], vec![Vec3::NAN; count]);
+            blinn_normals_on_flat(&frames[0], &heights, &gradients, &mut flat);
+            blinn_normals(&frames, &heights, &gradients, &mut each);
+            let bits = |v: Vec3| v.to_array().map(f32::to_bits);
+            for k in 0..count {
+                assert_eq!(bits(flat[k]), bits(each[k]), "fragment {k}, inward {inward}");
+            }
+            assert_eq!(flat[0], Vec3::Z);
+            assert!(flat.iter().all(|n| (n.length() - 1.0).abs() < 1e-6));
+            // Either way round, a ramp rising along u tilts the normal back against Pu.
+            let tilted = flat[2];
+            assert!(
+                tilted.dot(frames[2].pu) < 0.0 && tilted.z > 0.0,
+                "inward {inward}: {tilted}"
+            );
+        }
     }
 
     #[test]

@@ -56,4 +56,12 @@ impl Lanes {
     pub fn set(&mut self, k: usize, v: Vec3) {
         (self.x[k], self.y[k], self.z[k]) = (v.x, v.y, v.z);
     }
+
+    /// Writes the first `out.len()` lanes.
+    #[inline(always)]
+    pub fn write(&self, out: &mut [Vec3]) {
+        for (k, out) in out.iter_mut().take(LANES).enumerate() {
+            *out = self.at(k);
+        }
+    }
 }

@@ -2,7 +2,7 @@
 //! frame, the texture or material colour, the bumped normal, then lighting (or a view mode).
 //! Work the scene does not need is skipped: no texture, no sampling; no bump, no perturbation.
 
-use super::bump::{NormalForm, blinn_normals, bumped_normal};
+use super::bump::{NormalForm, blinn_normals, blinn_normals_on_flat, bumped_normal};
 use super::gradient::{GradientMethod, central_difference, shifted_fragments};
 use super::lighting::{FrameLights, blinn_phong_many, facing_sign};
 use super::pattern_batch::{PatternBatch, Sites};
@@ -244,13 +244,13 @@ impl LitShader {
         points.resize(group.len(), Vec3::ZERO);
         normals.resize(group.len(), Vec3::ZERO);
         let blinn = bumped && self.normal_form == NormalForm::Blinn;
-        if blinn {
-            blinn_normals(
-                &scratch.frames,
-                &scratch.heights,
-                &scratch.gradients,
-                normals,
-            );
+        let (frames, heights, gradients) = (&scratch.frames, &scratch.heights, &scratch.gradients);
+        match frames.first() {
+            Some(frame) if blinn && self.frame_is_constant(surface) => {
+                blinn_normals_on_flat(frame, heights, gradients, normals)
+            }
+            _ if blinn => blinn_normals(frames, heights, gradients, normals),
+            _ => {}
         }
         let frames = group.iter().zip(&scratch.frames);
         let outputs = points.iter_mut().zip(normals);
@@ -276,6 +276,12 @@ impl LitShader {
             *point = p;
             *normal = n * facing_sign(p, frame.n);
         }
+    }
+
+    /// Whether every fragment of `surface` has the same frame but for its point: a flat
+    /// surface without interpolated vertex normals.
+    fn frame_is_constant(&self, surface: &Surface) -> bool {
+        self.vertex_normals.is_none() && surface.is_flat()
     }
 
     /// What a view mode other than `Shaded` shows at a fragment.

@@ -97,6 +97,11 @@ impl Surface {
         }
     }
 
+    /// Whether Pu, Pv and n are the same at every (u,v) (only the point varies).
+    pub fn is_flat(&self) -> bool {
+        matches!(self, Surface::Plane(_) | Surface::Triangle(_))
+    }
+
     pub fn domain(&self) -> Domain {
         match self {
             Surface::Plane(s) => s.domain(),
