@@ -199,8 +199,10 @@ impl TileBuffers {
         rect: &PixelRect,
     ) {
         // A triangle is recorded only where it wins, which needs 1/w > 0: the triangle slots
-        // are read only where `inv_w` says one was drawn, so they need no clearing.
-        self.inv_w.fill(0.0);
+        // are read only where `inv_w` says one was drawn, so they need no clearing. Only the
+        // rect's rows are read (a strip's tile is half a tile high).
+        let rows = (rect.y1 - rect.y0 + 1) as usize;
+        self.inv_w[..rows * TILE_SIZE as usize].fill(0.0);
         // AVX2 compares four of the i64 edge functions at once; SSE2 has no 64-bit compare.
         crate::simd::widest(
             #[inline(always)]
@@ -450,8 +452,10 @@ mod tests {
             },
         ] {
             tile.resolve_visibility(&triangles, &bin, &rect);
-            let expected = nearest_by_pixel(&triangles, &rect);
-            let nearest: Vec<u32> = (0..TILE_PIXELS)
+            // The rect's rows are all that is read (and cleared).
+            let slots = (rect.y1 - rect.y0 + 1) as usize * TILE_SIZE as usize;
+            let expected = &nearest_by_pixel(&triangles, &rect)[..slots];
+            let nearest: Vec<u32> = (0..slots)
                 .map(|slot| tile.nearest(slot).unwrap_or(NO_TRIANGLE))
                 .collect();
             assert_eq!(nearest, expected, "tile {rect:?}");
