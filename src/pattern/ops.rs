@@ -134,9 +134,11 @@ fn apply_binary<T: Scalar>(op: Op, a: T, b: T, c: T) -> T {
                 (y * x.powf(y - 1.0), if x > 0.0 { r * x.ln() } else { 0.0 })
             })
         }
+        // q is finite wherever the value is (y = 0 or x/y out of range gives NaN), so the
+        // arithmetic form applies.
         Op::Mod => {
             let q = floor(x / y);
-            T::chain2(x - y * q, a, b, || (1.0, -q))
+            T::arith2(x - y * q, a, b, 1.0, -q)
         }
         Op::Min => pick(x <= y, a, b),
         Op::Max => pick(x >= y, a, b),

@@ -356,7 +356,11 @@ mod tests {
             blinn_normals(&frames, &heights, &gradients, &mut each);
             let bits = |v: Vec3| v.to_array().map(f32::to_bits);
             for k in 0..count {
-                assert_eq!(bits(flat[k]), bits(each[k]), "fragment {k}, inward {inward}");
+                assert_eq!(
+                    bits(flat[k]),
+                    bits(each[k]),
+                    "fragment {k}, inward {inward}"
+                );
             }
             assert_eq!(flat[0], Vec3::Z);
             assert!(flat.iter().all(|n| (n.length() - 1.0).abs() < 1e-6));
