@@ -252,10 +252,14 @@ impl TileBuffers {
                 match kind {
                     PixelKind::Background => out.background_run(pixels),
                     PixelKind::Visible => {
-                        self.fragments.extend(xs.map(|i| {
-                            let t = &triangles[slots[i as usize] as usize];
-                            fragment(t, rect.x0 + i, y, frame)
-                        }));
+                        let first = rect.x0 + xs.start;
+                        let run_slots = &slots[xs.start as usize..xs.end as usize];
+                        for (index, run) in same_triangle(run_slots) {
+                            let make = FragmentMaker::new(&triangles[index as usize], frame, y);
+                            let x0 = first + run.start as u32;
+                            let xs = x0..x0 + run.len() as u32;
+                            self.fragments.extend(xs.map(|x| make.at(x)));
+                        }
                         self.visible_runs.push(pixels);
                     }
                 }
@@ -310,44 +314,82 @@ pub struct TileFrame<'a, S> {
     pub derivatives: &'a [bool],
 }
 
-/// The fragment at pixel (x, y) of a triangle: (u,v) and, if the shader reads them, its screen
-/// derivatives from the interpolated planes (for u = U/Q with U = u/w and Q = 1/w:
-/// ∂u/∂x = (U_x − u·Q_x)/Q).
-#[inline]
-fn fragment<S>(t: &ScreenTriangle, x: u32, y: u32, frame: &TileFrame<S>) -> Fragment {
-    let offset = pixel_offset(t, x, y);
-    let q = t.inv_w.at(offset);
-    let w = 1.0 / q;
-    let plane_uv = Vec2::new(t.u_over_w.at(offset), t.v_over_w.at(offset));
-    let uv = if frame.perspective {
-        plane_uv * w
-    } else {
-        plane_uv
-    };
-    let (duv_dx, duv_dy) = if frame.derivatives[t.object as usize] {
-        let plane_dx = Vec2::new(t.u_over_w.dx, t.v_over_w.dx);
-        let plane_dy = Vec2::new(t.u_over_w.dy, t.v_over_w.dy);
-        let (dx, dy) = if frame.perspective {
-            (
-                (plane_dx - uv * t.inv_w.dx) * w,
-                (plane_dy - uv * t.inv_w.dy) * w,
-            )
-        } else {
-            (plane_dx, plane_dy)
-        };
-        (dx * frame.footprint, dy * frame.footprint)
-    } else {
-        (Vec2::ZERO, Vec2::ZERO)
-    };
-    Fragment {
-        object: t.object,
-        uv,
-        duv_dx,
-        duv_dy,
-        depth: w,
-        x,
-        y,
+/// Makes the fragments of one triangle along one row: what is the same for all of them
+/// (the triangle, its object's flags, the row) is looked up once, so the per-pixel loop is
+/// straight arithmetic.
+struct FragmentMaker<'a> {
+    t: &'a ScreenTriangle,
+    y: u32,
+    perspective: bool,
+    /// Whether the shader reads the (u,v) derivatives (see `TileFrame::derivatives`).
+    derivatives: bool,
+    footprint: f32,
+}
+
+impl<'a> FragmentMaker<'a> {
+    #[inline(always)]
+    fn new<S>(t: &'a ScreenTriangle, frame: &TileFrame<S>, y: u32) -> FragmentMaker<'a> {
+        FragmentMaker {
+            t,
+            y,
+            perspective: frame.perspective,
+            derivatives: frame.derivatives[t.object as usize],
+            footprint: frame.footprint,
+        }
     }
+
+    /// The fragment at pixel (x, y): (u,v) and, if the shader reads them, its screen
+    /// derivatives from the interpolated planes (for u = U/Q with U = u/w and Q = 1/w:
+    /// ∂u/∂x = (U_x − u·Q_x)/Q).
+    #[inline(always)]
+    fn at(&self, x: u32) -> Fragment {
+        let t = self.t;
+        let offset = pixel_offset(t, x, self.y);
+        let q = t.inv_w.at(offset);
+        let w = 1.0 / q;
+        let plane_uv = Vec2::new(t.u_over_w.at(offset), t.v_over_w.at(offset));
+        let uv = if self.perspective {
+            plane_uv * w
+        } else {
+            plane_uv
+        };
+        let (duv_dx, duv_dy) = if self.derivatives {
+            let plane_dx = Vec2::new(t.u_over_w.dx, t.v_over_w.dx);
+            let plane_dy = Vec2::new(t.u_over_w.dy, t.v_over_w.dy);
+            let (dx, dy) = if self.perspective {
+                (
+                    (plane_dx - uv * t.inv_w.dx) * w,
+                    (plane_dy - uv * t.inv_w.dy) * w,
+                )
+            } else {
+                (plane_dx, plane_dy)
+            };
+            (dx * self.footprint, dy * self.footprint)
+        } else {
+            (Vec2::ZERO, Vec2::ZERO)
+        };
+        Fragment {
+            object: t.object,
+            uv,
+            duv_dx,
+            duv_dy,
+            depth: w,
+            x,
+            y: self.y,
+        }
+    }
+}
+
+/// Splits a run of pixels' triangle slots into runs drawn by one triangle: (triangle, range).
+fn same_triangle(slots: &[u32]) -> impl Iterator<Item = (u32, Range<usize>)> + '_ {
+    let mut start = 0;
+    std::iter::from_fn(move || {
+        let &index = slots.get(start)?;
+        let len = slots[start..].iter().take_while(|&&s| s == index).count();
+        let run = start..start + len;
+        start += len;
+        Some((index, run))
+    })
 }
 
 /// The pixel centre relative to the triangle's attribute origin.
@@ -359,6 +401,14 @@ fn pixel_offset(t: &ScreenTriangle, x: u32, y: u32) -> Vec2 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_row_splits_into_runs_of_one_triangle() {
+        let slots = [4, 4, 7, 7, 7, 4, 9];
+        let runs: Vec<(u32, Range<usize>)> = same_triangle(&slots).collect();
+        assert_eq!(runs, [(4, 0..2), (7, 2..5), (4, 5..6), (9, 6..7)]);
+        assert_eq!(same_triangle(&[]).count(), 0);
+    }
     use crate::raster::clip::ClipVertex;
     use crate::raster::pipeline::Interpolation;
     use crate::raster::scan::scan_triangle;
