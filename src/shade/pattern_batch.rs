@@ -3,7 +3,7 @@
 
 use crate::pattern::{BumpSample, Inputs, Scratch};
 use crate::raster::Fragment;
-use crate::scene::PatternBinding;
+use crate::scene::{PatternBinding, Placement};
 use crate::surface::Frame;
 use glam::{Vec2, Vec3};
 
@@ -59,10 +59,14 @@ impl InputLanes {
         let pattern = &binding.pattern;
         if pattern.uses_uv() {
             let (u, v) = (at_least(&mut self.u, n), at_least(&mut self.v, n));
+            let placed = binding.placement != Placement::default();
             for ((&i, u), v) in at.group.iter().zip(u).zip(v) {
-                let q = binding
-                    .placement
-                    .apply(at.fragments[i as usize].uv, jacobian);
+                let uv = at.fragments[i as usize].uv;
+                let q = if placed {
+                    binding.placement.apply(uv, jacobian)
+                } else {
+                    uv
+                };
                 (*u, *v) = (q.x, q.y);
             }
         }
@@ -134,10 +138,15 @@ impl PatternBatch {
                 .eval_bump(&inputs, &binding.params, &mut self.scratch, samples);
         // ∂B/∂(u,v) = Jᵀ·∂B/∂q.
         let jacobian = binding.placement.jacobian();
+        let placed = binding.placement != Placement::default();
         for ((sample, h), g) in samples.iter().zip(heights).zip(gradients) {
             let dq = Vec2::new(sample.du, sample.dv);
             *h = sample.height;
-            *g = Vec2::new(jacobian.x_axis.dot(dq), jacobian.y_axis.dot(dq));
+            *g = if placed {
+                Vec2::new(jacobian.x_axis.dot(dq), jacobian.y_axis.dot(dq))
+            } else {
+                dq
+            };
         }
         flattened
     }
@@ -176,5 +185,93 @@ fn write_vectors(lanes: [&mut Vec<f32>; 3], n: usize, vectors: impl Iterator<Ite
     let [x, y, z] = lanes.map(|lane| at_least(lane, n));
     for (((v, x), y), z) in vectors.zip(x).zip(y).zip(z) {
         (*x, *y, *z) = (v.x, v.y, v.z);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::pattern::Pattern;
+
+    fn fragment(uv: Vec2) -> Fragment {
+        Fragment {
+            object: 0,
+            uv,
+            duv_dx: Vec2::ZERO,
+            duv_dy: Vec2::ZERO,
+            depth: 1.0,
+            x: 0,
+            y: 0,
+        }
+    }
+
+    /// Heights and (u,v) gradients at `uvs`.
+    fn bump(binding: &PatternBinding, uvs: &[Vec2]) -> (Vec<f32>, Vec<Vec2>) {
+        let fragments: Vec<Fragment> = uvs.iter().map(|&uv| fragment(uv)).collect();
+        let group: Vec<u32> = (0..uvs.len() as u32).collect();
+        let at = Sites {
+            fragments: &fragments,
+            group: &group,
+            frames: &[],
+        };
+        let (mut heights, mut gradients) = (vec![0.0; uvs.len()], vec![Vec2::ZERO; uvs.len()]);
+        PatternBatch::default().bump(binding, at, 0.0, &mut heights, &mut gradients);
+        (heights, gradients)
+    }
+
+    /// The gradient in (u,v) is the chain rule through the placement: it matches central
+    /// differences of the height, placed or not, and unplaced it is the pattern's own.
+    #[test]
+    fn gradients_follow_the_placement() {
+        let pattern = Pattern::compile("height = 5 * sin(0.3 * u) * cos(0.2 * v) + 0.1 * u", "t")
+            .expect("a valid pattern");
+        let placements = [
+            Placement::default(),
+            Placement {
+                scale: Vec2::new(2.0, 0.5),
+                rotate_degrees: 30.0,
+                offset: Vec2::new(7.0, -3.0),
+            },
+        ];
+        let uvs: Vec<Vec2> = (0..100)
+            .map(|k| Vec2::new(k as f32 * 1.7 - 40.0, 25.0 - k as f32 * 0.9))
+            .collect();
+        let h = 1e-2;
+        for placement in placements {
+            let binding = PatternBinding {
+                name: "t".into(),
+                pattern: pattern.clone(),
+                params: Vec::new(),
+                placement,
+            };
+            let (_, gradients) = bump(&binding, &uvs);
+            let height_at = |shift: Vec2| {
+                let shifted: Vec<Vec2> = uvs.iter().map(|&uv| uv + shift).collect();
+                bump(&binding, &shifted).0
+            };
+            let [east, west, north, south] = [
+                Vec2::new(h, 0.0),
+                Vec2::new(-h, 0.0),
+                Vec2::new(0.0, h),
+                Vec2::new(0.0, -h),
+            ]
+            .map(height_at);
+            for (k, g) in gradients.iter().enumerate() {
+                let by_differences = Vec2::new(
+                    (east[k] - west[k]) / (2.0 * h),
+                    (north[k] - south[k]) / (2.0 * h),
+                );
+                assert!(
+                    (*g - by_differences).length() < 2e-2,
+                    "{placement:?} at {}: {g} against {by_differences}",
+                    uvs[k]
+                );
+            }
+            if placement == Placement::default() {
+                let (u, v) = (uvs[3].x as f64, uvs[3].y as f64);
+                let du = 1.5 * (0.3 * u).cos() * (0.2 * v).cos() + 0.1;
+                assert!((f64::from(gradients[3].x) - du).abs() < 1e-5);
+            }
+        }
     }
 }
