@@ -88,12 +88,12 @@ impl Surface {
     /// Indexed rather than an iterator: plain index loops inline the same way in every build.
     pub fn frames(&self, count: usize, uv: impl Fn(usize) -> Vec2, out: &mut Vec<Frame>) {
         match self {
-            Surface::Plane(s) => frames_each(count, uv, |u, v| s.frame(u, v), out),
+            Surface::Plane(s) => flat_frames(count, uv, s.frame(0.0, 0.0), out),
             Surface::Sphere(s) => s.frames(count, uv, out),
             Surface::Paraboloid(s) => frames_each(count, uv, |u, v| s.frame(u, v), out),
             Surface::Cone(s) => frames_each(count, uv, |u, v| s.frame(u, v), out),
             Surface::Wave(s) => frames_each(count, uv, |u, v| s.frame(u, v), out),
-            Surface::Triangle(s) => frames_each(count, uv, |u, v| s.frame(u, v), out),
+            Surface::Triangle(s) => flat_frames(count, uv, s.frame(0.0, 0.0), out),
         }
     }
 
@@ -216,8 +216,59 @@ fn frames_each(
     }));
 }
 
+/// `frames_each` for a flat surface (`is_flat`), whose point is P = u·Pu + v·Pv and whose
+/// tangents and normal are those of `at_origin` everywhere: the frames are filled with
+/// `at_origin`, then only their points are written. (Built one whole frame at a time, the loop
+/// reloaded the surface and the fragments for every frame, as its writes might have changed
+/// them for all the compiler knew.)
+fn flat_frames(count: usize, uv: impl Fn(usize) -> Vec2, at_origin: Frame, out: &mut Vec<Frame>) {
+    let (pu, pv) = (at_origin.pu, at_origin.pv);
+    let start = out.len();
+    out.resize(start + count, at_origin);
+    for (k, frame) in out[start..].iter_mut().enumerate() {
+        let uv = uv(k);
+        frame.p = pu * uv.x + pv * uv.y;
+    }
+}
+
 #[cfg(test)]
 pub(crate) mod tests {
+    /// The flat surfaces' batch gives `frame`'s bits, appended after what `out` held.
+    #[test]
+    fn flat_batch_frames_are_single_frames() {
+        use super::{Plane, Surface, Triangle};
+        use glam::{DVec3, Vec2, Vec3};
+        let surfaces = [
+            Surface::Plane(Plane::new(
+                DVec3::new(-600.0, 0.0, 600.0),
+                Vec3::Y,
+                Vec3::X,
+                Vec2::splat(1200.0),
+            )),
+            Surface::Triangle(Triangle::new(
+                DVec3::new(0.0, 0.0, 0.0),
+                DVec3::new(30.0, 5.0, -2.0),
+                DVec3::new(-4.0, 20.0, 9.0),
+            )),
+        ];
+        let uvs: Vec<Vec2> = (0..150)
+            .map(|i| Vec2::new(i as f32 * 8.3 - 30.0, 1200.0 - i as f32 * 7.9))
+            .collect();
+        for surface in surfaces {
+            assert!(surface.is_flat());
+            let earlier = surface.frame(1.0, 2.0);
+            let mut batch = vec![earlier];
+            surface.frames(uvs.len(), |k| uvs[k], &mut batch);
+            assert_eq!(batch.len(), uvs.len() + 1);
+            assert_eq!(batch[0], earlier);
+            let bits =
+                |f: &super::Frame| [f.p, f.pu, f.pv, f.n].map(|v| v.to_array().map(f32::to_bits));
+            for (uv, got) in uvs.iter().zip(&batch[1..]) {
+                assert_eq!(bits(got), bits(&surface.frame(uv.x, uv.y)), "at {uv}");
+            }
+        }
+    }
+
     #[test]
     fn sin_cos_is_within_a_few_ulp() {
         let mut worst = 0.0f64;
