@@ -6,7 +6,7 @@ use super::fragment::{Fragment, FragmentShader, FrameObject};
 use super::framebuffer::{Blend, encode_srgb8, linear_to_srgb8};
 use super::row_runs::{PixelKind, RowRuns};
 use super::scan::{PixelRect, RowSpan, triangle_rows};
-use super::setup::ScreenTriangle;
+use super::setup::{AttributePlane, ScreenTriangle};
 use glam::{Vec2, Vec3};
 use std::ops::Range;
 
@@ -258,7 +258,7 @@ impl TileBuffers {
                             let make = FragmentMaker::new(&triangles[index as usize], frame, y);
                             let x0 = first + run.start as u32;
                             let xs = x0..x0 + run.len() as u32;
-                            self.fragments.extend(xs.map(|x| make.at(x)));
+                            self.fragments.extend(xs.map(move |x| make.at(x)));
                         }
                         self.visible_runs.push(pixels);
                     }
@@ -315,10 +315,12 @@ pub struct TileFrame<'a, S> {
 }
 
 /// Makes the fragments of one triangle along one row: what is the same for all of them
-/// (the triangle, its object's flags, the row) is looked up once, so the per-pixel loop is
-/// straight arithmetic.
-struct FragmentMaker<'a> {
-    t: &'a ScreenTriangle,
+/// (the triangle's planes, its object's flags, the row) is looked up once, and held by value,
+/// so the per-pixel loop is straight arithmetic (through a reference, it was reloaded for every
+/// fragment: the fragments' writes might have changed it, for all the compiler knew).
+#[derive(Clone, Copy)]
+struct FragmentMaker {
+    t: TrianglePlanes,
     y: u32,
     perspective: bool,
     /// Whether the shader reads the (u,v) derivatives (see `TileFrame::derivatives`).
@@ -326,11 +328,27 @@ struct FragmentMaker<'a> {
     footprint: f32,
 }
 
-impl<'a> FragmentMaker<'a> {
+/// What a fragment reads of its triangle.
+#[derive(Clone, Copy)]
+struct TrianglePlanes {
+    object: u32,
+    origin: Vec2,
+    inv_w: AttributePlane,
+    u_over_w: AttributePlane,
+    v_over_w: AttributePlane,
+}
+
+impl FragmentMaker {
     #[inline(always)]
-    fn new<S>(t: &'a ScreenTriangle, frame: &TileFrame<S>, y: u32) -> FragmentMaker<'a> {
+    fn new<S>(t: &ScreenTriangle, frame: &TileFrame<S>, y: u32) -> FragmentMaker {
         FragmentMaker {
-            t,
+            t: TrianglePlanes {
+                object: t.object,
+                origin: t.origin,
+                inv_w: t.inv_w,
+                u_over_w: t.u_over_w,
+                v_over_w: t.v_over_w,
+            },
             y,
             perspective: frame.perspective,
             derivatives: frame.derivatives[t.object as usize],
@@ -343,8 +361,8 @@ impl<'a> FragmentMaker<'a> {
     /// ∂u/∂x = (U_x − u·Q_x)/Q).
     #[inline(always)]
     fn at(&self, x: u32) -> Fragment {
-        let t = self.t;
-        let offset = pixel_offset(t, x, self.y);
+        let t = &self.t;
+        let offset = pixel_offset(t.origin, x, self.y);
         let q = t.inv_w.at(offset);
         let w = 1.0 / q;
         let plane_uv = Vec2::new(t.u_over_w.at(offset), t.v_over_w.at(offset));
@@ -380,6 +398,12 @@ impl<'a> FragmentMaker<'a> {
     }
 }
 
+/// The pixel centre relative to a triangle's attribute origin.
+#[inline]
+fn pixel_offset(origin: Vec2, x: u32, y: u32) -> Vec2 {
+    Vec2::new(x as f32 + 0.5, y as f32 + 0.5) - origin
+}
+
 /// Splits a run of pixels' triangle slots into runs drawn by one triangle: (triangle, range).
 fn same_triangle(slots: &[u32]) -> impl Iterator<Item = (u32, Range<usize>)> + '_ {
     let mut start = 0;
@@ -390,12 +414,6 @@ fn same_triangle(slots: &[u32]) -> impl Iterator<Item = (u32, Range<usize>)> + '
         start += len;
         Some((index, run))
     })
-}
-
-/// The pixel centre relative to the triangle's attribute origin.
-#[inline]
-fn pixel_offset(t: &ScreenTriangle, x: u32, y: u32) -> Vec2 {
-    Vec2::new(x as f32 + 0.5, y as f32 + 0.5) - t.origin
 }
 
 #[cfg(test)]
@@ -457,7 +475,7 @@ mod tests {
         for (index, t) in triangles.iter().enumerate() {
             scan_triangle(t, rect, |x, y| {
                 let slot = ((y - rect.y0) * TILE_SIZE + (x - rect.x0)) as usize;
-                let depth = t.inv_w.at(pixel_offset(t, x, y));
+                let depth = t.inv_w.at(pixel_offset(t.origin, x, y));
                 if depth > inv_w[slot] {
                     inv_w[slot] = depth;
                     nearest[slot] = index as u32;
