@@ -408,6 +408,31 @@ mod tests {
         }
     }
 
+    /// A short chunk computes all its lanes, the ones past its end on what an earlier call
+    /// left there (here non-finite): none of it reaches the outputs or the count.
+    #[test]
+    fn lanes_past_a_short_chunk_stay_out_of_the_results() {
+        let pattern = Pattern::compile("height = 1 / u", "t").unwrap();
+        let mut scratch = Scratch::new();
+        let zeros = [0.0f32; 70];
+        let mut out = [BumpSample::default(); 70];
+        let flat = pattern.eval_bump(
+            &Inputs::uv(&zeros, &zeros, 0.0),
+            &[],
+            &mut scratch,
+            &mut out,
+        );
+        assert_eq!(flat, 70);
+        let u = [2.0f32, 4.0, 8.0];
+        let mut out = [BumpSample::default(); 3];
+        let flat = pattern.eval_bump(&Inputs::uv(&u, &u, 0.0), &[], &mut scratch, &mut out);
+        assert_eq!(flat, 0);
+        assert_eq!(
+            out.map(|s| (s.height, s.du)),
+            [(0.5, -0.25), (0.25, -0.0625), (0.125, -0.015625)]
+        );
+    }
+
     #[test]
     fn pattern_is_shareable_between_threads() {
         fn shareable<T: Send + Sync + Clone>() {}
