@@ -47,12 +47,14 @@ struct InputLanes {
 impl InputLanes {
     /// Loads the group's inputs that the pattern reads: pattern coordinates q = J·(u,v) +
     /// offset, and the object-space point, with ∂p/∂q = [Pu Pv]·J⁻¹ if `partials` asks.
-    /// Returns them, each `group.len()` long (or empty where the pattern does not read it).
+    /// Returns them, each `group.len()` long (or empty where the pattern does not read it),
+    /// at time `t`.
     fn load<'a>(
         &'a mut self,
         binding: &PatternBinding,
         at: Sites,
         partials: PointPartials,
+        t: f64,
     ) -> Inputs<'a> {
         let jacobian = binding.placement.jacobian();
         let n = at.group.len();
@@ -109,7 +111,7 @@ impl InputLanes {
             y_v: read(y_v, lanes == 9),
             z_u: read(z_u, lanes == 9),
             z_v: read(z_v, lanes == 9),
-            t: 0.0,
+            t,
         }
     }
 }
@@ -127,10 +129,7 @@ impl PatternBatch {
     ) -> usize {
         let n = at.group.len();
         at_least(&mut self.samples, n);
-        let inputs = Inputs {
-            t: time,
-            ..self.inputs.load(binding, at, PointPartials::Needed)
-        };
+        let inputs = self.inputs.load(binding, at, PointPartials::Needed, time);
         let samples = &mut self.samples[..n];
         let flattened =
             binding
@@ -159,10 +158,7 @@ impl PatternBatch {
         time: f64,
         colors: &mut [Vec3],
     ) -> usize {
-        let inputs = Inputs {
-            t: time,
-            ..self.inputs.load(binding, at, PointPartials::Unneeded)
-        };
+        let inputs = self.inputs.load(binding, at, PointPartials::Unneeded, time);
         binding.pattern.eval_color(
             &inputs,
             &binding.params,
