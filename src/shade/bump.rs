@@ -42,7 +42,7 @@ pub fn bumped_normal(
     }
     let orientation = orientation(frame);
     let bumped = match form {
-        NormalForm::Blinn => return blinn_normal(frame, bu, bv),
+        NormalForm::Blinn => BlinnTilt::of(frame).unnormalised(bu, bv),
         NormalForm::Seed => {
             let pu = normalize_or(frame.pu, Vec3::ZERO);
             let pv = normalize_or(frame.pv, Vec3::ZERO);
@@ -93,17 +93,17 @@ impl BlinnTilt {
         }
     }
 
+    #[inline(always)]
+    fn unnormalised(&self, bu: f32, bv: f32) -> Vec3 {
+        self.base + (self.along_u * bu - self.along_v * bv)
+    }
+
     /// The normal for a gradient that is not all zero (the caller keeps the plain normal then).
     /// Straight-line code, no early return, so the lane loops below vectorise.
     #[inline(always)]
     fn normal(&self, bu: f32, bv: f32) -> Vec3 {
-        normalize_or(self.base + (self.along_u * bu - self.along_v * bv), self.n)
+        normalize_or(self.unnormalised(bu, bv), self.n)
     }
-}
-
-#[inline(always)]
-fn blinn_normal(frame: &Frame, bu: f32, bv: f32) -> Vec3 {
-    BlinnTilt::of(frame).normal(bu, bv)
 }
 
 /// `bumped_normal` in the Blinn form for a whole group: the same bits, computed a lane of
