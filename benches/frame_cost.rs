@@ -3,11 +3,12 @@
 //! shader and quality, no file written), or that scene at 16 samples as the POV-Ray peer renders
 //! it, adaptive at CONTRAST if given. Prints the fragments shaded per frame; run it with two
 //! frame counts and divide the difference in instructions by the difference in fragments.
-//! `still` writes the POV-Ray peer's 1-sample PNG still FRAMES times as `peer_povray` does
-//! (render, 8-bit conversion, PNG encoding, sync) and prints the wall time's median and range,
-//! for comparing two builds run one after the other.
+//! `still` writes the POV-Ray peer's PNG still FRAMES times as `peer_povray` does (render, 8-bit
+//! conversion, PNG encoding, sync; 1 sample per pixel unless SAMPLES, adaptive at CONTRAST if
+//! given) and prints the wall time's median and range, for comparing two builds run one after
+//! the other.
 //!
-//! Run: `cargo bench --bench frame_cost -- euc|pov|pov16|still FRAMES [CONTRAST]`, e.g. under
+//! Run: `cargo bench --bench frame_cost -- euc|pov|pov16|still FRAMES [CONTRAST | SAMPLES [CONTRAST]]`, e.g. under
 //! `valgrind --tool=callgrind target/release/deps/frame_cost-* euc 3`.
 
 mod bench_support;
@@ -42,14 +43,14 @@ fn frames(prepared: &PreparedScene, camera: &Camera, shader: &impl FragmentShade
     println!("{n} frames of {fragments} fragments");
 }
 
-/// `n` one-sample 1080p PNG stills of the POV-Ray peer's scene, after one that settles the
-/// machine; prints their wall times.
-fn stills(n: usize) {
+/// `n` 1080p PNG stills of the POV-Ray peer's scene at `samples` per pixel (adaptive at
+/// `contrast` if given), after one that settles the machine; prints their wall times.
+fn stills(n: usize, samples: u32, contrast: Option<f32>) {
     let dir = std::env::temp_dir().join(format!("bumpwork-still-cost-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("temp dir");
     let (_, text, scene) = pov_peer_files(&dir);
     let camera = scene.camera.clone();
-    let settings = pov_peer_settings(1, None);
+    let settings = pov_peer_settings(samples, contrast);
     let prepared = settings.prepare(scene, &camera);
     let recipe = Recipe::capture("peer", &prepared.scene, &camera, &settings);
     let request = StillRequest {
@@ -113,7 +114,11 @@ fn main() {
             }
             println!("{n} frames of {fragments} fragments");
         }
-        "still" => stills(n),
+        "still" => stills(
+            n,
+            args.get(2).and_then(|a| a.parse().ok()).unwrap_or(1),
+            args.get(3).and_then(|a| a.parse().ok()),
+        ),
         _ => {
             let (scene, _) = textured_sphere_scene();
             let camera = scene.camera.clone();
