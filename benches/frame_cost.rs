@@ -8,7 +8,8 @@
 //! given) and prints the wall time's median and range, for comparing two builds run one after
 //! the other.
 //!
-//! Run: `cargo bench --bench frame_cost -- euc|pov|pov16|still FRAMES [CONTRAST | SAMPLES [CONTRAST]]`, e.g. under
+//! Run: `cargo bench --bench frame_cost -- euc|pov|pov16|still FRAMES [ARGS]` (pov16: CONTRAST;
+//! still: SAMPLES CONTRAST), e.g. under
 //! `valgrind --tool=callgrind target/release/deps/frame_cost-* euc 3`.
 
 mod bench_support;
