@@ -9,6 +9,7 @@ mod adaptive;
 
 pub use adaptive::{MAX_ADAPTIVE_DENSITY, adaptive_density, projected_chord_error};
 
+use crate::pattern::Precision;
 use crate::raster::{Camera, Interpolation, PreparedObject, PreparedScene, RenderTarget, Viewport};
 use crate::scene::{Scene, Texturing};
 use crate::shade::{GradientMethod, LitShader, NormalForm, VertexNormals};
@@ -48,6 +49,9 @@ pub struct Quality {
     /// Texture filter for every image texture; `None` keeps each scene's own.
     pub filter: Option<Filter>,
     pub gradient: GradientMethod,
+    /// The float patterns are evaluated in (recipes from before this knob read as the default).
+    #[serde(default)]
+    pub pattern_precision: Precision,
     pub normal_form: NormalForm,
     pub normals: NormalSource,
     pub interpolation: Interpolation,
@@ -97,6 +101,7 @@ impl Quality {
             adaptive_samples: None,
             filter: None,
             gradient: GradientMethod::Exact,
+            pattern_precision: Precision::Fastest,
             normal_form: NormalForm::Blinn,
             normals: NormalSource::ExactFrame,
             interpolation: Interpolation::PerspectiveCorrect,
@@ -124,6 +129,7 @@ impl Quality {
             tessellation: 256,
             adaptive_tolerance_px: Some(0.1),
             samples: 64,
+            pattern_precision: Precision::Double,
             ..Quality::high()
         }
     }
@@ -191,6 +197,7 @@ impl Quality {
     pub fn configure(&self, shader: &mut LitShader, prepared: &PreparedScene) {
         shader.normal_form = self.normal_form;
         shader.gradient = self.gradient;
+        shader.pattern_precision = self.pattern_precision;
         shader.vertex_normals = match self.normals {
             NormalSource::ExactFrame => None,
             NormalSource::InterpolatedVertex => Some(vertex_normals(prepared)),
@@ -207,10 +214,11 @@ impl Quality {
             .filter
             .map_or("scene".to_string(), |f| format!("{f:?}"));
         format!(
-            "{tessellation}, {} spp, filter {}, gradient {}, {:?} normal, {:?}, {:?}",
+            "{tessellation}, {} spp, filter {}, gradient {}, patterns {}, {:?} normal, {:?}, {:?}",
             self.samples,
             filter.to_lowercase(),
             self.gradient.name(),
+            self.pattern_precision.name(),
             self.normal_form,
             self.normals,
             self.interpolation

@@ -7,7 +7,7 @@
 //! terminal; what compiles evaluates to finite numbers; a decoded image has the size it claims.
 
 use bumpwork::export::metadata::{RECIPE, SCENE, png_text, text_of};
-use bumpwork::pattern::{BumpSample, Inputs, OutputKind, Pattern};
+use bumpwork::pattern::{BumpSample, Inputs, OutputKind, Pattern, Precision};
 use bumpwork::still::Recipe;
 use bumpwork::texture::{Encoding, Limits, decode_image};
 use std::io::Cursor;
@@ -64,7 +64,7 @@ const COORDS: [f32; 10] = [
 fn evaluate(pattern: &Pattern) {
     let a: Vec<f32> = COORDS.to_vec();
     let b: Vec<f32> = COORDS.iter().rev().copied().collect();
-    let inputs = |t| Inputs {
+    let inputs = |t, precision| Inputs {
         u: &a,
         v: &b,
         x: &b,
@@ -77,6 +77,7 @@ fn evaluate(pattern: &Pattern) {
         z_u: &a,
         z_v: &b,
         t,
+        precision,
     };
     let hostile: Vec<f32> = [f32::MAX, f32::NEG_INFINITY, f32::NAN, -1.0e30, 0.0]
         .iter()
@@ -85,8 +86,10 @@ fn evaluate(pattern: &Pattern) {
         .take(pattern.params().len())
         .collect();
     let mut scratch = pattern.scratch();
-    for (t, params) in [(0.0, &[][..]), (1.0e7, &hostile[..]), (-1.0e300, &[][..])] {
-        let inputs = inputs(t);
+    let runs = [(0.0, &[][..]), (1.0e7, &hostile[..]), (-1.0e300, &[][..])];
+    let precisions = [Precision::Fastest, Precision::Double];
+    for ((t, params), precision) in runs.into_iter().flat_map(|r| precisions.map(|p| (r, p))) {
+        let inputs = inputs(t, precision);
         match pattern.output() {
             OutputKind::Color => {
                 let mut out = vec![[0.0; 3]; a.len()];

@@ -1,5 +1,6 @@
 //! What the bench runs: the presets, then `interactive` with one knob changed at a time.
 
+use crate::pattern::Precision;
 use crate::quality::{NormalSource, QUALITY_NAMES, Quality, preset};
 use crate::raster::Interpolation;
 use crate::shade::{GradientMethod, NormalForm};
@@ -68,6 +69,10 @@ fn knob_variations() -> Vec<(&'static str, Quality)> {
             "gradient=seed-lattice",
             with(|q| q.gradient = GradientMethod::SeedLattice),
         ),
+        (
+            "patterns=double",
+            with(|q| q.pattern_precision = Precision::Double),
+        ),
         ("normal=seed", with(|q| q.normal_form = NormalForm::Seed)),
         ("normal=full", with(|q| q.normal_form = NormalForm::Full)),
         (
@@ -95,6 +100,7 @@ mod tests {
                 q.samples != base.samples,
                 q.filter != base.filter,
                 q.gradient != base.gradient,
+                q.pattern_precision != base.pattern_precision,
                 q.normal_form != base.normal_form,
                 q.normals != base.normals,
                 q.interpolation != base.interpolation,

@@ -48,6 +48,12 @@ impl Program {
     pub fn uses(&self, input: Input) -> bool {
         self.sources.contains(&Source::Input(input))
     }
+
+    /// Whether `f32` lanes are accurate enough for this program: when it does not read `t`
+    /// (see `Real`).
+    pub fn single_precision(&self) -> bool {
+        !self.uses(Input::T)
+    }
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]

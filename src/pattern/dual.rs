@@ -1,112 +1,136 @@
 //! Forward-mode automatic differentiation: `Dual` carries a value and its partials with respect
 //! to the surface parameters u and v. `Scalar` lets one definition of every operation serve both
-//! plain values (`f64`, derivatives never computed) and duals.
+//! plain values (derivatives never computed) and duals, in either precision.
 
-/// A number the evaluator computes with: `f64` for values only, `Dual` for value + gradient.
+use super::real::Real;
+
+/// A number the evaluator computes with: a `Real` for values only, `Dual` for value + gradient.
 pub trait Scalar: Copy + Default + Send + Sync + 'static {
+    /// The float type of the value and partials.
+    type Real: Real;
+
     /// Whether this type carries derivatives (so inputs must supply their partials).
     const DUAL: bool;
 
     /// A value that does not vary with u or v.
-    fn constant(value: f64) -> Self;
+    fn constant(value: Self::Real) -> Self;
 
     /// An input with its partials ∂/∂u and ∂/∂v.
-    fn input(value: f64, du: f64, dv: f64) -> Self;
+    fn input(value: Self::Real, du: Self::Real, dv: Self::Real) -> Self;
 
-    fn value(self) -> f64;
+    fn value(self) -> Self::Real;
 
     /// `f(a)` given its value `f` and, lazily, `f'(a)`.
-    fn chain1(f: f64, a: Self, partial: impl FnOnce() -> f64) -> Self;
+    fn chain1(f: Self::Real, a: Self, partial: impl FnOnce() -> Self::Real) -> Self;
 
     /// `f(a, b)` given its value and, lazily, `(∂f/∂a, ∂f/∂b)`.
-    fn chain2(f: f64, a: Self, b: Self, partials: impl FnOnce() -> (f64, f64)) -> Self;
+    fn chain2(
+        f: Self::Real,
+        a: Self,
+        b: Self,
+        partials: impl FnOnce() -> (Self::Real, Self::Real),
+    ) -> Self;
 
     /// Like `chain2`, for partials that are finite wherever `f` is (arithmetic): skips the
     /// 0·∞ guard, which is then never needed.
-    fn arith2(f: f64, a: Self, b: Self, pa: f64, pb: f64) -> Self;
+    fn arith2(f: Self::Real, a: Self, b: Self, pa: Self::Real, pb: Self::Real) -> Self;
 
     /// `f(a, b, c)` given its value and, lazily, its three partials.
     fn chain3(
-        f: f64,
+        f: Self::Real,
         a: Self,
         b: Self,
         c: Self,
-        partials: impl FnOnce() -> (f64, f64, f64),
+        partials: impl FnOnce() -> (Self::Real, Self::Real, Self::Real),
     ) -> Self;
 }
 
-impl Scalar for f64 {
+impl<R: Real> Scalar for R {
+    type Real = R;
+
     const DUAL: bool = false;
 
-    fn constant(value: f64) -> f64 {
+    #[inline(always)]
+    fn constant(value: R) -> R {
         value
     }
 
-    fn input(value: f64, _: f64, _: f64) -> f64 {
+    #[inline(always)]
+    fn input(value: R, _: R, _: R) -> R {
         value
     }
 
-    fn value(self) -> f64 {
+    #[inline(always)]
+    fn value(self) -> R {
         self
     }
 
-    fn chain1(f: f64, _: f64, _: impl FnOnce() -> f64) -> f64 {
+    #[inline(always)]
+    fn chain1(f: R, _: R, _: impl FnOnce() -> R) -> R {
         f
     }
 
-    fn chain2(f: f64, _: f64, _: f64, _: impl FnOnce() -> (f64, f64)) -> f64 {
+    #[inline(always)]
+    fn chain2(f: R, _: R, _: R, _: impl FnOnce() -> (R, R)) -> R {
         f
     }
 
-    fn chain3(f: f64, _: f64, _: f64, _: f64, _: impl FnOnce() -> (f64, f64, f64)) -> f64 {
+    #[inline(always)]
+    fn chain3(f: R, _: R, _: R, _: R, _: impl FnOnce() -> (R, R, R)) -> R {
         f
     }
 
-    fn arith2(f: f64, _: f64, _: f64, _: f64, _: f64) -> f64 {
+    #[inline(always)]
+    fn arith2(f: R, _: R, _: R, _: R, _: R) -> R {
         f
     }
 }
 
 /// A value with its partial derivatives with respect to u and v.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Dual {
-    pub value: f64,
-    pub du: f64,
-    pub dv: f64,
+pub struct Dual<R> {
+    pub value: R,
+    pub du: R,
+    pub dv: R,
 }
 
 /// `partial · derivative`, taking 0 · ∞ as 0: an argument that does not vary contributes nothing,
 /// even where the function's slope is infinite (e.g. `sqrt(max(0, r))` outside the bump).
 #[inline(always)]
-fn times(partial: f64, derivative: f64) -> f64 {
-    if derivative == 0.0 {
-        0.0
+fn times<R: Real>(partial: R, derivative: R) -> R {
+    if derivative == R::zero() {
+        R::zero()
     } else {
         partial * derivative
     }
 }
 
-impl Scalar for Dual {
+impl<R: Real> Scalar for Dual<R> {
+    type Real = R;
+
     const DUAL: bool = true;
 
-    fn constant(value: f64) -> Dual {
+    #[inline(always)]
+    fn constant(value: R) -> Dual<R> {
         Dual {
             value,
-            du: 0.0,
-            dv: 0.0,
+            du: R::zero(),
+            dv: R::zero(),
         }
     }
 
-    fn input(value: f64, du: f64, dv: f64) -> Dual {
+    #[inline(always)]
+    fn input(value: R, du: R, dv: R) -> Dual<R> {
         Dual { value, du, dv }
     }
 
-    fn value(self) -> f64 {
+    #[inline(always)]
+    fn value(self) -> R {
         self.value
     }
 
     #[inline(always)]
-    fn chain1(f: f64, a: Dual, partial: impl FnOnce() -> f64) -> Dual {
+    fn chain1(f: R, a: Dual<R>, partial: impl FnOnce() -> R) -> Dual<R> {
         let p = partial();
         Dual {
             value: f,
@@ -116,7 +140,7 @@ impl Scalar for Dual {
     }
 
     #[inline(always)]
-    fn chain2(f: f64, a: Dual, b: Dual, partials: impl FnOnce() -> (f64, f64)) -> Dual {
+    fn chain2(f: R, a: Dual<R>, b: Dual<R>, partials: impl FnOnce() -> (R, R)) -> Dual<R> {
         let (pa, pb) = partials();
         Dual {
             value: f,
@@ -126,7 +150,7 @@ impl Scalar for Dual {
     }
 
     #[inline(always)]
-    fn arith2(f: f64, a: Dual, b: Dual, pa: f64, pb: f64) -> Dual {
+    fn arith2(f: R, a: Dual<R>, b: Dual<R>, pa: R, pb: R) -> Dual<R> {
         Dual {
             value: f,
             du: pa * a.du + pb * b.du,
@@ -136,12 +160,12 @@ impl Scalar for Dual {
 
     #[inline(always)]
     fn chain3(
-        f: f64,
-        a: Dual,
-        b: Dual,
-        c: Dual,
-        partials: impl FnOnce() -> (f64, f64, f64),
-    ) -> Dual {
+        f: R,
+        a: Dual<R>,
+        b: Dual<R>,
+        c: Dual<R>,
+        partials: impl FnOnce() -> (R, R, R),
+    ) -> Dual<R> {
         let (pa, pb, pc) = partials();
         Dual {
             value: f,
@@ -157,7 +181,7 @@ mod tests {
 
     #[test]
     fn product_rule() {
-        let a = Dual::input(3.0, 1.0, 0.0);
+        let a = Dual::<f64>::input(3.0, 1.0, 0.0);
         let b = Dual::input(2.0, 0.0, 1.0);
         let p = Dual::chain2(6.0, a, b, || (b.value, a.value));
         assert_eq!(p, Dual::input(6.0, 2.0, 3.0));
@@ -165,7 +189,7 @@ mod tests {
 
     #[test]
     fn infinite_slope_times_constant_is_zero() {
-        let c = Dual::constant(0.0);
+        let c = Dual::<f64>::constant(0.0);
         let r = Dual::chain1(0.0, c, || f64::INFINITY);
         assert_eq!((r.du, r.dv), (0.0, 0.0));
     }

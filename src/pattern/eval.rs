@@ -2,14 +2,15 @@
 //! The instruction loop is outside, the fragment loop inside, so each op is a tight loop over
 //! `CHUNK` lanes with no allocation, boxing or tree walking.
 //!
-//! Numbers are `f64`: `t` reaches 1e7 s, where an `f32` step is a whole second (so `sin(t)` would
-//! be noise), and floored `mod` of large coordinates needs the extra bits to keep a 30-unit period
-//! accurate to 1e-3. Inputs and outputs stay `f32` for the renderer.
+//! Lanes are `f32` or `f64` (`Real`, which says when each serves). Inputs and outputs are `f32`
+//! for the renderer either way.
 
 use super::check::Input;
 use super::compile::{Instr, Program, Source};
 use super::dual::{Dual, Scalar};
 use super::ops::{Op, apply};
+use super::real::{LaneStorage, Precision, Real};
+use num_traits::Zero;
 
 /// Fragments evaluated together; slots are `CHUNK` lanes wide.
 pub const CHUNK: usize = 64;
@@ -34,6 +35,7 @@ pub struct Inputs<'a> {
     /// Seconds; the same for the whole batch; its derivative is 0. `f64` because an animation
     /// clock of 1e7 s has a step of a whole second in `f32`.
     pub t: f64,
+    pub precision: Precision,
 }
 
 impl<'a> Inputs<'a> {
@@ -52,8 +54,7 @@ impl<'a> Inputs<'a> {
 /// calls (one per thread) so evaluation never allocates.
 #[derive(Clone, Debug, Default)]
 pub struct Scratch {
-    /// `f64`, not `f32`: see the module comment (t up to 1e7 s, floored mod of large u).
-    lanes: Vec<f64>,
+    lanes: LaneStorage,
 }
 
 impl Scratch {
@@ -62,49 +63,50 @@ impl Scratch {
     }
 
     /// Storage for `slots` slots of `T`.
-    pub(crate) fn slots<T: Lane>(&mut self, slots: usize) -> &mut [f64] {
+    pub(crate) fn slots<T: Lane>(&mut self, slots: usize) -> &mut [T::Real] {
         let len = slots * T::SLOT;
-        if self.lanes.len() < len {
-            self.lanes.resize(len, 0.0);
+        let lanes = T::Real::lanes(&mut self.lanes);
+        if lanes.len() < len {
+            lanes.resize(len, T::Real::zero());
         }
-        &mut self.lanes[..len]
+        &mut lanes[..len]
     }
 }
 
 /// How a scalar type is laid out in a slot: structure-of-arrays, `CHUNK` values, then (for
 /// duals) `CHUNK` u-partials and `CHUNK` v-partials, so every lane loop reads and writes
-/// contiguous `f64`s and vectorises.
+/// contiguous floats and vectorises.
 pub(crate) trait Lane: Scalar {
-    /// `f64`s per slot.
+    /// Floats per slot.
     const SLOT: usize;
-    fn get(slot: &[f64], i: usize) -> Self;
-    fn set(slot: &mut [f64], i: usize, value: Self);
+    fn get(slot: &[Self::Real], i: usize) -> Self;
+    fn set(slot: &mut [Self::Real], i: usize, value: Self);
 }
 
-impl Lane for f64 {
+impl<R: Real> Lane for R {
     const SLOT: usize = CHUNK;
 
     #[inline(always)]
-    fn get(slot: &[f64], i: usize) -> f64 {
+    fn get(slot: &[R], i: usize) -> R {
         slot[i]
     }
 
     #[inline(always)]
-    fn set(slot: &mut [f64], i: usize, value: f64) {
+    fn set(slot: &mut [R], i: usize, value: R) {
         slot[i] = value;
     }
 }
 
-impl Lane for Dual {
+impl<R: Real> Lane for Dual<R> {
     const SLOT: usize = 3 * CHUNK;
 
     #[inline(always)]
-    fn get(slot: &[f64], i: usize) -> Dual {
+    fn get(slot: &[R], i: usize) -> Dual<R> {
         Dual::input(slot[i], slot[CHUNK + i], slot[2 * CHUNK + i])
     }
 
     #[inline(always)]
-    fn set(slot: &mut [f64], i: usize, value: Dual) {
+    fn set(slot: &mut [R], i: usize, value: Dual<R>) {
         slot[i] = value.value;
         slot[CHUNK + i] = value.du;
         slot[2 * CHUNK + i] = value.dv;
@@ -112,11 +114,11 @@ impl Lane for Dual {
 }
 
 /// The storage of slot `index`.
-pub(crate) fn slot<T: Lane>(slots: &[f64], index: usize) -> &[f64] {
+pub(crate) fn slot<T: Lane>(slots: &[T::Real], index: usize) -> &[T::Real] {
     &slots[index * T::SLOT..(index + 1) * T::SLOT]
 }
 
-fn slot_mut<T: Lane>(slots: &mut [f64], index: usize) -> &mut [f64] {
+fn slot_mut<T: Lane>(slots: &mut [T::Real], index: usize) -> &mut [T::Real] {
     &mut slots[index * T::SLOT..(index + 1) * T::SLOT]
 }
 
@@ -125,7 +127,7 @@ pub(crate) fn load_uniforms<T: Lane>(
     program: &Program,
     param: impl Fn(usize) -> f64,
     t: f64,
-    slots: &mut [f64],
+    slots: &mut [T::Real],
 ) {
     for (index, source) in program.sources.iter().enumerate() {
         let value = match *source {
@@ -136,7 +138,7 @@ pub(crate) fn load_uniforms<T: Lane>(
         };
         let lanes = slot_mut::<T>(slots, index);
         for i in 0..CHUNK {
-            T::set(lanes, i, T::constant(value));
+            T::set(lanes, i, T::constant(T::Real::of(value)));
         }
     }
 }
@@ -148,8 +150,9 @@ pub(crate) fn load_inputs<T: Lane>(
     inputs: &Inputs,
     start: usize,
     n: usize,
-    slots: &mut [f64],
+    slots: &mut [T::Real],
 ) {
+    let of = T::Real::of_f32;
     for (index, source) in program.sources.iter().enumerate() {
         let Source::Input(input) = *source else {
             continue;
@@ -165,10 +168,10 @@ pub(crate) fn load_inputs<T: Lane>(
         let lanes = slot_mut::<T>(slots, index);
         for (i, &x) in values[start..start + n].iter().enumerate() {
             let (du, dv) = match partials {
-                Seed::Constant(du, dv) => (du, dv),
-                Seed::PerFragment(du, dv) => (f64::from(du[start + i]), f64::from(dv[start + i])),
+                Seed::Constant(du, dv) => (of(du), of(dv)),
+                Seed::PerFragment(du, dv) => (of(du[start + i]), of(dv[start + i])),
             };
-            T::set(lanes, i, T::input(f64::from(x), du, dv));
+            T::set(lanes, i, T::input(of(x), du, dv));
         }
     }
 }
@@ -176,7 +179,7 @@ pub(crate) fn load_inputs<T: Lane>(
 /// Partials (∂/∂u, ∂/∂v) of an input.
 #[derive(Clone, Copy)]
 enum Seed<'a> {
-    Constant(f64, f64),
+    Constant(f32, f32),
     PerFragment(&'a [f32], &'a [f32]),
 }
 
@@ -190,13 +193,13 @@ fn point<'a, T: Lane>(du: &'a [f32], dv: &'a [f32]) -> Seed<'a> {
 }
 
 /// Computes the uniform instructions (same for every fragment); once per call.
-pub(crate) fn run_uniform<T: Lane>(program: &Program, slots: &mut [f64]) {
+pub(crate) fn run_uniform<T: Lane>(program: &Program, slots: &mut [T::Real]) {
     run_instrs::<T>(&program.instrs[..program.uniform], slots);
 }
 
 /// Runs the per-fragment instructions.
 #[cfg(test)]
-fn run<T: Lane>(program: &Program, slots: &mut [f64]) {
+fn run<T: Lane>(program: &Program, slots: &mut [T::Real]) {
     run_instrs::<T>(&program.instrs[program.uniform..], slots);
 }
 
@@ -208,8 +211,8 @@ pub(crate) fn run_chunks<T: Lane>(
     program: &Program,
     inputs: &Inputs,
     len: usize,
-    slots: &mut [f64],
-    mut store: impl FnMut(usize, &[f64]) -> usize,
+    slots: &mut [T::Real],
+    mut store: impl FnMut(usize, &[T::Real]) -> usize,
 ) -> usize {
     let per_fragment = &program.instrs[program.uniform..];
     crate::simd::widest(
@@ -227,7 +230,7 @@ pub(crate) fn run_chunks<T: Lane>(
     )
 }
 
-fn run_instrs<T: Lane>(instrs: &[Instr], slots: &mut [f64]) {
+fn run_instrs<T: Lane>(instrs: &[Instr], slots: &mut [T::Real]) {
     crate::simd::widest(
         #[inline(always)]
         || run_instrs_here::<T>(instrs, slots),
@@ -241,7 +244,7 @@ fn run_instrs<T: Lane>(instrs: &[Instr], slots: &mut [f64]) {
 /// lane loop compile to straight SIMD with no remainder loop (2.8% fewer instructions a frame
 /// of the POV-Ray peer scene), at the cost of a part chunk per group.
 #[inline(always)]
-fn run_instrs_here<T: Lane>(instrs: &[Instr], slots: &mut [f64]) {
+fn run_instrs_here<T: Lane>(instrs: &[Instr], slots: &mut [T::Real]) {
     for instr in instrs {
         let (below, rest) = slots.split_at_mut(instr.dst * T::SLOT);
         let out = &mut rest[..T::SLOT];
@@ -260,7 +263,7 @@ macro_rules! lane_loops {
 }
 
 #[inline(always)]
-fn dispatch<T: Lane>(op: Op, out: &mut [f64], a: &[f64], b: &[f64], c: &[f64]) {
+fn dispatch<T: Lane>(op: Op, out: &mut [T::Real], a: &[T::Real], b: &[T::Real], c: &[T::Real]) {
     lane_loops!(op, out, a, b, c;
         Neg, Not, Sin, Cos, Tan, Asin, Acos, Atan, Sqrt, Abs, Sign, Floor, Ceil, Fract, Exp, Log,
         Add, Sub, Mul, Div, Pow, Mod, Min, Max, Atan2, Hypot, Step, Lt, Le, Gt, Ge, Eq, Ne, And,
@@ -269,7 +272,13 @@ fn dispatch<T: Lane>(op: Op, out: &mut [f64], a: &[f64], b: &[f64], c: &[f64]) {
 }
 
 #[inline(always)]
-fn lanes<T: Lane>(out: &mut [f64], a: &[f64], b: &[f64], c: &[f64], f: impl Fn(T, T, T) -> T) {
+fn lanes<T: Lane>(
+    out: &mut [T::Real],
+    a: &[T::Real],
+    b: &[T::Real],
+    c: &[T::Real],
+    f: impl Fn(T, T, T) -> T,
+) {
     // Exact lengths let the compiler drop the bounds checks in the loop.
     let (out, a, b, c) = (
         &mut out[..T::SLOT],
@@ -317,12 +326,12 @@ mod tests {
         let program = program();
         let u = [0.5f32, 1.0, 2.0];
         let mut scratch = Scratch::new();
-        let slots = scratch.slots::<Dual>(4);
-        load_uniforms::<Dual>(&program, |_| 0.0, 0.0, slots);
-        load_inputs::<Dual>(&program, &Inputs::uv(&u, &u, 0.0), 0, 3, slots);
-        run::<Dual>(&program, slots);
+        let slots = scratch.slots::<Dual<f64>>(4);
+        load_uniforms::<Dual<f64>>(&program, |_| 0.0, 0.0, slots);
+        load_inputs::<Dual<f64>>(&program, &Inputs::uv(&u, &u, 0.0), 0, 3, slots);
+        run::<Dual<f64>>(&program, slots);
         for (i, &u) in u.iter().enumerate() {
-            let r = Dual::get(slot::<Dual>(slots, 3), i);
+            let r = Dual::get(slot::<Dual<f64>>(slots, 3), i);
             let u = f64::from(u);
             assert_eq!(r.value, (3.0 * u).sin());
             assert_eq!(r.du, 3.0 * (3.0 * u).cos());
@@ -366,8 +375,9 @@ mod tests {
             run_instrs_here::<T>(&program.instrs, b);
             // The same bits, NaN for NaN (which NaN an operation returns from two is the
             // order the compiler picked for its operands, not a value).
-            for (i, (x, y)) in a.iter().zip(b.iter()).enumerate() {
+            for (i, (&x, &y)) in a.iter().zip(b.iter()).enumerate() {
                 let (slot, lane) = (i / T::SLOT, i % T::SLOT);
+                let (x, y) = (x.wide(), y.wide());
                 assert!(
                     x.to_bits() == y.to_bits() || (x.is_nan() && y.is_nan()),
                     "slot {slot} lane {lane}: {x:e} against {y:e}"
@@ -391,12 +401,15 @@ mod tests {
             z_u: &partials,
             z_v: &partials,
             t: 2.5,
+            precision: Precision::Fastest,
         };
         for (name, source) in super::super::builtin::BUILTINS {
             let pattern = super::super::Pattern::compile(source, name).expect("a shipped pattern");
             let program = &pattern.inner.program;
             both_builds::<f64>(program, &inputs);
-            both_builds::<Dual>(program, &inputs);
+            both_builds::<Dual<f64>>(program, &inputs);
+            both_builds::<f32>(program, &inputs);
+            both_builds::<Dual<f32>>(program, &inputs);
         }
     }
 }

@@ -29,6 +29,7 @@ mod noise;
 mod ops;
 mod output;
 mod parser;
+mod real;
 
 use std::io::Read;
 use std::path::Path;
@@ -41,11 +42,13 @@ pub use error::PatternError;
 pub use eval::{CHUNK, Inputs, Scratch};
 pub use output::BumpSample;
 pub use parser::MAX_DEPTH;
+pub use real::Precision;
 
 use check::Input;
 use compile::Program;
 use dual::Dual;
 use eval::Lane;
+use output::Store;
 
 /// Largest pattern source accepted, in bytes.
 pub const MAX_SOURCE_BYTES: usize = 1 << 20;
@@ -134,7 +137,9 @@ impl Pattern {
     /// Scratch memory already sized for this pattern.
     pub fn scratch(&self) -> Scratch {
         let mut scratch = Scratch::new();
-        scratch.slots::<Dual>(self.inner.program.sources.len());
+        let slots = self.inner.program.sources.len();
+        scratch.slots::<Dual<f32>>(slots);
+        scratch.slots::<Dual<f64>>(slots);
         scratch
     }
 
@@ -162,25 +167,16 @@ impl Pattern {
         scratch: &mut Scratch,
         out: &mut [BumpSample],
     ) -> usize {
+        let program = &self.inner.program;
         match self.output() {
-            OutputKind::Height => self.evaluate::<Dual>(
-                inputs,
-                params,
-                scratch,
-                out.len(),
-                #[inline(always)]
-                |start, slots| {
-                    output::height_gradient(&self.inner.program, slots, &mut out[start..])
-                },
-            ),
-            OutputKind::Slope => self.evaluate::<f64>(
-                inputs,
-                params,
-                scratch,
-                out.len(),
-                #[inline(always)]
-                |start, slots| output::slope(&self.inner.program, slots, &mut out[start..]),
-            ),
+            OutputKind::Height => {
+                let store = output::HeightGradient { program, out };
+                self.evaluate(inputs, params, scratch, store)
+            }
+            OutputKind::Slope => {
+                let store = output::Slope { program, out };
+                self.evaluate(inputs, params, scratch, store)
+            }
             OutputKind::Color => panic!("eval_bump called on a colour pattern"),
         }
     }
@@ -201,14 +197,8 @@ impl Pattern {
             OutputKind::Height,
             "eval_height needs a height pattern"
         );
-        self.evaluate::<f64>(
-            inputs,
-            params,
-            scratch,
-            out.len(),
-            #[inline(always)]
-            |start, slots| output::height(&self.inner.program, slots, &mut out[start..]),
-        )
+        let program = &self.inner.program;
+        self.evaluate(inputs, params, scratch, output::Height { program, out })
     }
 
     /// Linear RGB in 0..1 (clamped); non-finite fragments are black.
@@ -227,25 +217,67 @@ impl Pattern {
             OutputKind::Color,
             "eval_color needs a colour pattern"
         );
-        self.evaluate::<f64>(
+        let program = &self.inner.program;
+        self.evaluate(inputs, params, scratch, output::Color { program, out })
+    }
+
+    /// Runs the program over `store`'s fragments in `f32` where asked and that serves (see
+    /// `Real`), else or where that gave a non-finite result in `f64`; returns the non-finite
+    /// count.
+    fn evaluate<S: Store>(
+        &self,
+        inputs: &Inputs,
+        params: &[f32],
+        scratch: &mut Scratch,
+        mut store: S,
+    ) -> usize {
+        let len = store.len();
+        if inputs.precision == Precision::Fastest && self.inner.program.single_precision() {
+            let flat = self.run::<S::Lanes<f32>>(
+                inputs,
+                params,
+                scratch,
+                len,
+                #[inline(always)]
+                |start, slots| store.store(start, slots),
+            );
+            if flat == 0 {
+                return 0;
+            }
+        }
+        self.run::<S::Lanes<f64>>(
             inputs,
             params,
             scratch,
-            out.len(),
+            len,
             #[inline(always)]
-            |start, slots| output::color(&self.inner.program, slots, &mut out[start..]),
+            |start, slots| store.store(start, slots),
         )
     }
 
-    /// Runs the program chunk by chunk; `store(start, slots)` writes one chunk's outputs and
-    /// returns its non-finite count.
-    fn evaluate<T: Lane>(
+    /// `evaluate` in lanes of `R` alone, with no second try.
+    #[cfg(test)]
+    fn evaluate_in<R: real::Real, S: Store>(
+        &self,
+        inputs: &Inputs,
+        scratch: &mut Scratch,
+        mut store: S,
+    ) -> usize {
+        let len = store.len();
+        self.run::<S::Lanes<R>>(inputs, &[], scratch, len, |start, slots| {
+            store.store(start, slots)
+        })
+    }
+
+    /// Runs the program chunk by chunk in lanes of `T`; `store(start, slots)` writes one
+    /// chunk's outputs and returns its non-finite count.
+    fn run<T: Lane>(
         &self,
         inputs: &Inputs,
         params: &[f32],
         scratch: &mut Scratch,
         len: usize,
-        store: impl FnMut(usize, &[f64]) -> usize,
+        store: impl FnMut(usize, &[T::Real]) -> usize,
     ) -> usize {
         let program = &self.inner.program;
         self.check_lengths(inputs, len, T::DUAL);
@@ -430,6 +462,42 @@ mod tests {
         assert_eq!(
             out.map(|s| (s.height, s.du)),
             [(0.5, -0.25), (0.25, -0.0625), (0.125, -0.015625)]
+        );
+    }
+
+    /// In `f32` both exponentials overflow and their quotient is NaN; the batch is evaluated
+    /// again in `f64`, where it is e.
+    #[test]
+    fn an_overflow_in_single_precision_is_evaluated_again_in_double() {
+        let pattern = Pattern::compile("height = exp(u) / exp(u - 1)", "t").unwrap();
+        assert!(pattern.inner.program.single_precision());
+        let u = [100.0f32, 1.0];
+        let mut out = [BumpSample::default(); 2];
+        let inputs = Inputs::uv(&u, &u, 0.0);
+        let flat = pattern.eval_bump(&inputs, &[], &mut Scratch::new(), &mut out);
+        assert_eq!(flat, 0);
+        for sample in out {
+            assert!(
+                (sample.height - std::f32::consts::E).abs() < 1e-5,
+                "{sample:?}"
+            );
+            assert!(sample.du.abs() < 1e-5, "{sample:?}");
+        }
+    }
+
+    /// `t` is read in `f64`: at 1e7 s an `f32` clock steps by a whole second.
+    #[test]
+    fn patterns_of_time_keep_double_precision() {
+        let pattern = Pattern::compile("height = sin(t) + u", "t").unwrap();
+        assert!(!pattern.inner.program.single_precision());
+        let t = 1e7 + 0.25;
+        let u = [0.0f32];
+        let mut out = [BumpSample::default()];
+        pattern.eval_bump(&Inputs::uv(&u, &u, t), &[], &mut Scratch::new(), &mut out);
+        assert!(
+            (f64::from(out[0].height) - t.sin()).abs() < 1e-6,
+            "{:?}",
+            out[0]
         );
     }
 

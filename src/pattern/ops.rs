@@ -4,6 +4,8 @@
 
 use super::dual::Scalar;
 use super::noise::{noise2, noise3};
+use super::real::Real;
+use num_traits::{Float, One, Zero};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Op {
@@ -56,108 +58,123 @@ pub enum Op {
     Noise3,
 }
 
-fn truth(b: bool) -> f64 {
-    if b { 1.0 } else { 0.0 }
+fn truth<R: Real>(b: bool) -> R {
+    if b { R::one() } else { R::zero() }
+}
+
+/// `x` as the program's float type.
+#[inline(always)]
+fn k<R: Real>(x: f64) -> R {
+    R::of(x)
 }
 
 /// The result of `op` on `a`, `b`, `c` (operands past the op's arity are ignored).
 #[inline(always)]
 pub fn apply<T: Scalar>(op: Op, a: T, b: T, c: T) -> T {
     let x = a.value();
+    let one = T::Real::one();
     match op {
-        Op::Neg => T::chain1(-x, a, || -1.0),
-        Op::Not => T::constant(truth(x == 0.0)),
+        Op::Neg => T::chain1(-x, a, || -one),
+        Op::Not => T::constant(truth(x == T::Real::zero())),
         Op::Sin => T::chain1(x.sin(), a, || x.cos()),
         Op::Cos => T::chain1(x.cos(), a, || -x.sin()),
-        Op::Tan => T::chain1(x.tan(), a, || 1.0 / (x.cos() * x.cos())),
-        Op::Asin => T::chain1(x.asin(), a, || 1.0 / (1.0 - x * x).sqrt()),
-        Op::Acos => T::chain1(x.acos(), a, || -1.0 / (1.0 - x * x).sqrt()),
-        Op::Atan => T::chain1(x.atan(), a, || 1.0 / (1.0 + x * x)),
+        Op::Tan => T::chain1(x.tan(), a, || one / (x.cos() * x.cos())),
+        Op::Asin => T::chain1(x.asin(), a, || one / (one - x * x).sqrt()),
+        Op::Acos => T::chain1(x.acos(), a, || -one / (one - x * x).sqrt()),
+        Op::Atan => T::chain1(x.atan(), a, || one / (one + x * x)),
         Op::Sqrt => {
             let r = x.sqrt();
-            T::chain1(r, a, || 0.5 / r)
+            T::chain1(r, a, || k::<T::Real>(0.5) / r)
         }
         Op::Abs => T::chain1(x.abs(), a, || sign(x)),
         Op::Sign => T::constant(sign(x)),
         Op::Floor => T::constant(floor(x)),
         Op::Ceil => T::constant(x.ceil()),
-        Op::Fract => T::chain1(x - floor(x), a, || 1.0),
+        Op::Fract => T::chain1(x - floor(x), a, || one),
         Op::Exp => {
             let r = x.exp();
             T::chain1(r, a, || r)
         }
-        Op::Log => T::chain1(x.ln(), a, || 1.0 / x),
+        Op::Log => T::chain1(x.ln(), a, || one / x),
         _ => apply_binary(op, a, b, c),
     }
 }
 
 /// `x.floor()` without the library call it compiles to on baseline x86-64 (no SSE4.1
 /// `roundsd`): checks and dimples floor twice per fragment, and the call was 8% of a frame.
-/// Branch-free (selects only, no f64 → i64 conversion, which SSE2 has no packed form of), so
-/// the lane loops of `mod`, `floor` and `fract` vectorise. Exact for every f64: adding and
-/// taking away 2^52 rounds |x| < 2^52 to a whole number, and from 2^52 on every f64 is whole
-/// already; −0, infinities and NaN come back as themselves.
+/// Branch-free (selects only, no float → integer conversion, which SSE2 has no packed `f64`
+/// form of), so the lane loops of `mod`, `floor` and `fract` vectorise. Exact for every value:
+/// adding and taking away `WHOLE` rounds |x| < `WHOLE` to a whole number, and from `WHOLE` on
+/// every value is whole already; −0, infinities and NaN come back as themselves.
 #[inline(always)]
-pub(crate) fn floor(x: f64) -> f64 {
-    const WHOLE: f64 = 4_503_599_627_370_496.0; // 2^52
-    let rounded = ((x.abs() + WHOLE) - WHOLE).copysign(x);
-    let floored = if rounded > x { rounded - 1.0 } else { rounded };
-    if x.abs() < WHOLE { floored } else { x }
+pub(crate) fn floor<R: Real>(x: R) -> R {
+    let rounded = ((x.abs() + R::WHOLE) - R::WHOLE).copysign(x);
+    let floored = if rounded > x {
+        rounded - R::one()
+    } else {
+        rounded
+    };
+    if x.abs() < R::WHOLE { floored } else { x }
 }
 
-fn sign(x: f64) -> f64 {
-    if x > 0.0 {
-        1.0
-    } else if x < 0.0 {
-        -1.0
+fn sign<R: Real>(x: R) -> R {
+    if x > R::zero() {
+        R::one()
+    } else if x < R::zero() {
+        -R::one()
     } else {
-        0.0
+        R::zero()
     }
 }
 
 #[inline(always)]
 fn apply_binary<T: Scalar>(op: Op, a: T, b: T, c: T) -> T {
     let (x, y) = (a.value(), b.value());
+    let (zero, one) = (T::Real::zero(), T::Real::one());
     match op {
         // Arithmetic partials are non-finite only where the value is too, so no 0·∞ guard.
-        Op::Add => T::arith2(x + y, a, b, 1.0, 1.0),
-        Op::Sub => T::arith2(x - y, a, b, 1.0, -1.0),
+        Op::Add => T::arith2(x + y, a, b, one, one),
+        Op::Sub => T::arith2(x - y, a, b, one, -one),
         Op::Mul => T::arith2(x * y, a, b, y, x),
         Op::Div => {
             let q = x / y;
-            T::arith2(q, a, b, 1.0 / y, -q / y)
+            T::arith2(q, a, b, one / y, -q / y)
         }
         Op::Pow => {
             let r = x.powf(y);
             // x^y has no real slope in y for x <= 0; take 0 there.
             T::chain2(r, a, b, || {
-                (y * x.powf(y - 1.0), if x > 0.0 { r * x.ln() } else { 0.0 })
+                (
+                    y * x.powf(y - one),
+                    if x > zero { r * x.ln() } else { zero },
+                )
             })
         }
         // q is finite wherever the value is (y = 0 or x/y out of range gives NaN), so the
         // arithmetic form applies.
         Op::Mod => {
             let q = floor(x / y);
-            T::arith2(x - y * q, a, b, 1.0, -q)
+            T::arith2(x - y * q, a, b, one, -q)
         }
         Op::Min => pick(x <= y, a, b),
         Op::Max => pick(x >= y, a, b),
         Op::Atan2 => T::chain2(y_atan2(x, y), a, b, || {
             let r2 = x * x + y * y;
-            if r2 == 0.0 {
-                (0.0, 0.0)
+            if r2 == zero {
+                (zero, zero)
             } else {
                 (y / r2, -x / r2)
             }
         }),
         Op::Hypot => {
             let h = x.hypot(y);
-            T::chain2(
-                h,
-                a,
-                b,
-                || if h == 0.0 { (0.0, 0.0) } else { (x / h, y / h) },
-            )
+            T::chain2(h, a, b, || {
+                if h == zero {
+                    (zero, zero)
+                } else {
+                    (x / h, y / h)
+                }
+            })
         }
         Op::Step => T::constant(truth(y >= x)),
         Op::Lt => T::constant(truth(x < y)),
@@ -166,18 +183,18 @@ fn apply_binary<T: Scalar>(op: Op, a: T, b: T, c: T) -> T {
         Op::Ge => T::constant(truth(x >= y)),
         Op::Eq => T::constant(truth(x == y)),
         Op::Ne => T::constant(truth(x != y)),
-        Op::And => T::constant(truth(x != 0.0 && y != 0.0)),
-        Op::Or => T::constant(truth(x != 0.0 || y != 0.0)),
+        Op::And => T::constant(truth(x != zero && y != zero)),
+        Op::Or => T::constant(truth(x != zero || y != zero)),
         Op::Noise2 => {
-            let (n, gx, gy) = noise2(x, y);
-            T::chain2(n, a, b, || (gx, gy))
+            let (n, gx, gy) = noise2(x.wide(), y.wide());
+            T::chain2(k(n), a, b, || (k(gx), k(gy)))
         }
         _ => apply_ternary(op, a, b, c),
     }
 }
 
 /// atan2 with the language's argument order `atan2(y, x)`.
-fn y_atan2(y: f64, x: f64) -> f64 {
+fn y_atan2<R: Real>(y: R, x: R) -> R {
     y.atan2(x)
 }
 
@@ -189,8 +206,9 @@ fn pick<T: Scalar>(first: bool, a: T, b: T) -> T {
 #[inline(always)]
 fn apply_ternary<T: Scalar>(op: Op, a: T, b: T, c: T) -> T {
     let (x, y, z) = (a.value(), b.value(), c.value());
+    let (zero, one) = (T::Real::zero(), T::Real::one());
     match op {
-        Op::Select => pick(x != 0.0, b, c),
+        Op::Select => pick(x != zero, b, c),
         Op::Clamp => {
             if x < y {
                 b
@@ -200,21 +218,21 @@ fn apply_ternary<T: Scalar>(op: Op, a: T, b: T, c: T) -> T {
                 a
             }
         }
-        Op::Mix => T::chain3(x + (y - x) * z, a, b, c, || (1.0 - z, z, y - x)),
+        Op::Mix => T::chain3(x + (y - x) * z, a, b, c, || (one - z, z, y - x)),
         Op::Smoothstep => smoothstep(a, b, c),
         Op::Hypot3 => {
             let h = (x * x + y * y + z * z).sqrt();
             T::chain3(h, a, b, c, || {
-                if h == 0.0 {
-                    (0.0, 0.0, 0.0)
+                if h == zero {
+                    (zero, zero, zero)
                 } else {
                     (x / h, y / h, z / h)
                 }
             })
         }
         Op::Noise3 => {
-            let (n, g) = noise3(x, y, z);
-            T::chain3(n, a, b, c, || (g[0], g[1], g[2]))
+            let (n, g) = noise3(x.wide(), y.wide(), z.wide());
+            T::chain3(k(n), a, b, c, || (k(g[0]), k(g[1]), k(g[2])))
         }
         _ => unreachable!("{op:?} is not a ternary op"),
     }
@@ -223,16 +241,23 @@ fn apply_ternary<T: Scalar>(op: Op, a: T, b: T, c: T) -> T {
 /// GLSL `smoothstep(e0, e1, x)`, with its partials in all three arguments.
 fn smoothstep<T: Scalar>(e0: T, e1: T, x: T) -> T {
     let (a, b, v) = (e0.value(), e1.value(), x.value());
+    let (zero, one) = (T::Real::zero(), T::Real::one());
     let width = b - a;
-    let s = ((v - a) / width).clamp(0.0, 1.0);
-    T::chain3(s * s * (3.0 - 2.0 * s), e0, e1, x, || {
-        if s <= 0.0 || s >= 1.0 {
-            return (0.0, 0.0, 0.0);
-        }
-        let slope = 6.0 * s * (1.0 - s);
-        let w2 = width * width;
-        (slope * (v - b) / w2, -slope * (v - a) / w2, slope / width)
-    })
+    let s = ((v - a) / width).clamp(zero, one);
+    T::chain3(
+        s * s * (k::<T::Real>(3.0) - k::<T::Real>(2.0) * s),
+        e0,
+        e1,
+        x,
+        || {
+            if s <= zero || s >= one {
+                return (zero, zero, zero);
+            }
+            let slope = k::<T::Real>(6.0) * s * (one - s);
+            let w2 = width * width;
+            (slope * (v - b) / w2, -slope * (v - a) / w2, slope / width)
+        },
+    )
 }
 
 #[cfg(test)]
@@ -240,11 +265,11 @@ mod tests {
     use super::super::dual::Dual;
     use super::*;
 
-    fn d(x: f64) -> Dual {
+    fn d(x: f64) -> Dual<f64> {
         Dual::input(x, 1.0, 0.0)
     }
 
-    fn c(x: f64) -> Dual {
+    fn c(x: f64) -> Dual<f64> {
         Dual::constant(x)
     }
 
@@ -291,6 +316,41 @@ mod tests {
             assert_eq!(floor(x), x.floor(), "{x}");
         }
         assert!(floor(f64::NAN).is_nan());
+    }
+
+    /// The `f32` form, from its whole-number threshold 2^23 down to the smallest values.
+    #[test]
+    fn fast_floor_matches_the_library_in_single_precision() {
+        let whole = 8_388_608.0f32;
+        let special = [
+            0.0,
+            -0.0,
+            0.5,
+            -0.5,
+            2.5,
+            -2.5,
+            0.49999997,
+            -0.49999997,
+            1e-30,
+            -1e-30,
+            whole - 0.5,
+            -(whole - 0.5),
+            whole - 1.0,
+            whole + 1.0,
+            -(whole + 2.0),
+            3e38,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+        ];
+        let nudged = (0..2000).map(|i| (i as f32 - 1000.0) * 0.37 + 1e-4 * i as f32);
+        for x in special.into_iter().chain(nudged) {
+            let (got, want) = (floor(x), x.floor());
+            assert!(
+                got == want && got.is_sign_negative() == want.is_sign_negative(),
+                "{x}"
+            );
+        }
+        assert!(floor(f32::NAN).is_nan());
     }
 
     #[test]

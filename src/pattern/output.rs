@@ -4,6 +4,7 @@
 use super::compile::Program;
 use super::dual::Dual;
 use super::eval::{CHUNK, Lane, slot};
+use super::real::Real;
 
 /// A bump sample: height B and its gradient (Bu, Bv) = (∂B/∂u, ∂B/∂v). Slope patterns give the
 /// gradient directly and report height 0.
@@ -14,8 +15,22 @@ pub struct BumpSample {
     pub dv: f32,
 }
 
-fn lanes(slots: &[f64], index: usize, n: usize) -> &[f64] {
-    &slot::<f64>(slots, index)[..n]
+/// Takes a chunk's outputs out of the slots into the caller's buffer, in either precision.
+pub(crate) trait Store {
+    /// What the program computes for this output: plain values, or duals for a gradient.
+    type Lanes<R: Real>: Lane<Real = R>;
+
+    /// Fragments to evaluate.
+    fn len(&self) -> usize;
+
+    /// Copies the chunk holding fragments `start..` (at most `CHUNK` of them) out of `slots`;
+    /// returns how many were not finite.
+    fn store<R: Real>(&mut self, start: usize, slots: &[R]) -> usize;
+}
+
+/// The first `n` lanes of output slot `index`.
+fn lanes<R: Real>(slots: &[R], index: usize, n: usize) -> &[R] {
+    &slot::<R>(slots, index)[..n]
 }
 
 /// `values` and true if all are finite, else zeros and false: selects, not branches, so the
@@ -26,60 +41,120 @@ fn finite_or_zero<const N: usize>(values: [f32; N]) -> ([f32; N], bool) {
     (values.map(|v| if finite { v } else { 0.0 }), finite)
 }
 
-#[inline(always)]
-pub fn height_gradient(program: &Program, slots: &[f64], out: &mut [BumpSample]) -> usize {
-    let n = out.len().min(CHUNK);
-    let lanes = slot::<Dual>(slots, program.outputs[0]);
-    let mut bad = 0;
-    for (i, o) in out[..n].iter_mut().enumerate() {
-        let d = Dual::get(lanes, i);
-        let (sample, finite) = finite_or_zero([d.value as f32, d.du as f32, d.dv as f32]);
-        bad += usize::from(!finite);
-        let [height, du, dv] = sample;
-        *o = BumpSample { height, du, dv };
-    }
-    bad
+/// A height pattern's height and gradient.
+pub(crate) struct HeightGradient<'a> {
+    pub program: &'a Program,
+    pub out: &'a mut [BumpSample],
 }
 
-#[inline(always)]
-pub fn slope(program: &Program, slots: &[f64], out: &mut [BumpSample]) -> usize {
-    let n = out.len().min(CHUNK);
-    let bu = lanes(slots, program.outputs[0], n);
-    let bv = lanes(slots, program.outputs[1], n);
-    let mut bad = 0;
-    for ((o, &bu), &bv) in out.iter_mut().zip(bu).zip(bv) {
-        let ([du, dv], finite) = finite_or_zero([bu as f32, bv as f32]);
-        bad += usize::from(!finite);
-        *o = BumpSample {
-            height: 0.0,
-            du,
-            dv,
-        };
+impl Store for HeightGradient<'_> {
+    type Lanes<R: Real> = Dual<R>;
+
+    fn len(&self) -> usize {
+        self.out.len()
     }
-    bad
+
+    #[inline(always)]
+    fn store<R: Real>(&mut self, start: usize, slots: &[R]) -> usize {
+        let out = &mut self.out[start..];
+        let n = out.len().min(CHUNK);
+        let lanes = slot::<Dual<R>>(slots, self.program.outputs[0]);
+        let mut bad = 0;
+        for (i, o) in out[..n].iter_mut().enumerate() {
+            let d = Dual::get(lanes, i);
+            let (sample, finite) = finite_or_zero([d.value, d.du, d.dv].map(R::narrow));
+            bad += usize::from(!finite);
+            let [height, du, dv] = sample;
+            *o = BumpSample { height, du, dv };
+        }
+        bad
+    }
 }
 
-#[inline(always)]
-pub fn height(program: &Program, slots: &[f64], out: &mut [f32]) -> usize {
-    let n = out.len().min(CHUNK);
-    let mut bad = 0;
-    for (o, &h) in out.iter_mut().zip(lanes(slots, program.outputs[0], n)) {
-        let ([h], finite) = finite_or_zero([h as f32]);
-        bad += usize::from(!finite);
-        *o = h;
-    }
-    bad
+/// A slope pattern's gradient, with height 0.
+pub(crate) struct Slope<'a> {
+    pub program: &'a Program,
+    pub out: &'a mut [BumpSample],
 }
 
-#[inline(always)]
-pub fn color(program: &Program, slots: &[f64], out: &mut [[f32; 3]]) -> usize {
-    let n = out.len().min(CHUNK);
-    let [r, g, b] = [0, 1, 2].map(|i| lanes(slots, program.outputs[i], n));
-    let mut bad = 0;
-    for (((o, &r), &g), &b) in out[..n].iter_mut().zip(r).zip(g).zip(b) {
-        let (rgb, finite) = finite_or_zero([r as f32, g as f32, b as f32]);
-        bad += usize::from(!finite);
-        *o = rgb.map(|c| c.clamp(0.0, 1.0));
+impl Store for Slope<'_> {
+    type Lanes<R: Real> = R;
+
+    fn len(&self) -> usize {
+        self.out.len()
     }
-    bad
+
+    #[inline(always)]
+    fn store<R: Real>(&mut self, start: usize, slots: &[R]) -> usize {
+        let out = &mut self.out[start..];
+        let n = out.len().min(CHUNK);
+        let bu = lanes(slots, self.program.outputs[0], n);
+        let bv = lanes(slots, self.program.outputs[1], n);
+        let mut bad = 0;
+        for ((o, &bu), &bv) in out.iter_mut().zip(bu).zip(bv) {
+            let ([du, dv], finite) = finite_or_zero([bu.narrow(), bv.narrow()]);
+            bad += usize::from(!finite);
+            *o = BumpSample {
+                height: 0.0,
+                du,
+                dv,
+            };
+        }
+        bad
+    }
+}
+
+/// A height pattern's height alone.
+pub(crate) struct Height<'a> {
+    pub program: &'a Program,
+    pub out: &'a mut [f32],
+}
+
+impl Store for Height<'_> {
+    type Lanes<R: Real> = R;
+
+    fn len(&self) -> usize {
+        self.out.len()
+    }
+
+    #[inline(always)]
+    fn store<R: Real>(&mut self, start: usize, slots: &[R]) -> usize {
+        let out = &mut self.out[start..];
+        let n = out.len().min(CHUNK);
+        let mut bad = 0;
+        for (o, &h) in out.iter_mut().zip(lanes(slots, self.program.outputs[0], n)) {
+            let ([h], finite) = finite_or_zero([h.narrow()]);
+            bad += usize::from(!finite);
+            *o = h;
+        }
+        bad
+    }
+}
+
+/// A colour pattern's linear RGB, clamped to 0..1.
+pub(crate) struct Color<'a> {
+    pub program: &'a Program,
+    pub out: &'a mut [[f32; 3]],
+}
+
+impl Store for Color<'_> {
+    type Lanes<R: Real> = R;
+
+    fn len(&self) -> usize {
+        self.out.len()
+    }
+
+    #[inline(always)]
+    fn store<R: Real>(&mut self, start: usize, slots: &[R]) -> usize {
+        let out = &mut self.out[start..];
+        let n = out.len().min(CHUNK);
+        let [r, g, b] = [0, 1, 2].map(|i| lanes(slots, self.program.outputs[i], n));
+        let mut bad = 0;
+        for (((o, &r), &g), &b) in out[..n].iter_mut().zip(r).zip(g).zip(b) {
+            let (rgb, finite) = finite_or_zero([r.narrow(), g.narrow(), b.narrow()]);
+            bad += usize::from(!finite);
+            *o = rgb.map(|c| c.clamp(0.0, 1.0));
+        }
+        bad
+    }
 }

@@ -1,7 +1,7 @@
 //! Feeding a batch of fragments to a compiled pattern: its inputs in structure-of-arrays form,
 //! in the pattern's own coordinates (the binding's placement), and its gradient back in (u,v).
 
-use crate::pattern::{BumpSample, Inputs, Scratch};
+use crate::pattern::{BumpSample, Inputs, Precision, Scratch};
 use crate::raster::Fragment;
 use crate::scene::{PatternBinding, Placement};
 use crate::surface::Frame;
@@ -29,6 +29,8 @@ enum PointPartials {
 /// them again each time: 3% of a frame's instructions).
 #[derive(Default)]
 pub struct PatternBatch {
+    /// The lanes the patterns are evaluated in.
+    pub precision: Precision,
     inputs: InputLanes,
     samples: Vec<BumpSample>,
     /// Grows to fit whichever pattern runs; one serves them all.
@@ -55,6 +57,7 @@ impl InputLanes {
         at: Sites,
         partials: PointPartials,
         t: f64,
+        precision: Precision,
     ) -> Inputs<'a> {
         let jacobian = binding.placement.jacobian();
         let n = at.group.len();
@@ -112,6 +115,7 @@ impl InputLanes {
             z_u: read(z_u, lanes == 9),
             z_v: read(z_v, lanes == 9),
             t,
+            precision,
         }
     }
 }
@@ -129,7 +133,7 @@ impl PatternBatch {
     ) -> usize {
         let n = at.group.len();
         at_least(&mut self.samples, n);
-        let inputs = self.inputs.load(binding, at, PointPartials::Needed, time);
+        let inputs = (self.inputs).load(binding, at, PointPartials::Needed, time, self.precision);
         let samples = &mut self.samples[..n];
         let flattened =
             binding
@@ -158,7 +162,7 @@ impl PatternBatch {
         time: f64,
         colors: &mut [Vec3],
     ) -> usize {
-        let inputs = self.inputs.load(binding, at, PointPartials::Unneeded, time);
+        let inputs = (self.inputs).load(binding, at, PointPartials::Unneeded, time, self.precision);
         binding.pattern.eval_color(
             &inputs,
             &binding.params,

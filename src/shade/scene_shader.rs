@@ -8,7 +8,7 @@ use super::lighting::{FrameLights, blinn_phong_many, facing_sign};
 use super::pattern_batch::{PatternBatch, Sites};
 use super::vertex_normals::VertexNormals;
 use super::view_mode::ViewMode;
-use crate::pattern::OutputKind;
+use crate::pattern::{OutputKind, Precision};
 use crate::raster::{Camera, Fragment, FragmentShader, FrameObject};
 use crate::scene::{BumpSource, Material, Scene, Texturing};
 use crate::surface::{Frame, Surface};
@@ -26,6 +26,7 @@ pub struct LitShader {
     pub mode: ViewMode,
     pub normal_form: NormalForm,
     pub gradient: GradientMethod,
+    pub pattern_precision: Precision,
     /// Per object of the prepared scene: shade with the tessellation's interpolated position and
     /// normal instead of the exact surface frame (`None`: the exact frame).
     pub vertex_normals: Option<Arc<[VertexNormals]>>,
@@ -41,6 +42,7 @@ impl LitShader {
             mode: ViewMode::Shaded,
             normal_form: NormalForm::Blinn,
             gradient: GradientMethod::Exact,
+            pattern_precision: Precision::Fastest,
             vertex_normals: None,
             depth_scale: (camera.target - camera.eye).length() as f32,
         }
@@ -91,7 +93,9 @@ impl FragmentShader for LitShader {
     type Scratch = ShadeScratch;
 
     fn scratch(&self) -> ShadeScratch {
-        ShadeScratch::default()
+        let mut scratch = ShadeScratch::default();
+        scratch.patterns.precision = self.pattern_precision;
+        scratch
     }
 
     /// Only image lookups read the derivatives: a colour image through a filter that picks a

@@ -50,6 +50,7 @@ impl Batch {
             z_u: &p[7],
             z_v: &p[8],
             t: self.t,
+            ..Inputs::default()
         }
     }
 }
