@@ -28,7 +28,7 @@ pub use pipeline::{
     FrameStats, Interpolation, PreparedObject, PreparedScene, RenderTarget, Srgb8Strips,
     frame_objects, render, render_into, render_passes_into, render_with, screen_triangles,
 };
-pub use scan::{PixelRect, scan_triangle};
-pub use setup::{SUBPIXEL_BITS, ScreenTriangle, TrianglePlanes, Viewport};
+pub use scan::{PixelRect, scan_shifted, scan_triangle};
+pub use setup::{SUBPIXEL_BITS, SampleShift, ScreenTriangle, ShiftSpan, TrianglePlanes, Viewport};
 pub use strips::STRIP_ROWS;
 pub use window::ImageWindow;

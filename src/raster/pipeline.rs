@@ -2,8 +2,8 @@ use super::camera::Camera;
 use super::clip::{ClipVertex, clip_triangle, needs_no_clipping};
 use super::fragment::{FragmentShader, FrameObject};
 use super::framebuffer::{Blend, Framebuffer};
-use super::setup::{ScreenTriangle, TrianglePlanes, Viewport};
-use super::strips::{Pass, STRIP_ROWS, StripBuffers, StripJob};
+use super::setup::{ScreenTriangle, ShiftSpan, TrianglePlanes, Viewport};
+use super::strips::{Pass, STRIP_ROWS, SetUp, StripBuffers, StripJob};
 use super::tile::TileBuffers;
 use super::window::ImageWindow;
 use crate::scene::{Material, Scene};
@@ -153,11 +153,23 @@ pub fn frame_objects<'a>(prepared: &'a PreparedScene, camera: &Camera) -> Vec<Fr
 
 /// Transforms, culls, clips and sets up every triangle of the scene, in submission order.
 pub fn screen_triangles(objects: &[FrameObject], target: &RenderTarget) -> Vec<ScreenTriangle> {
+    shifted_screen_triangles(objects, target, &ShiftSpan::NONE)
+}
+
+/// `screen_triangles` for passes whose sample points are shifted within `span` (see
+/// `ScreenTriangle::new`).
+pub(super) fn shifted_screen_triangles(
+    objects: &[FrameObject],
+    target: &RenderTarget,
+    span: &ShiftSpan,
+) -> Vec<ScreenTriangle> {
     let view_projection = target.view_projection();
     let per_object = objects
         .iter()
         .enumerate()
-        .map(|(index, object)| object_triangles(object, index as u32, target, view_projection))
+        .map(|(index, object)| {
+            object_triangles(object, index as u32, target, view_projection, span)
+        })
         .collect();
     join_in_order(per_object)
 }
@@ -199,9 +211,10 @@ pub fn render_into(
 /// Renders several passes into `framebuffer` as `render_into` would one after another, with the
 /// same result to the bit, but tile by tile: every pass of a tile before the next tile, so the
 /// tile's pixels (which supersampling passes add into) and the texels its fragments read stay
-/// in cache from pass to pass. The targets share the viewport, camera and mask; they differ in
-/// where they sample (the window's offset), footprint, blend and depth writes. Only the last
-/// pass's `finished_strips` is told of the strips, once every pass has finished them.
+/// in cache from pass to pass. The targets share the viewport, camera, mask, window position and
+/// interpolation, so the triangles are set up once for them all; they differ in where they
+/// sample (the window's offset), footprint, blend and depth writes. Only the last pass's
+/// `finished_strips` is told of the strips, once every pass has finished them.
 pub fn render_passes_into(
     prepared: &PreparedScene,
     targets: &[RenderTarget],
@@ -215,10 +228,13 @@ pub fn render_passes_into(
         t.viewport == last.viewport
             && std::ptr::eq(t.camera, last.camera)
             && t.mask.map(<[bool]>::as_ptr) == last.mask.map(<[bool]>::as_ptr)
+            && (t.window.full, t.window.x0, t.window.y0)
+                == (last.window.full, last.window.x0, last.window.y0)
+            && t.interpolation == last.interpolation
     };
     assert!(
         targets.iter().all(shared),
-        "passes rendered together share viewport, camera and mask"
+        "passes rendered together share viewport, camera, mask, window and interpolation"
     );
     let viewport = last.viewport;
     let objects = frame_objects(prepared, last.camera);
@@ -226,9 +242,12 @@ pub fn render_passes_into(
         .iter()
         .map(|o| shader.reads_derivatives(o))
         .collect();
+    let Some(set_up) = SetUp::new(&objects, targets) else {
+        return FrameStats::default();
+    };
     let passes: Vec<Pass<_>> = targets
         .iter()
-        .map(|target| Pass::new(&objects, target, shader, &derivatives))
+        .map(|target| Pass::new(&objects, &set_up, target, shader, &derivatives))
         .collect();
     let tiles_x = passes[0].bins.tiles_x;
     let strips_y = viewport.height.div_ceil(STRIP_ROWS);
@@ -297,6 +316,7 @@ fn object_triangles(
     index: u32,
     target: &RenderTarget,
     view_projection: Mat4,
+    span: &ShiftSpan,
 ) -> Vec<ScreenTriangle> {
     let mesh = &object.prepared.mesh;
     let setup = ObjectSetup {
@@ -311,6 +331,7 @@ fn object_triangles(
         viewport: target.viewport,
         interpolation: target.interpolation,
         guard: target.viewport.guard_band(),
+        span: *span,
     };
     // Each piece pushes straight into its own list and the lists are joined in order: a
     // flattening iterator moved every clipped polygon (over 200 bytes) several times.
@@ -342,6 +363,8 @@ struct ObjectSetup<'a> {
     viewport: Viewport,
     interpolation: Interpolation,
     guard: f32,
+    /// See `ScreenTriangle::new`.
+    span: ShiftSpan,
 }
 
 impl ObjectSetup<'_> {
@@ -365,8 +388,9 @@ impl ObjectSetup<'_> {
         let Some(planes) = TrianglePlanes::new(&vertices, self.viewport, self.interpolation) else {
             return;
         };
-        let screen =
-            |v: [ClipVertex; 3]| ScreenTriangle::new(v, self.viewport, &planes, self.index);
+        let screen = |v: [ClipVertex; 3]| {
+            ScreenTriangle::new(v, self.viewport, &planes, self.index, &self.span)
+        };
         if needs_no_clipping(&vertices, self.guard) {
             out.extend(screen(vertices));
         } else if let Some(polygon) = clip_triangle(vertices, self.guard) {

@@ -1,4 +1,4 @@
-use super::setup::ScreenTriangle;
+use super::setup::{SampleShift, ScreenTriangle};
 
 /// An inclusive rectangle of pixels.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -57,9 +57,15 @@ impl EdgeWalk {
 }
 
 /// Calls `row` for every row of the triangle's bounds within `clip`, top to bottom, with the
-/// fixed-point edge functions stepped incrementally from row to row.
+/// fixed-point edge functions at the pixels' sample points moved by `shift` (the triangle set
+/// up with a margin for it), stepped incrementally from row to row.
 #[inline(always)]
-pub fn triangle_rows(triangle: &ScreenTriangle, clip: &PixelRect, mut row: impl FnMut(RowSpan)) {
+pub fn triangle_rows(
+    triangle: &ScreenTriangle,
+    clip: &PixelRect,
+    shift: &SampleShift,
+    mut row: impl FnMut(RowSpan),
+) {
     let Some(rect) = triangle.bounds.intersect(clip) else {
         return;
     };
@@ -69,7 +75,7 @@ pub fn triangle_rows(triangle: &ScreenTriangle, clip: &PixelRect, mut row: impl 
     );
     let mut at = triangle
         .edges
-        .map(|e| e.at_origin + e.step_x * skip_x + e.step_y * skip_y);
+        .map(|e| e.at_origin + shift.edge_change(&e) + e.step_x * skip_x + e.step_y * skip_y);
     let steps = triangle.edges.map(|e| e.step_x);
     for y in rect.y0..=rect.y1 {
         row(RowSpan {
@@ -86,12 +92,20 @@ pub fn triangle_rows(triangle: &ScreenTriangle, clip: &PixelRect, mut row: impl 
 
 /// Calls `covered(x, y)` for every pixel of `clip` whose centre the triangle covers.
 #[inline]
-pub fn scan_triangle(
+pub fn scan_triangle(triangle: &ScreenTriangle, clip: &PixelRect, covered: impl FnMut(u32, u32)) {
+    scan_shifted(triangle, clip, &SampleShift::NONE, covered);
+}
+
+/// Calls `covered(x, y)` for every pixel of `clip` whose sample point, moved by `shift` from its
+/// centre, the triangle covers (set up with a margin for the shift).
+#[inline]
+pub fn scan_shifted(
     triangle: &ScreenTriangle,
     clip: &PixelRect,
+    shift: &SampleShift,
     mut covered: impl FnMut(u32, u32),
 ) {
-    triangle_rows(triangle, clip, |row| {
+    triangle_rows(triangle, clip, shift, |row| {
         let mut edges = row.edges;
         for x in row.x0..=row.x1 {
             if edges.inside() {

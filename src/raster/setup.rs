@@ -39,6 +39,73 @@ pub struct Edge {
     pub at_origin: i64,
 }
 
+/// Where a pass samples in each pixel, as the rasteriser applies it: the same set-up triangles
+/// serve every supersampling pass, each pass moving its sample points by `pixels` from the
+/// pixel centres. In whole sub-pixel steps, so an edge function moves by an exact integer and
+/// the attribute planes' sample positions stay exact in f32.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct SampleShift {
+    /// The shift in sub-pixel steps (1/256 of a pixel).
+    steps: (i64, i64),
+    /// The same shift in pixels (exact).
+    pub pixels: Vec2,
+}
+
+impl SampleShift {
+    pub const NONE: SampleShift = SampleShift {
+        steps: (0, 0),
+        pixels: Vec2::ZERO,
+    };
+
+    /// The shift nearest `offset` pixels, at most a pixel each way.
+    pub fn new(offset: Vec2) -> SampleShift {
+        let step = |o: f32| (o.clamp(-1.0, 1.0) * ONE as f32).round() as i64;
+        let steps = (step(offset.x), step(offset.y));
+        SampleShift {
+            steps,
+            pixels: Vec2::new(steps.0 as f32, steps.1 as f32) / ONE as f32,
+        }
+    }
+
+    /// `edge` at a pixel's shifted sample point, less its value at the pixel centre: exact, as
+    /// the steps per pixel are whole multiples of the sub-pixel scale.
+    #[inline(always)]
+    pub fn edge_change(&self, edge: &Edge) -> i64 {
+        (edge.step_x / ONE) * self.steps.0 + (edge.step_y / ONE) * self.steps.1
+    }
+}
+
+/// The least and most shift, along each axis, of the passes that share set-up triangles: a
+/// triangle's bounds hold the pixels whose sample point, under any of the shifts, may fall in
+/// its box (with none, the pixels whose centres do).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ShiftSpan {
+    least: (i64, i64),
+    most: (i64, i64),
+}
+
+impl ShiftSpan {
+    pub const NONE: ShiftSpan = ShiftSpan {
+        least: (0, 0),
+        most: (0, 0),
+    };
+
+    /// The span of `shifts` (none: `NONE`).
+    pub fn of(shifts: impl IntoIterator<Item = SampleShift>) -> ShiftSpan {
+        let mut shifts = shifts.into_iter().map(|s| s.steps);
+        let Some(first) = shifts.next() else {
+            return ShiftSpan::NONE;
+        };
+        let (least, most) = shifts.fold((first, first), |(least, most), s| {
+            (
+                (least.0.min(s.0), least.1.min(s.1)),
+                (most.0.max(s.0), most.1.max(s.1)),
+            )
+        });
+        ShiftSpan { least, most }
+    }
+}
+
 /// An attribute a(x, y) = at_origin + dx·(x − origin.x) + dy·(y − origin.y), affine in screen space.
 /// Only 1/w, u/w and v/w are affine in screen space; u and v are recovered per pixel by division.
 #[derive(Clone, Copy, Debug)]
@@ -61,9 +128,9 @@ pub struct ScreenTriangle {
     /// Pixels whose centres may be covered (inclusive ranges), already inside the viewport.
     pub bounds: PixelRect,
     pub edges: [Edge; 3],
-    /// Pixel position that attribute planes are relative to: the bounds' top-left corner, inside
-    /// the viewport, so per-pixel offsets stay small and exact in f32 even when the triangle's
-    /// vertices lie far out in the guard band.
+    /// Pixel position that attribute planes are relative to: at most a pixel from the bounds'
+    /// top-left corner (`attribute_origin`), inside the viewport, so per-pixel offsets stay
+    /// small and exact in f32 even when the triangle's vertices lie far out in the guard band.
     pub origin: Vec2,
     pub inv_w: AttributePlane,
     pub u_over_w: AttributePlane,
@@ -138,13 +205,15 @@ fn inverse_rows(h: [DVec3; 3]) -> Option<[DVec3; 3]> {
 
 impl ScreenTriangle {
     /// Snaps a (clipped) triangle to fixed point and sets up its edge functions; its attributes
-    /// come from the planes of the scene triangle it belongs to. `None` for triangles with zero
-    /// snapped area or no pixel centre in the viewport.
+    /// come from the planes of the scene triangle it belongs to. Its bounds hold the pixels
+    /// whose sample point may fall in its box under a shift of `span`. `None` for triangles
+    /// with zero snapped area or no such pixel in the viewport.
     pub fn new(
         vertices: [ClipVertex; 3],
         viewport: Viewport,
         planes: &TrianglePlanes,
         object: u32,
+        span: &ShiftSpan,
     ) -> Option<ScreenTriangle> {
         let mut snapped = [(0i64, 0i64); 3];
         for (i, v) in vertices.iter().enumerate() {
@@ -163,8 +232,8 @@ impl ScreenTriangle {
         if area < 0 {
             snapped.swap(1, 2);
         }
-        let bounds = pixel_bounds(&snapped, viewport)?;
-        let origin = Vec2::new(bounds.x0 as f32, bounds.y0 as f32);
+        let bounds = pixel_bounds(&snapped, viewport, span)?;
+        let origin = attribute_origin(&snapped, viewport);
         Some(ScreenTriangle {
             bounds,
             edges: [0, 1, 2].map(|i| edge(snapped[(i + 1) % 3], snapped[(i + 2) % 3], &bounds)),
@@ -203,23 +272,52 @@ fn edge(a: (i64, i64), b: (i64, i64), bounds: &PixelRect) -> Edge {
     }
 }
 
-fn pixel_bounds(snapped: &[(i64, i64); 3], viewport: Viewport) -> Option<PixelRect> {
+/// The snapped triangle's box: least and greatest x and y.
+fn snapped_box(snapped: &[(i64, i64); 3]) -> ((i64, i64), (i64, i64)) {
     let (mut min, mut max) = (snapped[0], snapped[0]);
     for &(x, y) in &snapped[1..] {
         min = (min.0.min(x), min.1.min(y));
         max = (max.0.max(x), max.1.max(y));
     }
-    // Pixel centres at k·ONE + HALF within [min, max].
-    let first = |lo: i64| (lo - HALF).div_euclid(ONE) + i64::from((lo - HALF).rem_euclid(ONE) != 0);
-    let last = |hi: i64| (hi - HALF).div_euclid(ONE);
-    let x0 = first(min.0).max(0);
-    let y0 = first(min.1).max(0);
-    let x1 = last(max.0).min(viewport.width as i64 - 1);
-    let y1 = last(max.1).min(viewport.height as i64 - 1);
+    (min, max)
+}
+
+/// The first pixel whose centre is at or past `lo` (sub-pixel units), along an axis.
+fn first_centre(lo: i64) -> i64 {
+    (lo - HALF).div_euclid(ONE) + i64::from((lo - HALF).rem_euclid(ONE) != 0)
+}
+
+/// The last pixel whose centre is at or before `hi` (sub-pixel units), along an axis.
+fn last_centre(hi: i64) -> i64 {
+    (hi - HALF).div_euclid(ONE)
+}
+
+/// The pixels of the viewport whose sample point, under a shift of `span`, may fall in the box
+/// of `snapped`: whose centres lie in the box moved back by the shifts.
+fn pixel_bounds(
+    snapped: &[(i64, i64); 3],
+    viewport: Viewport,
+    span: &ShiftSpan,
+) -> Option<PixelRect> {
+    let (min, max) = snapped_box(snapped);
+    let x0 = first_centre(min.0 - span.most.0).max(0);
+    let y0 = first_centre(min.1 - span.most.1).max(0);
+    let x1 = last_centre(max.0 - span.least.0).min(viewport.width as i64 - 1);
+    let y1 = last_centre(max.1 - span.least.1).min(viewport.height as i64 - 1);
     (x0 <= x1 && y0 <= y1).then_some(PixelRect {
         x0: x0 as u32,
         y0: y0 as u32,
         x1: x1 as u32,
         y1: y1 as u32,
     })
+}
+
+/// Where the attribute planes are taken from: the first pixel whose centre lies in the
+/// triangle's box, moved into the viewport. The same whatever the passes' shifts, so passes
+/// set up together or one by one interpolate the same bits.
+fn attribute_origin(snapped: &[(i64, i64); 3], viewport: Viewport) -> Vec2 {
+    let (min, _) = snapped_box(snapped);
+    let x = first_centre(min.0).clamp(0, viewport.width.max(1) as i64 - 1);
+    let y = first_centre(min.1).clamp(0, viewport.height.max(1) as i64 - 1);
+    Vec2::new(x as f32, y as f32)
 }

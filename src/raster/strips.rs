@@ -4,9 +4,9 @@
 use super::bin::{TILE_SIZE, TileBins};
 use super::fragment::{FragmentShader, FrameObject};
 use super::framebuffer::{Blend, encode_srgb8};
-use super::pipeline::{Interpolation, RenderTarget, screen_triangles};
+use super::pipeline::{Interpolation, RenderTarget, shifted_screen_triangles};
 use super::scan::PixelRect;
-use super::setup::{ScreenTriangle, Viewport};
+use super::setup::{SampleShift, ScreenTriangle, ShiftSpan, Viewport};
 use super::tile::{StripOutput, TileBuffers, TileFrame};
 use glam::Vec3;
 
@@ -111,11 +111,30 @@ fn encode_tile(color: &[Vec3], width: u32, rect: &PixelRect, bytes: &mut [u8]) {
     }
 }
 
-/// One pass of `render_passes_into`: its target's triangles, set up and binned.
-pub(super) struct Pass<'a, S> {
-    pub target: &'a RenderTarget<'a>,
+/// The triangles of `render_passes_into` set up once and binned, shared by all its passes, which
+/// differ only in where they sample in each pixel: each triangle's bounds hold the pixels
+/// whose sample point falls in its box in any of the passes.
+pub(super) struct SetUp {
     pub triangles: Vec<ScreenTriangle>,
     pub bins: TileBins,
+}
+
+impl SetUp {
+    /// For passes that share everything but their sample shifts (see `render_passes_into`).
+    pub fn new(objects: &[FrameObject], targets: &[RenderTarget]) -> Option<SetUp> {
+        let last = targets.last()?;
+        let span = ShiftSpan::of(targets.iter().map(|t| SampleShift::new(t.window.offset)));
+        let triangles = shifted_screen_triangles(objects, last, &span);
+        let bins = TileBins::new(last.viewport, &triangles);
+        Some(SetUp { triangles, bins })
+    }
+}
+
+/// One pass of `render_passes_into`: its target and the triangles all its passes share.
+pub(super) struct Pass<'a, S> {
+    pub target: &'a RenderTarget<'a>,
+    pub triangles: &'a [ScreenTriangle],
+    pub bins: &'a TileBins,
     frame: TileFrame<'a, S>,
     /// Whether a tile's known background (colour and depth) can be relied on and recorded: only
     /// when this pass writes every pixel, colour and depth, and replaces what was there.
@@ -125,22 +144,22 @@ pub(super) struct Pass<'a, S> {
 impl<'a, S: FragmentShader> Pass<'a, S> {
     pub fn new(
         objects: &'a [FrameObject<'a>],
+        set_up: &'a SetUp,
         target: &'a RenderTarget<'a>,
         shader: &'a S,
         derivatives: &'a [bool],
     ) -> Pass<'a, S> {
-        let triangles = screen_triangles(objects, target);
-        let bins = TileBins::new(target.viewport, &triangles);
         Pass {
+            triangles: &set_up.triangles,
+            bins: &set_up.bins,
             target,
-            triangles,
-            bins,
             frame: TileFrame {
                 objects,
                 shader,
                 perspective: target.interpolation == Interpolation::PerspectiveCorrect,
                 footprint: target.footprint,
                 derivatives,
+                shift: SampleShift::new(target.window.offset),
             },
             whole_and_replacing: target.mask.is_none()
                 && target.blend == Blend::Replace
@@ -167,8 +186,8 @@ impl<'a, S: FragmentShader> Pass<'a, S> {
             *known_background = self.whole_and_replacing;
             return (0, 0);
         }
-        tile.resolve_visibility(&self.triangles, bin, rect);
-        let (shaded, flattened) = tile.shade(&self.triangles, &self.frame, scratch, rect, out);
+        tile.resolve_visibility(self.triangles, bin, rect, &self.frame.shift);
+        let (shaded, flattened) = tile.shade(self.triangles, &self.frame, scratch, rect, out);
         *known_background = shaded == 0 && self.whole_and_replacing;
         (shaded, flattened)
     }

@@ -6,7 +6,7 @@ use super::fragment::{Fragment, FragmentShader, FrameObject};
 use super::framebuffer::{Blend, encode_srgb8, linear_to_srgb8};
 use super::row_runs::{PixelKind, RowRuns};
 use super::scan::{PixelRect, RowSpan, triangle_rows};
-use super::setup::{AttributePlane, ScreenTriangle};
+use super::setup::{AttributePlane, SampleShift, ScreenTriangle};
 use glam::{Vec2, Vec3};
 use std::ops::Range;
 
@@ -197,6 +197,7 @@ impl TileBuffers {
         triangles: &[ScreenTriangle],
         bin: &[u32],
         rect: &PixelRect,
+        shift: &SampleShift,
     ) {
         // A triangle is recorded only where it wins, which needs 1/w > 0: the triangle slots
         // are read only where `inv_w` says one was drawn, so they need no clearing. Only the
@@ -209,14 +210,14 @@ impl TileBuffers {
             || {
                 for &index in bin {
                     let t = &triangles[index as usize];
-                    triangle_rows(t, rect, |row| {
+                    triangle_rows(t, rect, shift, |row| {
                         let first = ((row.y - rect.y0) * TILE_SIZE + (row.x0 - rect.x0)) as usize;
                         let slots = first..=first + (row.x1 - row.x0) as usize;
                         let nearest = RowNearest {
                             inv_w: &mut self.inv_w[slots.clone()],
                             triangle: &mut self.triangle[slots],
                         };
-                        nearest.cover(t, &row, index);
+                        nearest.cover(t, &row, index, shift);
                     });
                 }
             },
@@ -286,13 +287,14 @@ impl RowNearest<'_> {
     /// (so the first of two equal depths stays: deterministic). Branch-free, so it vectorises:
     /// rows of small triangles are a few pixels, and a per-pixel branch mispredicted at edges.
     #[inline(always)]
-    fn cover(self, t: &ScreenTriangle, row: &RowSpan, index: u32) {
-        let offset_y = (row.y as f32 + 0.5) - t.origin.y;
+    fn cover(self, t: &ScreenTriangle, row: &RowSpan, index: u32, shift: &SampleShift) {
+        let origin = sample_origin(t.origin, shift);
+        let offset_y = (row.y as f32 + 0.5) - origin.y;
         let mut edges = row.edges;
         let slots = self.inv_w.iter_mut().zip(self.triangle);
         for (x, (nearest_inv_w, nearest)) in (row.x0 as i32..).zip(slots) {
             // As `pixel_offset` and `AttributePlane::at`, term by term: the same bits.
-            let offset_x = (x as f32 + 0.5) - t.origin.x;
+            let offset_x = (x as f32 + 0.5) - origin.x;
             let inv_w = t.inv_w.at_origin + t.inv_w.dx * offset_x + t.inv_w.dy * offset_y;
             let nearer = edges.inside() & (inv_w > *nearest_inv_w);
             *nearest_inv_w = if nearer { inv_w } else { *nearest_inv_w };
@@ -312,6 +314,8 @@ pub struct TileFrame<'a, S> {
     /// By object: whether the shader reads the (u,v) derivatives of its fragments
     /// (`FragmentShader::reads_derivatives`).
     pub derivatives: &'a [bool],
+    /// Where this pass samples in each pixel.
+    pub shift: SampleShift,
 }
 
 /// Makes the fragments of one triangle along one row: what is the same for all of them
@@ -344,7 +348,7 @@ impl FragmentMaker {
         FragmentMaker {
             t: TrianglePlanes {
                 object: t.object,
-                origin: t.origin,
+                origin: sample_origin(t.origin, &frame.shift),
                 inv_w: t.inv_w,
                 u_over_w: t.u_over_w,
                 v_over_w: t.v_over_w,
@@ -398,6 +402,14 @@ impl FragmentMaker {
     }
 }
 
+/// A triangle's attribute origin relative to the shifted sample points (exact in f32: both
+/// are multiples of 1/256 under 2^14), so that `pixel_offset` from it gives the sample point's
+/// offset from the true origin.
+#[inline(always)]
+fn sample_origin(origin: Vec2, shift: &SampleShift) -> Vec2 {
+    origin - shift.pixels
+}
+
 /// The pixel centre relative to a triangle's attribute origin.
 #[inline]
 fn pixel_offset(origin: Vec2, x: u32, y: u32) -> Vec2 {
@@ -419,6 +431,7 @@ fn same_triangle(slots: &[u32]) -> impl Iterator<Item = (u32, Range<usize>)> + '
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::raster::setup::ShiftSpan;
 
     #[test]
     fn a_row_splits_into_runs_of_one_triangle() {
@@ -465,7 +478,7 @@ mod tests {
             uv: glam::Vec2::ZERO,
         });
         let planes = TrianglePlanes::new(&vertices, VIEWPORT, Interpolation::PerspectiveCorrect)?;
-        ScreenTriangle::new(vertices, VIEWPORT, &planes, 0)
+        ScreenTriangle::new(vertices, VIEWPORT, &planes, 0, &ShiftSpan::NONE)
     }
 
     /// The visibility rule pixel by pixel: a covering triangle wins where it is strictly nearer.
@@ -519,7 +532,7 @@ mod tests {
                 y1: 89,
             },
         ] {
-            tile.resolve_visibility(&triangles, &bin, &rect);
+            tile.resolve_visibility(&triangles, &bin, &rect, &SampleShift::NONE);
             // The rect's rows are all that is read (and cleared).
             let slots = (rect.y1 - rect.y0 + 1) as usize * TILE_SIZE as usize;
             let expected = &nearest_by_pixel(&triangles, &rect)[..slots];

@@ -6,8 +6,9 @@ use super::setup::Viewport;
 use glam::{Mat4, Vec2, Vec4};
 
 /// A `viewport`-sized window at (`x0`, `y0`) of a `full` image, sampled at `offset` pixels from
-/// each pixel's centre. f32 suffices: offsets are fractions of a pixel and positions stay under
-/// 2^24.
+/// each pixel's centre. The projection places the window; the rasteriser moves the samples by
+/// the offset (`SampleShift`), so shifted passes share their set-up triangles. f32 suffices:
+/// positions stay under 2^24.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ImageWindow {
     pub full: Viewport,
@@ -27,14 +28,12 @@ impl ImageWindow {
         }
     }
 
-    /// Maps the full image's clip space to the window's: window pixel (i, j) sees the point of
-    /// the full image at (x0 + i + ½ + offset.x, y0 + j + ½ + offset.y). The identity for the
-    /// whole image sampled at centres.
+    /// Maps the full image's clip space to the window's: window pixel (i, j) has its centre at
+    /// the full image's (x0 + i + ½, y0 + j + ½). The identity for the whole image.
     pub fn clip_transform(&self, window: Viewport) -> Mat4 {
         let (w, h) = (window.width.max(1) as f32, window.height.max(1) as f32);
         let (full_w, full_h) = (self.full.width as f32, self.full.height as f32);
-        let x = self.x0 as f32 + self.offset.x;
-        let y = self.y0 as f32 + self.offset.y;
+        let (x, y) = (self.x0 as f32, self.y0 as f32);
         let scale = Vec2::new(full_w / w, full_h / h);
         let translate = Vec2::new((full_w - 2.0 * x) / w - 1.0, 1.0 - full_h / h + 2.0 * y / h);
         Mat4::from_cols(
@@ -90,7 +89,8 @@ mod tests {
         let ndc = Vec2::new(2.0 * x / 1000.0 - 1.0, 1.0 - 2.0 * y / 600.0);
         let clip = Vec4::new(ndc.x * 3.0, ndc.y * 3.0, 1.0, 3.0);
         let seen = pixel_of(m * clip, band);
-        let expected = Vec2::new(x - 500.0 - 0.25, y - 128.0 + 0.375);
+        // The offset is the rasteriser's to apply, not the projection's.
+        let expected = Vec2::new(x - 500.0, y - 128.0);
         assert!(
             (seen - expected).abs().max_element() < 1e-3,
             "{seen} vs {expected}"

@@ -2,6 +2,7 @@
 //! every power-of-two grid of the pixel when the count is a power of two, and well spread for
 //! any count), shaped by the resolve filter.
 
+use crate::raster::SUBPIXEL_BITS;
 use glam::Vec2;
 
 /// How samples are combined into a pixel, in linear light.
@@ -54,18 +55,22 @@ pub const MAX_SAMPLES: u32 = 1024;
 
 impl Supersampling {
     /// Sample offsets from the pixel centre, in pixels. They are importance-sampled from the
-    /// filter, so every sample weighs the same. One sample sits at the centre.
+    /// filter, so every sample weighs the same. One sample sits at the centre. They are whole
+    /// sub-pixel steps, where the rasteriser places samples exactly (`SampleShift`), so the
+    /// reference casts its rays through the very same points.
     pub fn offsets(&self) -> Vec<Vec2> {
         if self.samples <= 1 {
             return vec![Vec2::ZERO];
         }
+        let step = (1u32 << SUBPIXEL_BITS) as f32;
         (0..self.samples)
             .map(|i| {
                 let uniform = hammersley(i, self.samples);
-                match self.filter {
+                let offset = match self.filter {
                     ResolveFilter::Box => uniform - Vec2::splat(0.5),
                     ResolveFilter::Tent => Vec2::new(tent(uniform.x), tent(uniform.y)),
-                }
+                };
+                (offset * step).round() / step
             })
             .collect()
     }

@@ -3,8 +3,8 @@
 
 use bumpwork::raster::{
     Camera, ClipVertex, Fragment, FrameObject, Framebuffer, Interpolation, PerFragment, PixelRect,
-    PreparedScene, RenderTarget, ScreenTriangle, TrianglePlanes, Viewport, render_with,
-    scan_triangle,
+    PreparedScene, RenderTarget, SampleShift, ScreenTriangle, ShiftSpan, TrianglePlanes, Viewport,
+    render_with, scan_shifted,
 };
 use bumpwork::scene::Scene;
 use bumpwork::surface::Tessellation;
@@ -21,13 +21,31 @@ pub fn at_pixel(viewport: Viewport, x: f64, y: f64) -> ClipVertex {
 }
 
 pub fn screen_triangle(viewport: Viewport, corners: [(f64, f64); 3]) -> Option<ScreenTriangle> {
+    shifted_screen_triangle(viewport, corners, &ShiftSpan::NONE)
+}
+
+/// A screen triangle set up for passes whose sample points are shifted within `span`.
+pub fn shifted_screen_triangle(
+    viewport: Viewport,
+    corners: [(f64, f64); 3],
+    span: &ShiftSpan,
+) -> Option<ScreenTriangle> {
     let vertices = corners.map(|(x, y)| at_pixel(viewport, x, y));
     let planes = TrianglePlanes::new(&vertices, viewport, Interpolation::PerspectiveCorrect)?;
-    ScreenTriangle::new(vertices, viewport, &planes, 0)
+    ScreenTriangle::new(vertices, viewport, &planes, 0, span)
 }
 
 /// How many of the triangles cover each pixel centre, ignoring depth.
 pub fn coverage(viewport: Viewport, triangles: &[ScreenTriangle]) -> Vec<u32> {
+    shifted_coverage(viewport, triangles, &SampleShift::NONE)
+}
+
+/// How many of the triangles cover each pixel's sample point moved by `shift`.
+pub fn shifted_coverage(
+    viewport: Viewport,
+    triangles: &[ScreenTriangle],
+    shift: &SampleShift,
+) -> Vec<u32> {
     let mut count = vec![0u32; (viewport.width * viewport.height) as usize];
     let all = PixelRect {
         x0: 0,
@@ -36,7 +54,7 @@ pub fn coverage(viewport: Viewport, triangles: &[ScreenTriangle]) -> Vec<u32> {
         y1: viewport.height - 1,
     };
     for t in triangles {
-        scan_triangle(t, &all, |x, y| {
+        scan_shifted(t, &all, shift, |x, y| {
             count[(y * viewport.width + x) as usize] += 1
         });
     }
