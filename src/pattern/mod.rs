@@ -231,21 +231,26 @@ impl Pattern {
         scratch: &mut Scratch,
         mut store: S,
     ) -> usize {
-        let len = store.len();
         if inputs.precision == Precision::Fastest && self.inner.program.single_precision() {
-            let flat = self.run::<S::Lanes<f32>>(
-                inputs,
-                params,
-                scratch,
-                len,
-                #[inline(always)]
-                |start, slots| store.store(start, slots),
-            );
+            let flat = self.evaluate_in::<f32, S>(inputs, params, scratch, &mut store);
             if flat == 0 {
                 return 0;
             }
         }
-        self.run::<S::Lanes<f64>>(
+        self.evaluate_in::<f64, S>(inputs, params, scratch, &mut store)
+    }
+
+    /// `evaluate` in lanes of `R` alone, with no second try.
+    #[inline(always)]
+    fn evaluate_in<R: real::Real, S: Store>(
+        &self,
+        inputs: &Inputs,
+        params: &[f32],
+        scratch: &mut Scratch,
+        store: &mut S,
+    ) -> usize {
+        let len = store.len();
+        self.run::<S::Lanes<R>>(
             inputs,
             params,
             scratch,
@@ -253,20 +258,6 @@ impl Pattern {
             #[inline(always)]
             |start, slots| store.store(start, slots),
         )
-    }
-
-    /// `evaluate` in lanes of `R` alone, with no second try.
-    #[cfg(test)]
-    fn evaluate_in<R: real::Real, S: Store>(
-        &self,
-        inputs: &Inputs,
-        scratch: &mut Scratch,
-        mut store: S,
-    ) -> usize {
-        let len = store.len();
-        self.run::<S::Lanes<R>>(inputs, &[], scratch, len, |start, slots| {
-            store.store(start, slots)
-        })
     }
 
     /// Runs the program chunk by chunk in lanes of `T`; `store(start, slots)` writes one

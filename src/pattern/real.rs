@@ -142,17 +142,28 @@ mod tests {
                 let out = &mut bump;
                 pattern.evaluate_in::<R, _>(
                     inputs,
+                    &[],
                     scratch,
-                    output::HeightGradient { program, out },
+                    &mut output::HeightGradient { program, out },
                 )
             }
             OutputKind::Slope => {
                 let out = &mut bump;
-                pattern.evaluate_in::<R, _>(inputs, scratch, output::Slope { program, out })
+                pattern.evaluate_in::<R, _>(
+                    inputs,
+                    &[],
+                    scratch,
+                    &mut output::Slope { program, out },
+                )
             }
             OutputKind::Color => {
                 let out = &mut color;
-                pattern.evaluate_in::<R, _>(inputs, scratch, output::Color { program, out })
+                pattern.evaluate_in::<R, _>(
+                    inputs,
+                    &[],
+                    scratch,
+                    &mut output::Color { program, out },
+                )
             }
         };
         match pattern.output() {
