@@ -4,11 +4,13 @@
 //! Why `f32` is accurate enough there: a program's inputs (u, v, the point and its partials) are
 //! `f32` already, so its `f64` result is the exact result at inputs carrying up to half an `f32`
 //! ulp of error. Each `f32` operation adds a relative error of the same size to its own result
-//! (tested for every shipped pattern: the `f32` result lies within the `f64` results at inputs a
-//! few ulps away). Floored `mod` by a whole period is exact in `f32` but for the floor at a
-//! boundary, where both sides of the step are as right. `t` is the exception: a clock of 1e7 s
-//! is exact in `f64` but has a step of a whole second in `f32`. Where an `f32` evaluation
-//! overflows to a non-finite result, the batch is evaluated again in `f64`.
+//! (tested for every shipped pattern: the `f32` result lies within the `f64` results at inputs
+//! up to 8 ulps away, give or take 1e-5 of its channel's scale, which the roundings of
+//! intermediates larger than the inputs take). Floored `mod` by a whole period is exact in
+//! `f32` but for the floor at a boundary, where both sides of the step are as right. `t` is the
+//! exception: a clock of 1e7 s is exact in `f64` but has a step of a whole second in `f32`.
+//! Where an `f32` evaluation overflows to a non-finite result, the batch is evaluated again in
+//! `f64`.
 
 use num_traits::Float;
 use std::fmt::Debug;
