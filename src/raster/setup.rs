@@ -125,7 +125,8 @@ impl AttributePlane {
 /// A triangle ready for scan conversion and shading.
 #[derive(Clone, Copy, Debug)]
 pub struct ScreenTriangle {
-    /// Pixels whose centres may be covered (inclusive ranges), already inside the viewport.
+    /// Pixels whose sample points may be covered (inclusive ranges; see `ScreenTriangle::new`),
+    /// already inside the viewport.
     pub bounds: PixelRect,
     pub edges: [Edge; 3],
     /// Pixel position that attribute planes are relative to: at most a pixel from the bounds'
