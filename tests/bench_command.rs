@@ -1,8 +1,10 @@
 //! `bumpwork bench` as a user runs it: JSON with finite figures, the presets ordered by error as
 //! documented, a chart that decodes, and one clear message for bad input.
 
-use std::path::PathBuf;
+mod test_dir;
+
 use std::process::{Command, Output};
+use test_dir::TestDir;
 
 fn bumpwork(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_bumpwork"))
@@ -11,11 +13,8 @@ fn bumpwork(args: &[&str]) -> Output {
         .expect("the binary runs")
 }
 
-fn temp_dir(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("bumpwork-bench-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+fn temp_dir(name: &str) -> TestDir {
+    TestDir::new(&format!("bench-{name}"))
 }
 
 fn number(value: &serde_json::Value, field: &str) -> f64 {

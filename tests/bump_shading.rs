@@ -4,7 +4,9 @@ use bumpwork::raster::{Framebuffer, PreparedScene, RenderTarget, Viewport, rende
 use bumpwork::scene::{Light, Scene, parse_scene, preset};
 use bumpwork::surface::Tessellation;
 use glam::{DVec3, Vec3};
-use std::path::PathBuf;
+mod test_dir;
+
+use test_dir::TestDir;
 
 fn frame(scene: Scene, width: u32, height: u32) -> (Framebuffer, bumpwork::raster::FrameStats) {
     let camera = scene.camera.clone();
@@ -13,11 +15,8 @@ fn frame(scene: Scene, width: u32, height: u32) -> (Framebuffer, bumpwork::raste
     render(&prepared, &target)
 }
 
-fn temp_dir(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("bumpwork-bump-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+fn temp_dir(name: &str) -> TestDir {
+    TestDir::new(&format!("bump-{name}"))
 }
 
 #[test]

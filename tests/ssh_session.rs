@@ -12,11 +12,13 @@
 
 #![cfg(unix)]
 
+mod test_dir;
 mod tmux_support;
 
 use std::net::{Ipv4Addr, TcpListener, TcpStream};
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Child, Command, Stdio};
+use test_dir::TestDir;
 use tmux_support::{DEADLINE, Tmux, eventually, missing};
 
 const SSHD: &str = "/usr/sbin/sshd";
@@ -108,10 +110,7 @@ fn processes_with(marker: &str) -> Vec<u32> {
 /// One session: the workbench on the far side (`remote`, a shell command line that runs
 /// `binary`), driven, resized, then the client killed; returns once no remote workbench is left.
 fn session(name: &str, remote: impl Fn(&Path) -> String) {
-    let dir: PathBuf =
-        std::env::temp_dir().join(format!("bumpwork-ssh-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = TestDir::new(&format!("ssh-{name}"));
     let port = free_port();
     let _server = start_sshd(&dir, port);
 

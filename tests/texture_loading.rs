@@ -1,18 +1,18 @@
 //! Loading every supported format into linear texels, and the error for each way a
 //! file can be bad.
 
+mod test_dir;
+
 use std::path::{Path, PathBuf};
+use test_dir::TestDir;
 
 use bumpwork::texture::{
     Encoding, Limits, LoadedImage, Reason, Texel, TextureError, check_image, load_image,
 };
 
 /// A fresh directory for one test's files.
-fn scratch_dir(test: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("bumpwork-texture-{}-{test}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    dir
+fn scratch_dir(test: &str) -> TestDir {
+    TestDir::new(&format!("texture-{test}"))
 }
 
 fn write(dir: &Path, name: &str, bytes: &[u8]) -> PathBuf {

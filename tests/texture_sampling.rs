@@ -4,6 +4,9 @@ use bumpwork::texture::{
     Filter, Footprint, HeightMap, Limits, Raster, Sampler, Texel, Texture, Wrap,
 };
 use glam::Vec2;
+use test_dir::TestDir;
+
+mod test_dir;
 
 const WRAPS: [Wrap; 3] = [Wrap::Repeat, Wrap::Clamp, Wrap::Mirror];
 const FILTERS: [Filter; 3] = [Filter::Nearest, Filter::Bilinear, Filter::Trilinear];
@@ -300,8 +303,7 @@ fn height_gradient_of_a_linear_ramp_is_constant_away_from_the_border() {
 
 #[test]
 fn height_from_a_ramp_file_is_not_srgb_decoded() {
-    let dir = std::env::temp_dir().join(format!("bumpwork-texture-{}-ramp", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = TestDir::new("texture-ramp");
     let path = dir.join("ramp.pgm");
     let mut bytes = b"P5 32 4 255\n".to_vec();
     for _ in 0..4 {
@@ -367,8 +369,7 @@ fn colour_images_give_height_by_luma() {
 
 #[test]
 fn mip_levels_average_in_linear_light() {
-    let dir = std::env::temp_dir().join(format!("bumpwork-texture-{}-linear", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = TestDir::new("texture-linear");
     let path = dir.join("checker.pgm");
     let mut bytes = b"P5 8 8 255\n".to_vec();
     bytes.extend((0..64).map(|i| if (i % 8 + i / 8) % 2 == 0 { 0u8 } else { 255 }));

@@ -1,7 +1,12 @@
 //! Running the binary as a user would, for the command-line tests.
 #![allow(dead_code)]
 
-use std::path::{Path, PathBuf};
+#[path = "../test_dir/mod.rs"]
+mod test_dir;
+
+pub use test_dir::TestDir;
+
+use std::path::Path;
 use std::process::{Command, Output};
 
 pub fn bumpwork(args: &[&str]) -> Output {
@@ -11,11 +16,8 @@ pub fn bumpwork(args: &[&str]) -> Output {
         .expect("the binary runs")
 }
 
-pub fn temp_dir(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("bumpwork-cli-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+pub fn temp_dir(name: &str) -> TestDir {
+    TestDir::new(&format!("cli-{name}"))
 }
 
 pub fn stderr(output: &Output) -> String {
