@@ -242,9 +242,7 @@ pub fn render_passes_into(
         .iter()
         .map(|o| shader.reads_derivatives(o))
         .collect();
-    let Some(set_up) = SetUp::new(&objects, targets) else {
-        return FrameStats::default();
-    };
+    let set_up = SetUp::new(&objects, targets, last);
     let passes: Vec<Pass<_>> = targets
         .iter()
         .map(|target| Pass::new(&objects, &set_up, target, shader, &derivatives))

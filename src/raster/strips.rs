@@ -120,13 +120,13 @@ pub(super) struct SetUp {
 }
 
 impl SetUp {
-    /// For passes that share everything but their sample shifts (see `render_passes_into`).
-    pub fn new(objects: &[FrameObject], targets: &[RenderTarget]) -> Option<SetUp> {
-        let last = targets.last()?;
+    /// For `targets`, passes that share everything with `last` but their sample shifts (see
+    /// `render_passes_into`).
+    pub fn new(objects: &[FrameObject], targets: &[RenderTarget], last: &RenderTarget) -> SetUp {
         let span = ShiftSpan::of(targets.iter().map(|t| SampleShift::new(t.window.offset)));
         let triangles = shifted_screen_triangles(objects, last, &span);
         let bins = TileBins::new(last.viewport, &triangles);
-        Some(SetUp { triangles, bins })
+        SetUp { triangles, bins }
     }
 }
 

@@ -431,7 +431,11 @@ fn same_triangle(slots: &[u32]) -> impl Iterator<Item = (u32, Range<usize>)> + '
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::raster::setup::ShiftSpan;
+    use crate::raster::clip::ClipVertex;
+    use crate::raster::pipeline::Interpolation;
+    use crate::raster::scan::scan_triangle;
+    use crate::raster::setup::{ShiftSpan, TrianglePlanes, Viewport};
+    use glam::Vec4;
 
     #[test]
     fn a_row_splits_into_runs_of_one_triangle() {
@@ -440,11 +444,6 @@ mod tests {
         assert_eq!(runs, [(4, 0..2), (7, 2..5), (4, 5..6), (9, 6..7)]);
         assert_eq!(same_triangle(&[]).count(), 0);
     }
-    use crate::raster::clip::ClipVertex;
-    use crate::raster::pipeline::Interpolation;
-    use crate::raster::scan::scan_triangle;
-    use crate::raster::setup::{TrianglePlanes, Viewport};
-    use glam::Vec4;
 
     const NO_TRIANGLE: u32 = u32::MAX;
 
