@@ -17,6 +17,7 @@ mod scan;
 mod setup;
 mod strips;
 mod tile;
+mod top_first;
 mod window;
 
 pub use bin::{TILE_SIZE, TileBins};

@@ -5,6 +5,7 @@ use super::framebuffer::{Blend, Framebuffer};
 use super::setup::{ScreenTriangle, ShiftSpan, TrianglePlanes, Viewport};
 use super::strips::{Pass, STRIP_ROWS, SetUp, StripBuffers, StripJob};
 use super::tile::TileBuffers;
+use super::top_first::map_top_first;
 use super::window::ImageWindow;
 use crate::scene::{Material, Scene};
 use crate::shade::LitShader;
@@ -279,23 +280,25 @@ pub fn render_passes_into(
             .collect();
         (strips, known)
     };
-    let (fragments, flattened) = strips
-        .into_par_iter()
-        .zip(known_background.par_chunks_mut(tiles_x.max(1) as usize))
-        .enumerate()
-        .map_init(
-            // Once per rayon job, not per strip: the buffers keep their grown capacity.
-            || (TileBuffers::default(), shader.scratch()),
-            |(tile, scratch), (index, ((color, depth), known_background))| {
-                let strip = StripBuffers {
-                    color,
-                    depth,
-                    known_background,
-                };
-                job.render(index as u32, strip, tile, scratch)
-            },
-        )
-        .reduce(|| (0, 0), |a, b| (a.0 + b.0, a.1 + b.1));
+    let strips: Vec<_> = strips
+        .into_iter()
+        .zip(known_background.chunks_mut(tiles_x.max(1) as usize))
+        .collect();
+    let (fragments, flattened) = map_top_first(
+        strips,
+        // Once per thread, not per strip: the buffers keep their grown capacity.
+        || (TileBuffers::default(), shader.scratch()),
+        |(tile, scratch), index, ((color, depth), known_background)| {
+            let strip = StripBuffers {
+                color,
+                depth,
+                known_background,
+            };
+            job.render(index as u32, strip, tile, scratch)
+        },
+    )
+    .into_iter()
+    .fold((0, 0), |a, b| (a.0 + b.0, a.1 + b.1));
     FrameStats {
         triangles: prepared.triangle_count(),
         rasterized_triangles: passes.iter().map(|p| p.triangles.len()).sum(),
