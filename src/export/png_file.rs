@@ -12,8 +12,9 @@ use std::sync::{Arc, Mutex, PoisonError};
 
 /// Compressed bytes per image-data chunk. The encoder's default, 4 KiB, made a 1080p still
 /// a thousand small writes, and on ext4 each write into a new page cache folio zeroed the rest
-/// of it (4 % of a one-sample still's CPU time).
-const CHUNK_BYTES: usize = 1 << 20;
+/// of it (4 % of a one-sample still's CPU time). At 1 MiB a 1080p still (~1 MB) was one write,
+/// copied into the page cache after its last row while the other core idled.
+const CHUNK_BYTES: usize = 1 << 17;
 
 /// A PNG being written: rows go in top first; `finish` completes it and makes it appear.
 pub struct PngStill {

@@ -3,6 +3,7 @@
 
 mod bands;
 mod contrast;
+mod in_order;
 mod recipe;
 mod samples;
 mod stream;
