@@ -139,6 +139,10 @@ pub struct ScreenTriangle {
     pub object: u32,
 }
 
+// SAFETY: every field is an integer, a float or a plain struct of them (`PixelRect`, `Edge`,
+// `Vec2`, `AttributePlane`), for which all-zero bytes are a valid value.
+unsafe impl bytemuck::Zeroable for ScreenTriangle {}
+
 /// The screen-space planes of 1/w and of the (u,v) attributes of one scene triangle, in f64
 /// over absolute pixel coordinates: value(x, y) = c[0]·x + c[1]·y + c[2].
 ///
