@@ -137,7 +137,7 @@ impl Framebuffer {
 /// take those page faults instead of one thread filling the whole buffer beforehand (for a
 /// 1080p still that fill was most of the time spent outside shading), on huge pages where the
 /// system allows (see `memory`).
-fn resize_unspecified<T: bytemuck::Zeroable + Clone>(values: &mut Vec<T>, n: usize) {
+fn resize_unspecified<T: bytemuck::Zeroable + Clone + Send + Sync>(values: &mut Vec<T>, n: usize) {
     if n > values.capacity() {
         *values = crate::memory::zeroed_huge(n);
     } else {
