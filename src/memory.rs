@@ -17,6 +17,20 @@ pub fn zeroed_huge<T: bytemuck::Zeroable + Clone + Send + Sync>(n: usize) -> Vec
     values
 }
 
+/// Makes `values` `n` long, for its caller to overwrite every value. Growing past its capacity
+/// takes a fresh buffer from `zeroed_huge`, zeroed by the pool (the pages' first-touch faults
+/// split across the threads, on huge pages where the system allows) instead of by one thread.
+pub fn resize_for_overwrite<T: bytemuck::Zeroable + Clone + Send + Sync>(
+    values: &mut Vec<T>,
+    n: usize,
+) {
+    if n > values.capacity() {
+        *values = zeroed_huge(n);
+    } else {
+        values.resize(n, T::zeroed());
+    }
+}
+
 /// Asks the kernel to back the whole pages inside `buffer` with huge pages; to take effect, call
 /// it before the pages are first touched. Advice only: the contents do not change, and a system
 /// that cannot follow it ignores it.

@@ -1,3 +1,4 @@
+use crate::memory::resize_for_overwrite;
 use glam::Vec3;
 use std::sync::OnceLock;
 
@@ -97,8 +98,8 @@ impl Framebuffer {
         }
         self.width = width;
         self.height = height;
-        resize_unspecified(&mut self.color, n);
-        resize_unspecified(&mut self.depth, n);
+        resize_for_overwrite(&mut self.color, n);
+        resize_for_overwrite(&mut self.depth, n);
     }
 
     /// For a render in tiles of a `grid` (tiles across, strips down) over a `background`: colour,
@@ -129,19 +130,6 @@ impl Framebuffer {
             bytemuck::cast_slice_mut(&mut rgb),
         );
         rgb
-    }
-}
-
-/// Makes `values` `n` long with contents left to the next render. Growing past its capacity takes
-/// fresh zeroed memory, which the system maps on first touch: the render's parallel tiles then
-/// take those page faults instead of one thread filling the whole buffer beforehand (for a
-/// 1080p still that fill was most of the time spent outside shading), on huge pages where the
-/// system allows (see `memory`).
-fn resize_unspecified<T: bytemuck::Zeroable + Clone + Send + Sync>(values: &mut Vec<T>, n: usize) {
-    if n > values.capacity() {
-        *values = crate::memory::zeroed_huge(n);
-    } else {
-        values.resize(n, T::zeroed());
     }
 }
 

@@ -7,11 +7,11 @@ use super::strips::{Pass, STRIP_ROWS, SetUp, StripBuffers, StripJob};
 use super::tile::TileBuffers;
 use super::top_first::map_top_first;
 use super::window::ImageWindow;
+use crate::memory::zeroed_huge;
 use crate::scene::{Material, Scene};
 use crate::shade::LitShader;
 use crate::surface::{Mesh, Surface, Tessellation};
 use bytemuck::Zeroable;
-use bytemuck::allocation::zeroed_vec;
 use glam::{Mat4, Vec3, Vec4};
 use rayon::prelude::*;
 
@@ -179,14 +179,15 @@ pub(super) fn shifted_screen_triangles(
 }
 
 /// The lists one after another. Screen triangles are large and there are many: a lone list is
-/// moved, and several are copied once, in parallel, into a zeroed list of the exact size, whose
-/// fresh pages the copies fault in (joined on one thread, object by object, the copies and the
-/// faults took ~1 ms of a 1080p still's set-up while the other core waited).
+/// moved, and several are copied once, in parallel, into a list of the exact size zeroed in
+/// parallel (joined on one thread, object by object, the copies and their fresh pages' faults
+/// took ~1 ms of a 1080p still's set-up while the other core waited; `calloc`'s serial zeroing
+/// took most of that again).
 fn join_in_order<T: Copy + Zeroable + Send + Sync>(mut lists: Vec<Vec<T>>) -> Vec<T> {
     if lists.len() <= 1 {
         return lists.pop().unwrap_or_default();
     }
-    let mut joined: Vec<T> = zeroed_vec(lists.iter().map(Vec::len).sum());
+    let mut joined: Vec<T> = zeroed_huge(lists.iter().map(Vec::len).sum());
     let mut rest = &mut joined[..];
     let mut copies = Vec::with_capacity(lists.len());
     for list in &lists {
