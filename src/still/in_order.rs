@@ -13,8 +13,13 @@ pub struct InOrderWriter<'s> {
     waiting: Mutex<BTreeMap<usize, Vec<u8>>>,
     /// Held by the one thread writing.
     writing: Mutex<Writing<'s>>,
-    spare: Mutex<Vec<Vec<u8>>>,
+    spare: &'s SpareRows,
 }
+
+/// Buffers of 8-bit rows already written, for the next strips to fill (a fresh one would be
+/// zeroed, and its pages first touched, for every strip); kept from band to band.
+#[derive(Default)]
+pub struct SpareRows(Mutex<Vec<Vec<u8>>>);
 
 struct Writing<'s> {
     sink: &'s mut dyn RowSink,
@@ -29,7 +34,7 @@ fn lock<T>(mutex: &Mutex<T>) -> MutexGuard<'_, T> {
 }
 
 impl<'s> InOrderWriter<'s> {
-    pub fn new(sink: &'s mut dyn RowSink) -> InOrderWriter<'s> {
+    pub fn new(sink: &'s mut dyn RowSink, spare: &'s SpareRows) -> InOrderWriter<'s> {
         InOrderWriter {
             waiting: Mutex::default(),
             writing: Mutex::new(Writing {
@@ -37,14 +42,13 @@ impl<'s> InOrderWriter<'s> {
                 next: 0,
                 failure: None,
             }),
-            spare: Mutex::default(),
+            spare,
         }
     }
 
-    /// A buffer for a strip's bytes: one already written if any (a fresh one would be zeroed,
-    /// and its pages first touched, for every strip).
+    /// A buffer for a strip's bytes: one already written if any.
     pub fn buffer(&self) -> Vec<u8> {
-        lock(&self.spare).pop().unwrap_or_default()
+        lock(&self.spare.0).pop().unwrap_or_default()
     }
 
     /// Hands in strip `index` (from the top), writing it and the ready strips after it if the
@@ -79,7 +83,7 @@ impl<'s> InOrderWriter<'s> {
                 writing.failure = Some(reason);
             }
             writing.next += 1;
-            lock(&self.spare).push(bytes);
+            lock(&self.spare.0).push(bytes);
         }
     }
 
@@ -137,7 +141,8 @@ mod tests {
     }
 
     fn hand_in(order: &[usize], strip_count: usize, rows: &mut Writes) -> Result<(), String> {
-        let writer = InOrderWriter::new(rows);
+        let spare = SpareRows::default();
+        let writer = InOrderWriter::new(rows, &spare);
         for &k in order {
             writer.finished(k, strip(k));
         }
@@ -154,7 +159,8 @@ mod tests {
     #[test]
     fn written_buffers_come_back_for_the_next_strips() {
         let mut rows = sink(None);
-        let writer = InOrderWriter::new(&mut rows);
+        let spare = SpareRows::default();
+        let writer = InOrderWriter::new(&mut rows, &spare);
         writer.finished(1, strip(1));
         assert!(writer.buffer().is_empty(), "strip 1 waits for strip 0");
         writer.finished(0, strip(0));
@@ -185,7 +191,8 @@ mod tests {
         for round in 0..20 {
             let (threads, count) = (4, 300);
             let mut rows = sink(None);
-            let writer = InOrderWriter::new(&mut rows);
+            let spare = SpareRows::default();
+            let writer = InOrderWriter::new(&mut rows, &spare);
             std::thread::scope(|scope| {
                 for t in 0..threads {
                     let writer = &writer;

@@ -2,7 +2,7 @@
 //! hands on strip by strip (`RenderTarget::finished_strips`) once the samples are resolved.
 
 use super::bands::{BandBuffers, BandJob, band_rows};
-use super::in_order::InOrderWriter;
+use super::in_order::{InOrderWriter, SpareRows};
 use crate::raster::{FragmentShader, FrameStats, STRIP_ROWS, Srgb8Strips};
 use std::ops::Range;
 
@@ -34,6 +34,7 @@ pub fn stream_still<S: FragmentShader>(
     let passes = job.full.height.div_ceil(rows_per_band) as f64 * job.passes_per_band() as f64;
     let mut passes_done = 0.0;
     let mut buffers = BandBuffers::default();
+    let spare = SpareRows::default();
     let mut stats = FrameStats::default();
     for start in (0..job.full.height).step_by(rows_per_band as usize) {
         let end = (start + rows_per_band).min(job.full.height);
@@ -45,6 +46,7 @@ pub fn stream_still<S: FragmentShader>(
             job,
             start..end,
             &mut buffers,
+            &spare,
             sink,
             keep_going,
             &mut on_pass,
@@ -68,12 +70,13 @@ fn render_and_write<S: FragmentShader>(
     job: &BandJob<S>,
     rows: Range<u32>,
     buffers: &mut BandBuffers,
+    spare: &SpareRows,
     sink: &mut dyn RowSink,
     keep_going: &dyn Fn() -> bool,
     on_pass: &mut dyn FnMut(),
 ) -> (Option<FrameStats>, Result<(), String>) {
     let strip_count = (rows.end - rows.start).div_ceil(STRIP_ROWS) as usize;
-    let writer = InOrderWriter::new(sink);
+    let writer = InOrderWriter::new(sink, spare);
     let buffer = || writer.buffer();
     let finished = |strip: usize, bytes: Vec<u8>| writer.finished(strip, bytes);
     let srgb8 = Srgb8Strips {
