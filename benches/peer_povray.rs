@@ -134,7 +134,7 @@ fn main() {
 }
 
 /// Contrasts of adaptive supersampling measured against full supersampling, least first.
-const CONTRASTS: [f32; 8] = [0.02, ADAPTIVE, 0.1, 0.125, 0.15, 0.2, 0.3, 0.5];
+const CONTRASTS: [f32; 9] = [0.02, ADAPTIVE, 0.06, 0.07, 0.08, 0.1, 0.15, 0.2, 0.3];
 
 /// How far an antialiased frame lands from its renderer's full supersampling, in 8-bit sRGB
 /// steps over every channel.

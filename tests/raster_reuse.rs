@@ -4,8 +4,8 @@
 //! weighted colours into what is there (supersampling's passes), touch only their pixels.
 
 use bumpwork::raster::{
-    Blend, Framebuffer, ImageWindow, PreparedScene, RenderTarget, STRIP_ROWS, Srgb8Strips,
-    Viewport, render, render_into, render_passes_into,
+    Blend, Framebuffer, ImageWindow, PreparedScene, Refinement, RenderTarget, STRIP_ROWS,
+    Srgb8Strips, Viewport, render, render_into, render_passes_into, render_refining_passes_into,
 };
 use bumpwork::scene::{Scene, preset};
 use bumpwork::shade::LitShader;
@@ -173,7 +173,14 @@ fn a_masked_render_writes_its_pixels_and_leaves_the_rest() {
     let want = fresh(&far, SMALL);
     let mask = scattered_mask(SMALL);
     let weight = 0.25;
-    for blend in [Blend::Replace, Blend::Scale(weight), Blend::Add(weight)] {
+    let kept = 0.75;
+    let rescale = Blend::Rescale { kept, weight };
+    for blend in [
+        Blend::Replace,
+        Blend::Scale(weight),
+        Blend::Add(weight),
+        rescale,
+    ] {
         let before = scribbled(SMALL);
         let mut got = before.clone();
         render_as(&far, Some(&mask), blend, &mut got);
@@ -183,6 +190,7 @@ fn a_masked_render_writes_its_pixels_and_leaves_the_rest() {
                 Blend::Replace => want.color()[i],
                 Blend::Scale(_) => want.color()[i] * weight,
                 Blend::Add(_) => before.color()[i] + want.color()[i] * weight,
+                Blend::Rescale { .. } => before.color()[i] * kept + want.color()[i] * weight,
             };
             let depth = if wanted {
                 want.depth()[i]
@@ -385,5 +393,67 @@ fn passes_rendered_tile_by_tile_hand_on_each_strip_once_finished_as_srgb() {
             "masked {}: not the finished pixels",
             mask.is_some()
         );
+    }
+}
+
+/// The refinement's definition: a wanted pixel is refined when a channel of √colour moved by
+/// more than `threshold` from before the group to after its first `from` passes.
+fn refined_by_definition(
+    before: &Framebuffer,
+    after: &Framebuffer,
+    wanted: Option<&[bool]>,
+    threshold: f32,
+) -> Vec<bool> {
+    let key = |c: Vec3| c.max(Vec3::ZERO).to_array().map(f32::sqrt);
+    (before.color().iter().zip(after.color()).enumerate())
+        .map(|(i, (&b, &a))| {
+            let moved = (0..3).any(|c| (key(a)[c] - key(b)[c]).abs() > threshold);
+            wanted.is_none_or(|w| w[i]) && moved
+        })
+        .collect()
+}
+
+#[test]
+fn refining_passes_render_only_the_moved_pixels_as_separate_passes_would() {
+    let far = far_sphere(Vec3::splat(0.1));
+    let shader = LitShader::new(&far.scene, &far.scene.camera);
+    let mask = scattered_mask(SMALL);
+    for mask in [None, Some(&mask[..])] {
+        // The first two passes leave a quarter of a sample: the background (0.1) moves by 0.16 in
+        // √colour, the lit sphere by more.
+        for threshold in [-1.0, 0.16, f32::INFINITY] {
+            let what = format!("masked {} at {threshold}", mask.is_some());
+            let passes = shifted_passes(&far, mask);
+            let before = rendered_once(&far);
+            let mut want = before.clone();
+            for pass in &passes[..2] {
+                render_into(&far, pass, &shader, &mut want);
+            }
+            let expected = refined_by_definition(&before, &want, mask, threshold);
+            for pass in &passes[2..] {
+                let pass = RenderTarget {
+                    mask: Some(&expected),
+                    ..*pass
+                };
+                render_into(&far, &pass, &shader, &mut want);
+            }
+            let mut got = before.clone();
+            let mut refined = vec![true; 3];
+            let refinement = Refinement {
+                from_pass: 2,
+                threshold,
+                refined: &mut refined,
+            };
+            render_refining_passes_into(&far, &passes, &shader, &mut got, Some(refinement));
+            assert!(refined == expected, "{what}: not the moved pixels");
+            assert_same(&got, &want, &what);
+            let count = expected.iter().filter(|&&r| r).count();
+            let wanted = mask.map_or(expected.len(), |m| m.iter().filter(|&&w| w).count());
+            match threshold {
+                -1.0 => assert_eq!(count, wanted, "{what}"),
+                0.16 => assert!(0 < count && count < wanted, "{what}: {count} of {wanted}"),
+                _ => assert_eq!(count, 0, "{what}"),
+            }
+        }
     }
 }

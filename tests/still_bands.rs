@@ -223,6 +223,51 @@ fn adaptive_supersampling_samples_every_edge_pixel_fully_and_shades_far_fewer() 
 }
 
 #[test]
+fn refining_box_supersampling_misses_at_most_one_sample_where_an_edge_crosses() {
+    let supersampling = Supersampling {
+        samples: 16,
+        filter: ResolveFilter::Box,
+    };
+    // Large, for many edge pixels at each of the three angles.
+    let view = Viewport {
+        width: 960,
+        height: 720,
+    };
+    let run = |adaptive| {
+        with_job(view, supersampling, adaptive, |job| {
+            render_supersampled(job, &mut BandBuffers::default())
+        })
+    };
+    let (full, full_stats) = run(None);
+    let (adaptive, adaptive_stats) = run(Some(0.1));
+    // A marked pixel whose four corner samples agree with its centre stops there. A straight
+    // edge that misses all five can cut off only a sample outside the corners' hull (one near
+    // the middle of a side), so such a pixel is off by at most one sample's weight, 1/16 of
+    // the white-on-black step. Only a corner of the triangle can poke further in.
+    let errors: Vec<f32> = (0..full.color().len())
+        .map(|i| (adaptive.color()[i] - full.color()[i]).abs().max_element())
+        .collect();
+    let beyond_one_sample = errors.iter().filter(|&&e| e > 1.0 / 16.0 + 1e-5).count();
+    let stopped_early = errors.iter().filter(|&&e| e > 1e-5).count();
+    let edge_pixels = full.color().iter().filter(|&&c| is_between(c)).count();
+    eprintln!(
+        "{stopped_early} of {edge_pixels} edge pixels differ, {beyond_one_sample} by more than \
+         a sample; fragments {} against {}",
+        adaptive_stats.fragments, full_stats.fragments
+    );
+    assert!(
+        beyond_one_sample <= 3,
+        "{beyond_one_sample} pixels off by more than a sample"
+    );
+    assert!(
+        stopped_early * 5 < edge_pixels,
+        "{stopped_early} of {edge_pixels}"
+    );
+    assert!(adaptive.color().iter().filter(|&&c| is_between(c)).count() > 100);
+    assert!(adaptive_stats.fragments * 5 < full_stats.fragments);
+}
+
+#[test]
 fn a_supersampled_band_keeps_the_last_passs_depth() {
     let supersampling = Supersampling {
         samples: 16,

@@ -25,6 +25,10 @@ pub enum Blend {
     /// Adds colour × weight: supersampling's passes summed in place, in pass order. The
     /// framebuffer must already be the render's size and hold what is to be added to.
     Add(f32),
+    /// Scales what the pixel holds by `kept`, then adds colour × `weight`: the first pass of a
+    /// refinement (`Refinement`), turning the mean of a pixel's first samples into their share
+    /// of the mean of all its samples.
+    Rescale { kept: f32, weight: f32 },
 }
 
 /// The tiles the last render left holding only background, so the next render of the same

@@ -12,6 +12,7 @@ mod clip;
 mod fragment;
 mod framebuffer;
 mod pipeline;
+mod refine;
 mod row_runs;
 mod scan;
 mod setup;
@@ -27,8 +28,10 @@ pub use fragment::{Fragment, FragmentShader, FrameObject, PerFragment};
 pub use framebuffer::{Blend, Framebuffer, encode_srgb8, linear_to_srgb8};
 pub use pipeline::{
     FrameStats, Interpolation, PreparedObject, PreparedScene, RenderTarget, Srgb8Strips,
-    frame_objects, render, render_into, render_passes_into, render_with, screen_triangles,
+    frame_objects, render, render_into, render_passes_into, render_refining_passes_into,
+    render_with, screen_triangles,
 };
+pub use refine::Refinement;
 pub use scan::{PixelRect, scan_shifted, scan_triangle};
 pub use setup::{SUBPIXEL_BITS, SampleShift, ScreenTriangle, ShiftSpan, TrianglePlanes, Viewport};
 pub use strips::STRIP_ROWS;

@@ -2,6 +2,7 @@ use super::camera::Camera;
 use super::clip::{ClipVertex, clip_triangle, needs_no_clipping};
 use super::fragment::{FragmentShader, FrameObject};
 use super::framebuffer::{Blend, Framebuffer};
+use super::refine::Refinement;
 use super::setup::{ScreenTriangle, ShiftSpan, TrianglePlanes, Viewport};
 use super::strips::{Pass, STRIP_ROWS, SetUp, StripBuffers, StripJob};
 use super::tile::TileBuffers;
@@ -238,9 +239,28 @@ pub fn render_passes_into(
     shader: &impl FragmentShader,
     framebuffer: &mut Framebuffer,
 ) -> FrameStats {
+    render_refining_passes_into(prepared, targets, shader, framebuffer, None)
+}
+
+/// `render_passes_into`, the passes from `refinement.from_pass` on rendering only the pixels
+/// the earlier passes moved (see `Refinement`), decided tile by tile as each tile's earlier
+/// passes finish.
+pub fn render_refining_passes_into(
+    prepared: &PreparedScene,
+    targets: &[RenderTarget],
+    shader: &impl FragmentShader,
+    framebuffer: &mut Framebuffer,
+    refinement: Option<Refinement>,
+) -> FrameStats {
     let Some(last) = targets.last() else {
         return FrameStats::default();
     };
+    assert!(
+        refinement
+            .as_ref()
+            .is_none_or(|r| r.from_pass < targets.len()),
+        "a refinement starts at one of the group's passes"
+    );
     let shared = |t: &RenderTarget| {
         t.viewport == last.viewport
             && std::ptr::eq(t.camera, last.camera)
@@ -280,6 +300,7 @@ pub fn render_passes_into(
             && last.mask.is_none()
             && last.blend == Blend::Replace
             && !last.writes_depth,
+        refinement: refinement.as_ref().map(|r| (r.from_pass, r.threshold)),
     };
     let mut no_framebuffer_known = Vec::new();
     let (strips, known_background) = if job.bytes_only {
@@ -296,19 +317,31 @@ pub fn render_passes_into(
             .collect();
         (strips, known)
     };
+    let mut refined: Vec<&mut [bool]> = match refinement {
+        Some(refinement) => {
+            let pixels = viewport.width as usize * viewport.height as usize;
+            crate::memory::resize_for_overwrite(refinement.refined, pixels);
+            let rows = (STRIP_ROWS * viewport.width).max(1) as usize;
+            refinement.refined.chunks_mut(rows).collect()
+        }
+        None => Vec::new(),
+    };
+    refined.resize_with(strips.len(), || &mut []);
     let strips: Vec<_> = strips
         .into_iter()
         .zip(known_background.chunks_mut(tiles_x.max(1) as usize))
+        .zip(refined)
         .collect();
     let (fragments, flattened) = map_top_first(
         strips,
         // Once per thread, not per strip: the buffers keep their grown capacity.
         || (TileBuffers::default(), shader.scratch()),
-        |(tile, scratch), index, ((color, depth), known_background)| {
+        |(tile, scratch), index, (((color, depth), known_background), refined)| {
             let strip = StripBuffers {
                 color,
                 depth,
                 known_background,
+                refined,
             };
             job.render(index as u32, strip, tile, scratch)
         },

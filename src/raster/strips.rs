@@ -5,9 +5,10 @@ use super::bin::{TILE_SIZE, TileBins};
 use super::fragment::{FragmentShader, FrameObject};
 use super::framebuffer::{Blend, encode_srgb8};
 use super::pipeline::{Interpolation, RenderTarget, shifted_screen_triangles};
+use super::refine::{keep_before, mark_none, mark_refined};
 use super::scan::PixelRect;
 use super::setup::{SampleShift, ScreenTriangle, ShiftSpan, Viewport};
-use super::tile::{StripOutput, TileBuffers, TileFrame};
+use super::tile::{StripOutput, TileBuffers, TileFrame, any_wanted};
 use glam::Vec3;
 
 /// Rows in a strip: the unit of work a thread takes and of finished rows handed on. Half a
@@ -37,6 +38,8 @@ pub(super) struct StripJob<'a, S> {
     pub tiles_x: u32,
     /// Whether the strips' colours go only into their sRGB bytes (see `render_passes_into`).
     pub bytes_only: bool,
+    /// `Refinement::from_pass` and `threshold`, when the passes refine.
+    pub refinement: Option<(usize, f32)>,
 }
 
 /// One strip's share of the framebuffer (empty colour and depth when `bytes_only`).
@@ -44,6 +47,8 @@ pub(super) struct StripBuffers<'a> {
     pub color: &'a mut [Vec3],
     pub depth: &'a mut [f32],
     pub known_background: &'a mut [bool],
+    /// The strip's part of `Refinement::refined` (empty without one).
+    pub refined: &'a mut [bool],
 }
 
 impl<S: FragmentShader> StripJob<'_, S> {
@@ -60,33 +65,58 @@ impl<S: FragmentShader> StripJob<'_, S> {
         let rows = (self.viewport.height - index * STRIP_ROWS).min(STRIP_ROWS);
         let first = (index * STRIP_ROWS * width) as usize;
         let pixels = (rows * width) as usize;
+        let mask = self.last.mask.map(|m| &m[first..first + pixels]);
         let mut bytes = self.last.finished_strips.map(|strips| {
             let mut bytes = (strips.buffer)();
             bytes.resize(pixels * 3, 0);
             bytes
         });
         let mut counts = (0, 0);
-        let (color, depth) = (strip.color, strip.depth);
-        for (tx, known_background) in (0..self.tiles_x).zip(strip.known_background) {
+        let StripBuffers {
+            color,
+            depth,
+            known_background,
+            refined,
+        } = strip;
+        for (tx, known_background) in (0..self.tiles_x).zip(known_background) {
             let rect = strip_tile_rect(self.viewport, tx, index);
-            let mut out = StripOutput {
-                color: &mut *color,
-                depth: &mut *depth,
-                srgb8: bytes.as_deref_mut().filter(|_| self.bytes_only),
-                width,
-                first_row: rect.y0,
-                background: self.background,
-                mask: self.last.mask.map(|m| &m[first..first + pixels]),
-                blend: self.last.blend,
-                writes_depth: self.last.writes_depth,
-            };
-            if out.any_wanted(&rect) {
-                for pass in self.passes {
-                    let out = out.for_pass(pass.target.blend, pass.target.writes_depth);
+            let first_row = rect.y0;
+            if any_wanted(mask, width, first_row, &rect) {
+                for (k, pass) in self.passes.iter().enumerate() {
+                    let mut wanted = mask;
+                    if let Some((from, threshold)) = self.refinement {
+                        if k == 0 {
+                            keep_before(color, width, first_row, &rect, &mut tile.before);
+                        }
+                        if k == from {
+                            let before = &tile.before;
+                            let rows = (width, first_row, &rect, threshold);
+                            mark_refined(color, before, mask, refined, rows);
+                        }
+                        if k >= from {
+                            wanted = Some(&*refined);
+                            if !any_wanted(wanted, width, first_row, &rect) {
+                                break;
+                            }
+                        }
+                    }
+                    let out = StripOutput {
+                        color: &mut *color,
+                        depth: &mut *depth,
+                        srgb8: bytes.as_deref_mut().filter(|_| self.bytes_only),
+                        width,
+                        first_row,
+                        background: self.background,
+                        mask: wanted,
+                        blend: pass.target.blend,
+                        writes_depth: pass.target.writes_depth,
+                    };
                     let (shaded, flattened) =
                         pass.render_tile(tx, &rect, known_background, tile, scratch, out);
                     counts = (counts.0 + shaded, counts.1 + flattened);
                 }
+            } else if self.refinement.is_some() {
+                mark_none(refined, width, first_row, &rect);
             }
             if let Some(bytes) = bytes.as_deref_mut().filter(|_| !self.bytes_only) {
                 encode_tile(color, width, &rect, bytes);

@@ -24,6 +24,8 @@ pub struct TileBuffers {
     /// The framebuffer pixels of the batch's fragments, as runs along rows.
     visible_runs: Vec<Range<usize>>,
     colors: Vec<Vec3>,
+    /// A refining group's colours of the tile before its first pass (see `Refinement`).
+    pub before: Vec<Vec3>,
 }
 
 impl Default for TileBuffers {
@@ -34,6 +36,7 @@ impl Default for TileBuffers {
             fragments: Vec::with_capacity(TILE_PIXELS),
             visible_runs: Vec::with_capacity(TILE_PIXELS),
             colors: Vec::with_capacity(TILE_PIXELS),
+            before: Vec::new(),
         }
     }
 }
@@ -56,29 +59,6 @@ pub struct StripOutput<'a> {
 }
 
 impl StripOutput<'_> {
-    /// The same rows, written as a pass that blends by `blend` and stores depth or not.
-    pub fn for_pass(&mut self, blend: Blend, writes_depth: bool) -> StripOutput<'_> {
-        StripOutput {
-            color: self.color,
-            depth: self.depth,
-            srgb8: self.srgb8.as_deref_mut(),
-            blend,
-            writes_depth,
-            ..*self
-        }
-    }
-
-    /// Whether any pixel of `rect` is to be written.
-    pub fn any_wanted(&self, rect: &PixelRect) -> bool {
-        let Some(mask) = self.mask else {
-            return true;
-        };
-        (rect.y0..=rect.y1).any(|y| {
-            let row = ((y - self.first_row) * self.width) as usize;
-            mask[row + rect.x0 as usize..=row + rect.x1 as usize].contains(&true)
-        })
-    }
-
     /// Writes the background over the wanted pixels of `rect`.
     pub fn fill_background(mut self, rect: &PixelRect) {
         const NOTHING_DRAWN: [f32; TILE_SIZE as usize] = [0.0; TILE_SIZE as usize];
@@ -109,6 +89,10 @@ impl StripOutput<'_> {
                 let added = self.background * weight;
                 colors.iter_mut().for_each(|c| *c += added);
             }
+            Blend::Rescale { kept, weight } => {
+                let added = self.background * weight;
+                colors.iter_mut().for_each(|c| *c = *c * kept + added);
+            }
         }
         if self.writes_depth {
             self.depth[pixels].fill(f32::INFINITY);
@@ -137,6 +121,11 @@ impl StripOutput<'_> {
             }
             Blend::Add(weight) => {
                 self.put_runs(runs, fragments, colors, |pixel, c| *pixel += c * weight)
+            }
+            Blend::Rescale { kept, weight } => {
+                self.put_runs(runs, fragments, colors, |pixel, c| {
+                    *pixel = *pixel * kept + c * weight
+                })
             }
         }
     }
@@ -179,6 +168,18 @@ impl StripOutput<'_> {
             }
         }
     }
+}
+
+/// Whether `mask` (over a strip of `width`-pixel rows from row `first_row`; `None`: every
+/// pixel) wants any pixel of `rect`.
+pub fn any_wanted(mask: Option<&[bool]>, width: u32, first_row: u32, rect: &PixelRect) -> bool {
+    let Some(mask) = mask else {
+        return true;
+    };
+    (rect.y0..=rect.y1).any(|y| {
+        let row = ((y - first_row) * width) as usize;
+        mask[row + rect.x0 as usize..=row + rect.x1 as usize].contains(&true)
+    })
 }
 
 /// Most of a frame is background: a grey one is written as plain f32s, which compiles to wide

@@ -5,8 +5,8 @@ use super::contrast::contrast_mask;
 use super::samples::Supersampling;
 use crate::raster::{
     Blend, Camera, FragmentShader, FrameStats, Framebuffer, ImageWindow, Interpolation,
-    PreparedScene, RenderTarget, ScreenTriangle, Srgb8Strips, TILE_SIZE, Viewport, render_into,
-    render_passes_into,
+    PreparedScene, Refinement, RenderTarget, ScreenTriangle, Srgb8Strips, TILE_SIZE, Viewport,
+    render_into, render_passes_into, render_refining_passes_into,
 };
 use glam::{Vec2, Vec3};
 use std::ops::Range;
@@ -25,6 +25,12 @@ const PIXEL_PASSES_PER_GROUP: usize = 8 * 1920 * 1080;
 
 /// …and its passes' triangles take at most this many bytes.
 const TRIANGLE_BYTES_PER_GROUP: usize = 64 << 20;
+
+/// When adaptive supersampling refines (`Supersampling::refining_order`), a marked pixel gets
+/// the rest of its samples where its four corner samples' mean is more than this times the
+/// contrast from its centre: a step the contrast mask just catches (a second difference of the
+/// contrast) moves that mean by a quarter of itself when it crosses one corner sample.
+const REFINE_CONTRAST: f32 = 0.25;
 
 /// Rows per band for a `width`-wide image within `budget_bytes`: whole tiles, at least one.
 pub fn band_rows(width: u32, height: u32, budget_bytes: u64) -> u32 {
@@ -51,8 +57,11 @@ pub struct BandBuffers {
     /// The band: each pass adds its weighted samples into it, in place (linear RGB, row-major).
     /// Its depth is the last pass's at each pixel.
     frame: Framebuffer,
-    /// Adaptive supersampling: the pixels that get every sample.
+    /// Adaptive supersampling: the pixels that get every sample, or (when it refines) the
+    /// first samples.
     mask: Vec<bool>,
+    /// Refining adaptive supersampling: the marked pixels that get the rest of their samples.
+    refined: Vec<bool>,
 }
 
 impl Default for BandBuffers {
@@ -60,6 +69,7 @@ impl Default for BandBuffers {
         BandBuffers {
             frame: Framebuffer::new(0, 0, Vec3::ZERO),
             mask: Vec::new(),
+            refined: Vec::new(),
         }
     }
 }
@@ -154,40 +164,68 @@ impl<S: FragmentShader> BandJob<'_, S> {
             }
             on_pass();
         }
-        // The first pass replaces (marked) pixels with its weighted sample, the others add
-        // theirs: unmarked pixels keep their centre.
-        let weight = 1.0 / offsets.len() as f32;
+        let refining = adaptive.and(self.supersampling.refining_order());
+        let (offsets, first_samples) = match refining {
+            Some((order, first)) => (order, Some(first)),
+            None => (offsets, None),
+        };
+        let count = offsets.len();
         let only = adaptive.map(|_| &mask[..]);
-        let last = offsets.len() - 1;
+        let blend = |k: usize| pass_blend(k, count, first_samples);
         let footprint = self.supersampling.footprint();
-        let passes: Vec<RenderTarget> = (offsets.into_iter().enumerate())
-            .map(|(k, offset)| {
-                let blend = if k == 0 {
-                    Blend::Scale(weight)
-                } else {
-                    Blend::Add(weight)
-                };
-                let pass = target(offset, footprint, only, blend);
-                if k == last {
-                    finishing(pass)
-                } else {
-                    RenderTarget {
-                        writes_depth: false,
-                        ..pass
-                    }
+        let pass = |k: usize| {
+            let pass = target(offsets[k], footprint, None, blend(k));
+            if k == count - 1 {
+                finishing(pass)
+            } else {
+                RenderTarget {
+                    writes_depth: false,
+                    ..pass
                 }
-            })
-            .collect();
+            }
+        };
         let band_pixels = viewport.width as usize * viewport.height as usize;
         let per_group = passes_per_group(band_pixels, self.prepared.triangle_count());
-        for group in passes.chunks(per_group) {
+        let mut refined = std::mem::take(&mut buffers.refined);
+        let mut start = 0;
+        while start < count {
             if !keep_going() {
                 return None;
             }
-            let done = render_passes_into(self.prepared, group, self.shader, &mut buffers.frame);
+            // A refinement is decided within the group that holds its first samples and the
+            // first of the rest; later groups refine the pixels it recorded.
+            let size = match first_samples {
+                Some(first) if start == 0 => per_group.max(first + 1),
+                _ => per_group,
+            };
+            let end = (start + size).min(count);
+            let mut group: Vec<RenderTarget> = (start..end).map(pass).collect();
+            let (prepared, shader, frame) = (self.prepared, self.shader, &mut buffers.frame);
+            let done = match first_samples {
+                Some(first) if start == 0 => {
+                    group.iter_mut().for_each(|pass| pass.mask = only);
+                    let refinement = Refinement {
+                        from_pass: first,
+                        threshold: adaptive.unwrap_or_default() * REFINE_CONTRAST,
+                        refined: &mut refined,
+                    };
+                    render_refining_passes_into(prepared, &group, shader, frame, Some(refinement))
+                }
+                refining => {
+                    let mask = if refining.is_some() {
+                        Some(&refined[..])
+                    } else {
+                        only
+                    };
+                    group.iter_mut().for_each(|pass| pass.mask = mask);
+                    render_passes_into(prepared, &group, shader, frame)
+                }
+            };
             stats = add_stats(stats, done);
-            group.iter().for_each(|_| on_pass());
+            (start..end).for_each(|_| on_pass());
+            start = end;
         }
+        buffers.refined = refined;
         buffers.mask = mask;
         Some(stats)
     }
@@ -199,6 +237,24 @@ fn passes_per_group(pixels: usize, triangles: usize) -> usize {
     let by_pixels = PIXEL_PASSES_PER_GROUP / pixels.max(1);
     let by_triangles = TRIANGLE_BYTES_PER_GROUP / (triangles * size_of::<ScreenTriangle>()).max(1);
     by_pixels.min(by_triangles).max(1)
+}
+
+/// How pass `k` of `count` meets the band: the first replaces (marked) pixels with its weighted
+/// sample and the others add theirs, so unmarked pixels keep their centre. When the first
+/// `first` samples come before a refinement, they make their own mean, and the pass after them
+/// turns it into their share of the mean of all (`Blend::Rescale`).
+fn pass_blend(k: usize, count: usize, first_samples: Option<usize>) -> Blend {
+    let weight = |n: usize| 1.0 / n as f32;
+    match first_samples {
+        Some(first) if k == 0 => Blend::Scale(weight(first)),
+        Some(first) if k < first => Blend::Add(weight(first)),
+        Some(first) if k == first => Blend::Rescale {
+            kept: first as f32 / count as f32,
+            weight: weight(count),
+        },
+        _ if k == 0 => Blend::Scale(weight(count)),
+        _ => Blend::Add(weight(count)),
+    }
 }
 
 fn add_stats(a: FrameStats, b: FrameStats) -> FrameStats {

@@ -75,6 +75,32 @@ impl Supersampling {
             .collect()
     }
 
+    /// The offsets in the order adaptive supersampling takes them when it refines (see
+    /// `still::bands`), and how many come first: for the box filter and at least 8 samples, the
+    /// four nearest the pixel's corners, then the rest. None for other filters and counts: the
+    /// tent's samples crowd the centre, and four of them estimate its pixel poorly (simulated
+    /// on the POV-Ray peer's frame: mean error 0.85 of 255 against the box's 0.06).
+    pub fn refining_order(&self) -> Option<(Vec<Vec2>, usize)> {
+        let offsets = self.offsets();
+        if self.filter != ResolveFilter::Box || offsets.len() < 8 {
+            return None;
+        }
+        let corners = [(-0.5, -0.5), (0.5, -0.5), (-0.5, 0.5), (0.5, 0.5)].map(|(x, y)| {
+            let corner = Vec2::new(x, y);
+            let distance = |k: &usize| offsets[*k].distance_squared(corner);
+            (0..offsets.len())
+                .min_by(|a, b| distance(a).total_cmp(&distance(b)))
+                .expect("at least 8 offsets")
+        });
+        let rest = (0..offsets.len()).filter(|k| !corners.contains(k));
+        let order: Vec<Vec2> = corners
+            .into_iter()
+            .chain(rest)
+            .map(|k| offsets[k])
+            .collect();
+        (order.len() == offsets.len()).then_some((order, corners.len()))
+    }
+
     /// The spacing of the samples in pixels: scales texture-footprint derivatives so that a
     /// supersampled still keeps the detail its samples can resolve.
     pub fn footprint(&self) -> f32 {
@@ -174,6 +200,49 @@ mod tests {
                 );
             }
         }
+    }
+
+    #[test]
+    fn refinement_takes_the_box_samples_nearest_the_corners_first() {
+        for samples in [8, 16, 64, 100] {
+            let box_filter = Supersampling {
+                samples,
+                filter: ResolveFilter::Box,
+            };
+            let (order, first) = box_filter.refining_order().expect("box refines");
+            assert_eq!(first, 4);
+            // The same offsets, the four first one in each quadrant, each the nearest of all
+            // to its corner.
+            let mut sorted = order.clone();
+            let mut offsets = box_filter.offsets();
+            let key = |o: &Vec2| (o.x.to_bits(), o.y.to_bits());
+            sorted.sort_by_key(key);
+            offsets.sort_by_key(key);
+            assert_eq!(sorted, offsets, "{samples}");
+            for corner in &order[..4] {
+                let towards = corner.signum() * 0.5;
+                let nearest = offsets
+                    .iter()
+                    .map(|o| o.distance(towards))
+                    .fold(f32::MAX, f32::min);
+                assert_eq!(corner.distance(towards), nearest, "{samples}: {corner}");
+            }
+            let quadrants: Vec<Vec2> = order[..4].iter().map(|o| o.signum()).collect();
+            assert!(
+                (0..4).all(|i| !quadrants[i + 1..].contains(&quadrants[i])),
+                "{samples}"
+            );
+        }
+        let tent = Supersampling {
+            samples: 16,
+            filter: ResolveFilter::Tent,
+        };
+        assert!(tent.refining_order().is_none());
+        let few = Supersampling {
+            samples: 4,
+            filter: ResolveFilter::Box,
+        };
+        assert!(few.refining_order().is_none());
     }
 
     #[test]
