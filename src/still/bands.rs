@@ -19,8 +19,8 @@ const BYTES_PER_BAND_PIXEL: u64 = 17;
 /// Supersampling passes are rendered a group at a time, tile by tile (`render_passes_into`): the
 /// more passes a group holds, the less often a tile's pixels and texels leave the cache, but
 /// passes are cancelled and reported a group at a time, and each pass of a group holds its set-up
-/// triangles. A group covers at most this many pixels times passes (eight passes of a 1080p
-/// band, about a third of a second at 16 samples)…
+/// triangles. A group renders at most this many pixels times passes (eight passes of a 1080p
+/// band, about a third of a second at 16 samples; adaptive passes count their marked pixels)…
 const PIXEL_PASSES_PER_GROUP: usize = 8 * 1920 * 1080;
 
 /// …and its passes' triangles take at most this many bytes.
@@ -184,8 +184,12 @@ impl<S: FragmentShader> BandJob<'_, S> {
                 }
             }
         };
-        let band_pixels = viewport.width as usize * viewport.height as usize;
-        let per_group = passes_per_group(band_pixels, self.prepared.triangle_count());
+        // Passes render only the marked pixels when adaptive: groups are sized by those.
+        let rendered = match adaptive {
+            Some(_) => mask.iter().filter(|&&marked| marked).count(),
+            None => viewport.width as usize * viewport.height as usize,
+        };
+        let per_group = passes_per_group(rendered, self.prepared.triangle_count());
         let mut refined = std::mem::take(&mut buffers.refined);
         let mut start = 0;
         while start < count {
@@ -289,6 +293,8 @@ mod tests {
         // The POV-Ray peer's scene (16 130 triangles) at 1080p, then in an 8K still's bands.
         assert_eq!(passes_per_group(hd, 16_130), 8);
         assert_eq!(passes_per_group(7680 * 1024, 16_130), 2);
+        // An adaptive 1080p still marking a fifth of its pixels: all 16 passes in one group.
+        assert!(passes_per_group(hd / 5, 16_130) >= 16);
         // A sphere tessellated at the densest setting: one pass at a time.
         assert_eq!(passes_per_group(hd, 4096 * 2048 * 2), 1);
         assert_eq!(
