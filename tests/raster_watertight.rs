@@ -8,7 +8,8 @@ use bumpwork::raster::{
     Fragment, FrameObject, ImageWindow, PerFragment, PreparedScene, render_with,
 };
 use bumpwork::raster::{
-    RenderTarget, SampleShift, ShiftSpan, Viewport, frame_objects, screen_triangles,
+    PixelRect, RenderTarget, SampleShift, ShiftSpan, Viewport, frame_objects, scan_shifted,
+    screen_triangles,
 };
 use bumpwork::scene::{Light, Material, Object, Scene};
 use bumpwork::surface::{Sphere, Surface, Tessellation};
@@ -325,5 +326,40 @@ fn a_shifted_pass_over_sub_pixel_triangles_has_no_holes() {
                 }
             }
         }
+    }
+}
+
+proptest! {
+    /// Scanning within any clip rectangle finds exactly the pixels whose own sample point the
+    /// triangle covers: the whole-rectangle rejection (an edge outside at all four corners) is
+    /// exact, for big triangles whose bounds reach far past them as for small ones.
+    #[test]
+    fn a_clipped_scan_finds_exactly_the_covered_samples(
+        corners in prop::array::uniform3((-60.0..124.0f64, -60.0..108.0f64)),
+        shift in (-0.5..0.5f32, -0.5..0.5f32),
+        clip in (0..64u32, 0..48u32, 0..64u32, 0..48u32),
+    ) {
+        let shift_offset = Vec2::new(shift.0, shift.1);
+        let span = ShiftSpan::of([SampleShift::new(shift_offset)].into_iter());
+        let Some(t) = shifted_screen_triangle(VIEWPORT, corners, &span) else {
+            return Ok(());
+        };
+        let shift = SampleShift::new(shift_offset);
+        let clip = PixelRect {
+            x0: clip.0.min(clip.2),
+            y0: clip.1.min(clip.3),
+            x1: clip.0.max(clip.2),
+            y1: clip.1.max(clip.3),
+        };
+        let mut scanned = Vec::new();
+        scan_shifted(&t, &clip, &shift, |x, y| scanned.push((x, y)));
+        let mut one_by_one = Vec::new();
+        for y in clip.y0..=clip.y1 {
+            for x in clip.x0..=clip.x1 {
+                let pixel = PixelRect { x0: x, y0: y, x1: x, y1: y };
+                scan_shifted(&t, &pixel, &shift, |x, y| one_by_one.push((x, y)));
+            }
+        }
+        prop_assert_eq!(scanned, one_by_one);
     }
 }

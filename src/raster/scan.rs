@@ -77,6 +77,9 @@ pub fn triangle_rows(
         .edges
         .map(|e| e.at_origin + shift.edge_change(&e) + e.step_x * skip_x + e.step_y * skip_y);
     let steps = triangle.edges.map(|e| e.step_x);
+    if misses_every_sample(triangle, at, &rect) {
+        return;
+    }
     for y in rect.y0..=rect.y1 {
         row(RowSpan {
             y,
@@ -88,6 +91,22 @@ pub fn triangle_rows(
             *at += e.step_y;
         }
     }
+}
+
+/// Whether one of the triangle's edges has every sample point of `rect` outside it: then it
+/// covers none of them, and its rows need not be walked. `at` is the edge functions at the
+/// rect's first sample. Edge functions are linear, so an edge negative at the four corner
+/// samples is negative at every sample between (exact: the integers `triangle_rows` steps).
+/// Big triangles' bounds cover whole tiles they do not touch: a plane's two halves share their
+/// bounds, so each tile of one half held the other too.
+#[inline(always)]
+fn misses_every_sample(triangle: &ScreenTriangle, at: [i64; 3], rect: &PixelRect) -> bool {
+    let (w, h) = ((rect.x1 - rect.x0) as i64, (rect.y1 - rect.y0) as i64);
+    (0..3).any(|i| {
+        let (e, at) = (&triangle.edges[i], at[i]);
+        let (right, down) = (e.step_x * w, e.step_y * h);
+        (at & (at + right) & (at + down) & (at + right + down)) < 0
+    })
 }
 
 /// Calls `covered(x, y)` for every pixel of `clip` whose centre the triangle covers.
