@@ -11,10 +11,10 @@ use crate::raster::{
 use glam::{Vec2, Vec3};
 use std::ops::Range;
 
-/// Bytes a band may hold per pixel: the framebuffer its passes add into (colour and depth) and
-/// the adaptive mask. Not counted: the band's 8-bit rows waiting for the still's writer, at most
+/// Bytes a band may hold per pixel: the framebuffer its passes add into (colour and depth), the
+/// adaptive mask and the refined pixels. Not counted: the band's 8-bit rows waiting for the still's writer, at most
 /// 3 more a pixel and in practice under half of that (an 8K adaptive still peaks at 152 MiB).
-const BYTES_PER_BAND_PIXEL: u64 = 17;
+const BYTES_PER_BAND_PIXEL: u64 = 18;
 
 /// Supersampling passes are rendered a group at a time, tile by tile (`render_passes_into`): the
 /// more passes a group holds, the less often a tile's pixels and texels leave the cache, but
