@@ -37,7 +37,9 @@ pub struct RenderArgs {
     samples: Option<u32>,
     /// Adaptive supersampling: a pass at pixel centres, then every sample only where a pixel and
     /// a neighbour differ in coverage or by more than CONTRAST per channel of √colour (0.02 is
-    /// within 1/255 of full supersampling on average) [default: every pixel fully sampled].
+    /// within 1/255 of full supersampling on average); with the box filter, the four samples
+    /// nearest the corners first, the rest where they moved the pixel by over CONTRAST/4
+    /// [default: every pixel fully sampled].
     #[arg(long, value_name = "CONTRAST", value_parser = parse_contrast)]
     adaptive: Option<f32>,
     /// How samples are resolved [default: tent].
