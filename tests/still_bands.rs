@@ -4,8 +4,8 @@
 mod common;
 
 use bumpwork::raster::{
-    Camera, Fragment, FrameObject, Framebuffer, ImageWindow, Interpolation, PerFragment,
-    PreparedScene, RenderTarget, Viewport, render_with,
+    Camera, Fragment, FrameObject, FrameStats, Framebuffer, ImageWindow, Interpolation,
+    PerFragment, PreparedScene, RenderTarget, Viewport, render_with,
 };
 use bumpwork::scene::{Material, Object, Scene};
 use bumpwork::still::{
@@ -60,6 +60,17 @@ fn with_job<R>(
         adaptive,
     };
     work(&job)
+}
+
+/// The white triangle supersampled in memory, adaptively at `adaptive` if given.
+fn supersampled(
+    full: Viewport,
+    supersampling: Supersampling,
+    adaptive: Option<f32>,
+) -> (Framebuffer, FrameStats) {
+    with_job(full, supersampling, adaptive, |job| {
+        render_supersampled(job, &mut BandBuffers::default())
+    })
 }
 
 fn render(samples: u32, filter: ResolveFilter, full: Viewport) -> Framebuffer {
@@ -198,13 +209,8 @@ fn adaptive_supersampling_samples_every_edge_pixel_fully_and_shades_far_fewer() 
         samples: 16,
         filter: ResolveFilter::Tent,
     };
-    let run = |adaptive| {
-        with_job(VIEW, supersampling, adaptive, |job| {
-            render_supersampled(job, &mut BandBuffers::default())
-        })
-    };
-    let (full, full_stats) = run(None);
-    let (adaptive, adaptive_stats) = run(Some(0.02));
+    let (full, full_stats) = supersampled(VIEW, supersampling, None);
+    let (adaptive, adaptive_stats) = supersampled(VIEW, supersampling, Some(0.02));
     // Flat inside and outside: an edge line crossing a pixel's filter square (at most a pixel
     // from its centre) separates the pixel's centre from a neighbour's, so the pixel is marked
     // and gets the very samples of full supersampling. Only a corner of the triangle can poke
@@ -233,13 +239,8 @@ fn refining_box_supersampling_misses_at_most_one_sample_where_an_edge_crosses() 
         width: 960,
         height: 720,
     };
-    let run = |adaptive| {
-        with_job(view, supersampling, adaptive, |job| {
-            render_supersampled(job, &mut BandBuffers::default())
-        })
-    };
-    let (full, full_stats) = run(None);
-    let (adaptive, adaptive_stats) = run(Some(0.1));
+    let (full, full_stats) = supersampled(view, supersampling, None);
+    let (adaptive, adaptive_stats) = supersampled(view, supersampling, Some(0.1));
     // A marked pixel whose four corner samples agree with its centre stops there. A straight
     // edge that misses all five can cut off only a sample outside the corners' hull (one near
     // the middle of a side), so such a pixel is off by at most one sample's weight, 1/16 of

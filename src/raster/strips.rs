@@ -89,15 +89,14 @@ impl<S: FragmentShader> StripJob<'_, S> {
                             keep_before(color, width, first_row, &rect, &mut tile.before);
                         }
                         if k == from {
-                            let before = &tile.before;
-                            let rows = (width, first_row, &rect, threshold);
-                            mark_refined(color, before, mask, refined, rows);
+                            let place = (width, first_row, &rect, threshold);
+                            mark_refined(color, &tile.before, mask, refined, place);
+                            if !any_wanted(Some(refined), width, first_row, &rect) {
+                                break;
+                            }
                         }
                         if k >= from {
                             wanted = Some(&*refined);
-                            if !any_wanted(wanted, width, first_row, &rect) {
-                                break;
-                            }
                         }
                     }
                     let out = StripOutput {
