@@ -12,8 +12,9 @@ use glam::{Vec2, Vec3};
 use std::ops::Range;
 
 /// Bytes a band may hold per pixel: the framebuffer its passes add into (colour and depth), the
-/// adaptive mask and the refined pixels. Not counted: the band's 8-bit rows waiting for the still's writer, at most
-/// 3 more a pixel and in practice under half of that (an 8K adaptive still peaks at 152 MiB).
+/// adaptive mask and the refined pixels. Not counted: the band's 8-bit rows waiting for the
+/// still's writer, at most 3 more a pixel and in practice under half of that (an 8K adaptive
+/// still peaks at 134–141 MB).
 const BYTES_PER_BAND_PIXEL: u64 = 18;
 
 /// Supersampling passes are rendered a group at a time, tile by tile (`render_passes_into`): the
@@ -215,8 +216,9 @@ impl<S: FragmentShader> BandJob<'_, S> {
                     };
                     render_refining_passes_into(prepared, &group, shader, frame, Some(refinement))
                 }
-                refining => {
-                    let mask = if refining.is_some() {
+                later => {
+                    // Groups after a refining one render the pixels it refined.
+                    let mask = if later.is_some() {
                         Some(&refined[..])
                     } else {
                         only
