@@ -16,58 +16,57 @@ pub struct Refinement<'a> {
     pub refined: &'a mut Vec<bool>,
 }
 
-/// Where a tile's pixels sit in a strip of `width`-pixel rows starting at row `first_row`: the
-/// strip index of each row's first pixel in `rect`, and the rect's width.
-fn rows(rect: &PixelRect, width: u32, first_row: u32) -> (impl Iterator<Item = usize>, usize) {
-    let starts = (rect.y0..=rect.y1).map(move |y| ((y - first_row) * width + rect.x0) as usize);
-    (starts, (rect.x1 - rect.x0 + 1) as usize)
+/// Where a tile's pixels sit in a strip of `width`-pixel rows starting at row `first_row`.
+pub(super) struct TileRows<'r> {
+    pub width: u32,
+    pub first_row: u32,
+    pub rect: &'r PixelRect,
 }
 
-/// Copies the colours of `rect` (in a strip as `rows` places it) into `before`, row after row.
-pub(super) fn keep_before(
-    color: &[Vec3],
-    width: u32,
-    first_row: u32,
-    rect: &PixelRect,
-    before: &mut Vec<Vec3>,
-) {
-    before.clear();
-    let (starts, n) = rows(rect, width, first_row);
-    for start in starts {
-        before.extend_from_slice(&color[start..start + n]);
+impl TileRows<'_> {
+    /// The strip's pixels of each of the rect's rows, top to bottom.
+    fn each(&self) -> impl Iterator<Item = std::ops::Range<usize>> + '_ {
+        let n = (self.rect.x1 - self.rect.x0 + 1) as usize;
+        (self.rect.y0..=self.rect.y1).map(move |y| {
+            let start = ((y - self.first_row) * self.width + self.rect.x0) as usize;
+            start..start + n
+        })
     }
 }
 
-/// Records in `refined` which pixels of `rect` are to be refined: those `wanted` (all when
-/// `None`) whose colour moved by more than `threshold` from `before` (`keep_before`'s copy).
-/// `(width, first_row, rect, threshold)`: where the rect sits (see `rows`) and the threshold.
+/// Copies the colours of the tile at `rows` into `before`, row after row.
+pub(super) fn keep_before(color: &[Vec3], rows: &TileRows, before: &mut Vec<Vec3>) {
+    before.clear();
+    for pixels in rows.each() {
+        before.extend_from_slice(&color[pixels]);
+    }
+}
+
+/// Records in `refined` which pixels of the tile at `rows` are to be refined: those `wanted`
+/// (all when `None`) whose colour moved by more than `threshold` from `before`
+/// (`keep_before`'s copy).
 pub(super) fn mark_refined(
     color: &[Vec3],
     before: &[Vec3],
     wanted: Option<&[bool]>,
     refined: &mut [bool],
-    (width, first_row, rect, threshold): (u32, u32, &PixelRect, f32),
+    rows: &TileRows,
+    threshold: f32,
 ) {
-    let (starts, n) = rows(rect, width, first_row);
-    for (start, before) in starts.zip(before.chunks_exact(n)) {
-        let pixels = start..start + n;
-        let now = &color[pixels.clone()];
-        for (i, (out, (&now, &before))) in refined[pixels.clone()]
-            .iter_mut()
-            .zip(now.iter().zip(before))
-            .enumerate()
-        {
-            let is_wanted = wanted.is_none_or(|wanted| wanted[start + i]);
-            *out = is_wanted && moved(now, before, threshold);
+    let mut before = before.iter();
+    for pixels in rows.each() {
+        for i in pixels {
+            let is_wanted = wanted.is_none_or(|wanted| wanted[i]);
+            let before = *before.next().expect("keep_before kept this tile");
+            refined[i] = is_wanted && moved(color[i], before, threshold);
         }
     }
 }
 
-/// Marks every pixel of `rect` as not refined.
-pub(super) fn mark_none(refined: &mut [bool], width: u32, first_row: u32, rect: &PixelRect) {
-    let (starts, n) = rows(rect, width, first_row);
-    for start in starts {
-        refined[start..start + n].fill(false);
+/// Marks every pixel of the tile at `rows` as not refined.
+pub(super) fn mark_none(refined: &mut [bool], rows: &TileRows) {
+    for pixels in rows.each() {
+        refined[pixels].fill(false);
     }
 }
 

@@ -5,7 +5,7 @@ use super::bin::{TILE_SIZE, TileBins};
 use super::fragment::{FragmentShader, FrameObject};
 use super::framebuffer::{Blend, encode_srgb8};
 use super::pipeline::{Interpolation, RenderTarget, shifted_screen_triangles};
-use super::refine::{keep_before, mark_none, mark_refined};
+use super::refine::{TileRows, keep_before, mark_none, mark_refined};
 use super::scan::PixelRect;
 use super::setup::{SampleShift, ScreenTriangle, ShiftSpan, Viewport};
 use super::tile::{StripOutput, TileBuffers, TileFrame, any_wanted};
@@ -81,16 +81,21 @@ impl<S: FragmentShader> StripJob<'_, S> {
         for (tx, known_background) in (0..self.tiles_x).zip(known_background) {
             let rect = strip_tile_rect(self.viewport, tx, index);
             let first_row = rect.y0;
+            let tile_rows = TileRows {
+                width,
+                first_row,
+                rect: &rect,
+            };
             if any_wanted(mask, width, first_row, &rect) {
                 for (k, pass) in self.passes.iter().enumerate() {
                     let mut wanted = mask;
                     if let Some((from, threshold)) = self.refinement {
                         if k == 0 {
-                            keep_before(color, width, first_row, &rect, &mut tile.before);
+                            keep_before(color, &tile_rows, &mut tile.before);
                         }
                         if k == from {
-                            let place = (width, first_row, &rect, threshold);
-                            mark_refined(color, &tile.before, mask, refined, place);
+                            let before = &tile.before;
+                            mark_refined(color, before, mask, refined, &tile_rows, threshold);
                             if !any_wanted(Some(refined), width, first_row, &rect) {
                                 break;
                             }
@@ -115,7 +120,7 @@ impl<S: FragmentShader> StripJob<'_, S> {
                     counts = (counts.0 + shaded, counts.1 + flattened);
                 }
             } else if self.refinement.is_some() {
-                mark_none(refined, width, first_row, &rect);
+                mark_none(refined, &tile_rows);
             }
             if let Some(bytes) = bytes.as_deref_mut().filter(|_| !self.bytes_only) {
                 encode_tile(color, width, &rect, bytes);
