@@ -134,7 +134,9 @@ fn main() {
 }
 
 /// Contrasts of adaptive supersampling measured against full supersampling, least first.
-const CONTRASTS: [f32; 9] = [0.02, ADAPTIVE, 0.06, 0.07, 0.08, 0.1, 0.15, 0.2, 0.3];
+const CONTRASTS: [f32; 11] = [
+    0.02, ADAPTIVE, 0.07, 0.08, 0.09, 0.1, 0.11, 0.12, 0.15, 0.2, 0.3,
+];
 
 /// How far an antialiased frame lands from its renderer's full supersampling, in 8-bit sRGB
 /// steps over every channel.

@@ -4,8 +4,9 @@
 //! weighted colours into what is there (supersampling's passes), touch only their pixels.
 
 use bumpwork::raster::{
-    Blend, Framebuffer, ImageWindow, PreparedScene, Refinement, RenderTarget, STRIP_ROWS,
-    Srgb8Strips, Viewport, render, render_into, render_passes_into, render_refining_passes_into,
+    Blend, Framebuffer, ImageWindow, PreparedScene, RefineRule, Refinement, RenderTarget,
+    STRIP_ROWS, Srgb8Strips, Viewport, render, render_into, render_passes_into,
+    render_refining_passes_into,
 };
 use bumpwork::scene::{Scene, preset};
 use bumpwork::shade::LitShader;
@@ -413,6 +414,24 @@ fn refined_by_definition(
         .collect()
 }
 
+/// Settles the wanted pixels that are not refined by definition: `centre_weight` of their
+/// colour `before` the group, the rest of what its first passes made of them (`after`).
+fn settle_by_definition(
+    before: &Framebuffer,
+    after: &mut Framebuffer,
+    settled: impl Fn(usize) -> bool,
+    centre_weight: f32,
+) {
+    for (i, (after, &before)) in after.color_mut().iter_mut().zip(before.color()).enumerate() {
+        if settled(i) {
+            *after = *after * (1.0 - centre_weight) + before * centre_weight;
+        }
+    }
+}
+
+/// What the refinement tests keep of a settled pixel's colour before the group.
+const CENTRE_WEIGHT: f32 = 0.3;
+
 #[test]
 fn refining_passes_render_only_the_moved_pixels_as_separate_passes_would() {
     let far = far_sphere(Vec3::splat(0.1));
@@ -430,6 +449,8 @@ fn refining_passes_render_only_the_moved_pixels_as_separate_passes_would() {
                 render_into(&far, pass, &shader, &mut want);
             }
             let expected = refined_by_definition(&before, &want, mask, threshold);
+            let settled = |i: usize| mask.is_none_or(|m| m[i]) && !expected[i];
+            settle_by_definition(&before, &mut want, settled, CENTRE_WEIGHT);
             for pass in &passes[2..] {
                 let pass = RenderTarget {
                     mask: Some(&expected),
@@ -440,8 +461,11 @@ fn refining_passes_render_only_the_moved_pixels_as_separate_passes_would() {
             let mut got = before.clone();
             let mut refined = vec![true; 3];
             let refinement = Refinement {
-                from_pass: 2,
-                threshold,
+                rule: RefineRule {
+                    from_pass: 2,
+                    threshold,
+                    centre_weight: CENTRE_WEIGHT,
+                },
                 refined: &mut refined,
             };
             render_refining_passes_into(&far, &passes, &shader, &mut got, Some(refinement));

@@ -38,7 +38,7 @@ pub struct RenderArgs {
     /// Adaptive supersampling: a pass at pixel centres, then every sample only where a pixel and
     /// a neighbour differ in coverage or by more than CONTRAST per channel of √colour (0.02 is
     /// within 1/255 of full supersampling on average); with the box filter, the four samples
-    /// nearest the corners first, the rest where they moved the pixel by over CONTRAST/4
+    /// nearest the corners first, the rest where they moved the pixel by over 0.4 × CONTRAST
     /// [default: every pixel fully sampled].
     #[arg(long, value_name = "CONTRAST", value_parser = parse_contrast)]
     adaptive: Option<f32>,

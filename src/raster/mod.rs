@@ -31,7 +31,7 @@ pub use pipeline::{
     frame_objects, render, render_into, render_passes_into, render_refining_passes_into,
     render_with, screen_triangles,
 };
-pub use refine::Refinement;
+pub use refine::{RefineRule, Refinement};
 pub use scan::{PixelRect, scan_shifted, scan_triangle};
 pub use setup::{SUBPIXEL_BITS, SampleShift, ScreenTriangle, ShiftSpan, TrianglePlanes, Viewport};
 pub use strips::STRIP_ROWS;

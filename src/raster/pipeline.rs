@@ -258,7 +258,7 @@ pub fn render_refining_passes_into(
     assert!(
         refinement
             .as_ref()
-            .is_none_or(|r| r.from_pass < targets.len()),
+            .is_none_or(|r| r.rule.from_pass < targets.len()),
         "a refinement starts at one of the group's passes"
     );
     let shared = |t: &RenderTarget| {
@@ -300,7 +300,7 @@ pub fn render_refining_passes_into(
             && last.mask.is_none()
             && last.blend == Blend::Replace
             && !last.writes_depth,
-        refinement: refinement.as_ref().map(|r| (r.from_pass, r.threshold)),
+        refinement: refinement.as_ref().map(|r| r.rule),
     };
     let mut no_framebuffer_known = Vec::new();
     let (strips, known_background) = if job.bytes_only {

@@ -5,7 +5,7 @@ use super::bin::{TILE_SIZE, TileBins};
 use super::fragment::{FragmentShader, FrameObject};
 use super::framebuffer::{Blend, encode_srgb8};
 use super::pipeline::{Interpolation, RenderTarget, shifted_screen_triangles};
-use super::refine::{TileRows, keep_before, mark_none, mark_refined};
+use super::refine::{RefineRule, TileRows, keep_before, mark_none, mark_refined};
 use super::scan::PixelRect;
 use super::setup::{SampleShift, ScreenTriangle, ShiftSpan, Viewport};
 use super::tile::{StripOutput, TileBuffers, TileFrame, any_wanted};
@@ -38,8 +38,8 @@ pub(super) struct StripJob<'a, S> {
     pub tiles_x: u32,
     /// Whether the strips' colours go only into their sRGB bytes (see `render_passes_into`).
     pub bytes_only: bool,
-    /// `Refinement::from_pass` and `threshold`, when the passes refine.
-    pub refinement: Option<(usize, f32)>,
+    /// The rule the passes refine by, if they do.
+    pub refinement: Option<RefineRule>,
 }
 
 /// One strip's share of the framebuffer (empty colour and depth when `bytes_only`).
@@ -89,18 +89,18 @@ impl<S: FragmentShader> StripJob<'_, S> {
             if any_wanted(mask, width, first_row, &rect) {
                 for (k, pass) in self.passes.iter().enumerate() {
                     let mut wanted = mask;
-                    if let Some((from, threshold)) = self.refinement {
+                    if let Some(rule) = &self.refinement {
                         if k == 0 {
                             keep_before(color, &tile_rows, &mut tile.before);
                         }
-                        if k == from {
+                        if k == rule.from_pass {
                             let before = &tile.before;
-                            mark_refined(color, before, mask, refined, &tile_rows, threshold);
+                            mark_refined(color, before, mask, refined, &tile_rows, rule);
                             if !any_wanted(Some(refined), width, first_row, &rect) {
                                 break;
                             }
                         }
-                        if k >= from {
+                        if k >= rule.from_pass {
                             wanted = Some(&*refined);
                         }
                     }

@@ -12,5 +12,5 @@ pub use bands::{BandBuffers, BandJob, band_rows, render_supersampled};
 pub use recipe::{
     FileHash, MAX_DENSITY, MAX_SIDE, ObjectState, Recipe, RecipeCamera, StillSettings,
 };
-pub use samples::{MAX_SAMPLES, ResolveFilter, Supersampling};
+pub use samples::{MAX_SAMPLES, RefiningOrder, ResolveFilter, Supersampling};
 pub use stream::{RowSink, StillStop, stream_still};

@@ -76,11 +76,11 @@ impl Supersampling {
     }
 
     /// The offsets in the order adaptive supersampling takes them when it refines (see
-    /// `still::bands`), and how many come first: for the box filter and at least 8 samples, the
-    /// four nearest the pixel's corners, then the rest. None for other filters and counts: the
-    /// tent's samples crowd the centre, and four of them estimate its pixel poorly (simulated
-    /// on the POV-Ray peer's frame: mean error 0.85 of 255 against the box's 0.06).
-    pub fn refining_order(&self) -> Option<(Vec<Vec2>, usize)> {
+    /// `still::bands`): for the box filter and at least 8 samples, the four nearest the pixel's
+    /// corners, then the rest. None for other filters and counts: the tent's samples crowd the
+    /// centre, and four of them estimate its pixel poorly (simulated on the POV-Ray peer's
+    /// frame: mean error 0.85 of 255 against the box's 0.06).
+    pub fn refining_order(&self) -> Option<RefiningOrder> {
         let offsets = self.offsets();
         if self.filter != ResolveFilter::Box || offsets.len() < 8 {
             return None;
@@ -98,7 +98,15 @@ impl Supersampling {
             .chain(rest)
             .map(|k| offsets[k])
             .collect();
-        (order.len() == offsets.len()).then_some((order, corners.len()))
+        let spread = |offsets: &[Vec2]| {
+            offsets.iter().map(|o| o.length_squared()).sum::<f32>() / offsets.len() as f32
+        };
+        let first = corners.len();
+        (order.len() == offsets.len()).then(|| RefiningOrder {
+            centre_weight: (1.0 - spread(&offsets) / spread(&order[..first])).max(0.0),
+            offsets: order,
+            first,
+        })
     }
 
     /// The spacing of the samples in pixels: scales texture-footprint derivatives so that a
@@ -106,6 +114,21 @@ impl Supersampling {
     pub fn footprint(&self) -> f32 {
         1.0 / (self.samples.max(1) as f32).sqrt()
     }
+}
+
+/// The order of a refining still's samples (`Supersampling::refining_order`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct RefiningOrder {
+    pub offsets: Vec<Vec2>,
+    /// How many come first, before the decision to take the rest.
+    pub first: usize,
+    /// The centre sample's share when a pixel stops after the first samples: the mix whose
+    /// mean squared distance from the pixel centre is the whole set's, so it averages a radial
+    /// quadratic (a bowl, a dome) as all the samples do, where the first samples alone, far
+    /// out at the corners, overweight its rim. On the POV-Ray peer's frame the stopped pixels
+    /// had less than half the error of their first samples' mean (simulated: 0.017 of 255
+    /// against 0.040, as a share of the frame's mean error).
+    pub centre_weight: f32,
 }
 
 /// The i-th of n Hammersley points in (0,1)²: x steps evenly, y is i's bits mirrored (the
@@ -209,7 +232,11 @@ mod tests {
                 samples,
                 filter: ResolveFilter::Box,
             };
-            let (order, first) = box_filter.refining_order().expect("box refines");
+            let RefiningOrder {
+                offsets: order,
+                first,
+                ..
+            } = box_filter.refining_order().expect("box refines");
             assert_eq!(first, 4);
             // The same offsets, the four first one in each quadrant, each the nearest of all
             // to its corner.
@@ -243,6 +270,30 @@ mod tests {
             filter: ResolveFilter::Box,
         };
         assert!(few.refining_order().is_none());
+    }
+
+    #[test]
+    fn a_settled_pixel_averages_a_radial_quadratic_as_all_its_samples_do() {
+        for samples in [8, 16, 64, 100] {
+            let box_filter = Supersampling {
+                samples,
+                filter: ResolveFilter::Box,
+            };
+            let order = box_filter.refining_order().expect("box refines");
+            let weight = order.centre_weight;
+            assert!((0.0..1.0).contains(&weight), "{samples}: {weight}");
+            // 3 + 2|o|², whose value at the centre is 3.
+            let f = |o: &Vec2| 3.0 + 2.0 * o.length_squared();
+            let mean = |offsets: &[Vec2]| offsets.iter().map(f).sum::<f32>() / offsets.len() as f32;
+            let settled = mean(&order.offsets[..order.first]) * (1.0 - weight) + 3.0 * weight;
+            let all = mean(&order.offsets);
+            assert!(
+                (settled - all).abs() < 1e-5,
+                "{samples}: {settled} vs {all}"
+            );
+            // The first samples lie far out: the centre weighs in.
+            assert!(weight > 0.2, "{samples}: {weight}");
+        }
     }
 
     #[test]
