@@ -1,7 +1,7 @@
 //! Refinement inside a group of passes: a pixel's first samples, then the rest only where
 //! those moved it from what it held before the group.
 
-use super::scan::PixelRect;
+use super::tile::TileRows;
 use glam::Vec3;
 
 /// Adaptive refinement within one group of passes (`render_refining_passes_into`): the passes
@@ -22,24 +22,6 @@ pub struct Refinement<'a> {
     /// Which pixels were refined, row-major over the viewport; every entry is written. The
     /// mask of any later group that goes on refining the same pixels.
     pub refined: &'a mut Vec<bool>,
-}
-
-/// Where a tile's pixels sit in a strip of `width`-pixel rows starting at row `first_row`.
-pub(super) struct TileRows<'r> {
-    pub width: u32,
-    pub first_row: u32,
-    pub rect: &'r PixelRect,
-}
-
-impl TileRows<'_> {
-    /// The strip's pixels of each of the rect's rows, top to bottom.
-    fn each(&self) -> impl Iterator<Item = std::ops::Range<usize>> + '_ {
-        let n = (self.rect.x1 - self.rect.x0 + 1) as usize;
-        (self.rect.y0..=self.rect.y1).map(move |y| {
-            let start = ((y - self.first_row) * self.width + self.rect.x0) as usize;
-            start..start + n
-        })
-    }
 }
 
 /// Copies the colours of the tile at `rows` into `before`, row after row.

@@ -5,10 +5,10 @@ use super::bin::{TILE_SIZE, TileBins};
 use super::fragment::{FragmentShader, FrameObject};
 use super::framebuffer::{Blend, encode_srgb8};
 use super::pipeline::{Interpolation, RenderTarget, shifted_screen_triangles};
-use super::refine::{RefineRule, TileRows, keep_before, mark_none, mark_refined};
+use super::refine::{RefineRule, keep_before, mark_none, mark_refined};
 use super::scan::PixelRect;
 use super::setup::{SampleShift, ScreenTriangle, ShiftSpan, Viewport};
-use super::tile::{StripOutput, TileBuffers, TileFrame, any_wanted};
+use super::tile::{StripOutput, TileBuffers, TileFrame, TileRows, any_wanted};
 use glam::Vec3;
 
 /// Rows in a strip: the unit of work a thread takes and of finished rows handed on. Half a
@@ -86,7 +86,7 @@ impl<S: FragmentShader> StripJob<'_, S> {
                 first_row,
                 rect: &rect,
             };
-            if any_wanted(mask, width, first_row, &rect) {
+            if any_wanted(mask, &tile_rows) {
                 for (k, pass) in self.passes.iter().enumerate() {
                     let mut wanted = mask;
                     if let Some(rule) = &self.refinement {
@@ -96,7 +96,7 @@ impl<S: FragmentShader> StripJob<'_, S> {
                         if k == rule.from_pass {
                             let before = &tile.before;
                             mark_refined(color, before, mask, refined, &tile_rows, rule);
-                            if !any_wanted(Some(refined), width, first_row, &rect) {
+                            if !any_wanted(Some(refined), &tile_rows) {
                                 break;
                             }
                         }

@@ -170,16 +170,30 @@ impl StripOutput<'_> {
     }
 }
 
-/// Whether `mask` (over a strip of `width`-pixel rows from row `first_row`; `None`: every
-/// pixel) wants any pixel of `rect`.
-pub fn any_wanted(mask: Option<&[bool]>, width: u32, first_row: u32, rect: &PixelRect) -> bool {
+/// Where a tile's pixels sit in a strip of `width`-pixel rows starting at row `first_row`.
+pub(super) struct TileRows<'r> {
+    pub width: u32,
+    pub first_row: u32,
+    pub rect: &'r PixelRect,
+}
+
+impl TileRows<'_> {
+    /// The strip's pixels of each of the rect's rows, top to bottom.
+    pub fn each(&self) -> impl Iterator<Item = Range<usize>> + '_ {
+        let n = (self.rect.x1 - self.rect.x0 + 1) as usize;
+        (self.rect.y0..=self.rect.y1).map(move |y| {
+            let start = ((y - self.first_row) * self.width + self.rect.x0) as usize;
+            start..start + n
+        })
+    }
+}
+
+/// Whether `mask` (over the strip; `None`: every pixel) wants any pixel of the tile at `rows`.
+pub(super) fn any_wanted(mask: Option<&[bool]>, rows: &TileRows) -> bool {
     let Some(mask) = mask else {
         return true;
     };
-    (rect.y0..=rect.y1).any(|y| {
-        let row = ((y - first_row) * width) as usize;
-        mask[row + rect.x0 as usize..=row + rect.x1 as usize].contains(&true)
-    })
+    rows.each().any(|pixels| mask[pixels].contains(&true))
 }
 
 /// Most of a frame is background: a grey one is written as plain f32s, which compiles to wide

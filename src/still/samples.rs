@@ -225,13 +225,17 @@ mod tests {
         }
     }
 
+    fn box_filter(samples: u32) -> Supersampling {
+        Supersampling {
+            samples,
+            filter: ResolveFilter::Box,
+        }
+    }
+
     #[test]
     fn refinement_takes_the_box_samples_nearest_the_corners_first() {
         for samples in [8, 16, 64, 100] {
-            let box_filter = Supersampling {
-                samples,
-                filter: ResolveFilter::Box,
-            };
+            let box_filter = box_filter(samples);
             let RefiningOrder {
                 offsets: order,
                 first,
@@ -265,21 +269,13 @@ mod tests {
             filter: ResolveFilter::Tent,
         };
         assert!(tent.refining_order().is_none());
-        let few = Supersampling {
-            samples: 4,
-            filter: ResolveFilter::Box,
-        };
-        assert!(few.refining_order().is_none());
+        assert!(box_filter(4).refining_order().is_none());
     }
 
     #[test]
     fn a_settled_pixel_averages_a_radial_quadratic_as_all_its_samples_do() {
         for samples in [8, 16, 64, 100] {
-            let box_filter = Supersampling {
-                samples,
-                filter: ResolveFilter::Box,
-            };
-            let order = box_filter.refining_order().expect("box refines");
+            let order = box_filter(samples).refining_order().expect("box refines");
             let weight = order.centre_weight;
             assert!((0.0..1.0).contains(&weight), "{samples}: {weight}");
             // 3 + 2|o|², whose value at the centre is 3.
