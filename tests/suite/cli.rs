@@ -1,0 +1,206 @@
+//! The command line as a user meets it: exit status, messages, files written or not.
+
+
+use crate::cli_support::*;
+use std::path::Path;
+
+#[test]
+fn list_prints_every_built_in_scene() {
+    let output = bumpwork(&["render", "--list"]);
+    assert!(output.status.success());
+    let names: Vec<String> = String::from_utf8(output.stdout)
+        .unwrap()
+        .lines()
+        .map(String::from)
+        .collect();
+    assert_eq!(names, bumpwork::scene::PRESET_NAMES);
+}
+
+#[test]
+fn render_writes_a_png_of_the_requested_size() {
+    let dir = temp_dir("render");
+    let out = dir.join("still.png");
+    let output = bumpwork(&[
+        "render",
+        "big-sphere-mesh",
+        "-o",
+        out.to_str().unwrap(),
+        "--size",
+        "120x90",
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let (width, height, pixels) = decode_png(&out);
+    assert_eq!((width, height), (120, 90));
+    // The sphere is lit: the centre is brighter than the corner background.
+    let at = |x: usize, y: usize| pixels[(y * 120 + x) * 3] as u32;
+    assert!(at(60, 45) > at(2, 2) + 50);
+    let leftovers: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(leftovers.len(), 1, "no temporary files left: {leftovers:?}");
+}
+
+#[test]
+fn a_scene_file_renders_wherever_a_name_does() {
+    let dir = temp_dir("file");
+    let scene = dir.join("mine.toml");
+    std::fs::write(
+        &scene,
+        "[camera]\neye = [0, 0, 5]\ntarget = [0, 0, 0]\n\n[[light]]\ndirectional = { towards = [0, 0, 1] }\n\n\
+         [[object]]\nsurface = { sphere = { center = [0, 0, 0], radius = 1 } }\n",
+    )
+    .unwrap();
+    let out = dir.join("mine.png");
+    let output = bumpwork(&[
+        "render",
+        scene.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+        "--size",
+        "32x32",
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert_eq!(decode_png(&out).0, 32);
+}
+
+#[test]
+fn unknown_scene_names_are_a_user_error_with_a_suggestion() {
+    let dir = temp_dir("unknown");
+    let out = dir.join("x.png");
+    let output = bumpwork(&["render", "plane-dimple", "-o", out.to_str().unwrap()]);
+    assert_user_error(&output, "unknown scene 'plane-dimple'");
+    assert!(stderr(&output).contains("did you mean 'plane-dimples'"));
+    assert!(!out.exists());
+}
+
+#[test]
+fn malformed_scene_files_point_at_line_and_column() {
+    let dir = temp_dir("malformed");
+    let out = dir.join("x.png");
+    let cases = [
+        (
+            "[camera]\neye = [0, 0, 5]\ntarget = [0, 0, 0]\n[[object]]\nsurface = { sphere = { center = [0, 0, 0], radius = -1 } }\n",
+            ":5:",
+            "expected a positive number",
+        ),
+        ("[camera]\neye = [0, 0, 5\n", ":2:", "error"),
+        (
+            "[camera]\neye = [0, 0, 5]\ntarget = [0, 0, 0]\nfov = 200\n[[object]]\nsurface = { sphere = { center = [0, 0, 0], radius = 1 } }\n",
+            ":4:7",
+            "between 0 and 180",
+        ),
+        (
+            "[camera]\neye = [0, 0, 5]\ntarget = [0, 0, 0]\n[[object]]\nsurface = { torus = {} }\n",
+            ":5:",
+            "unknown variant",
+        ),
+        (
+            "[camera]\neye = [0, 0, 5]\ntarget = [0, 0, 0]\nzoom = 3\n",
+            ":4:1",
+            "unknown field",
+        ),
+    ];
+    for (i, (text, location, what)) in cases.iter().enumerate() {
+        let scene = dir.join(format!("bad{i}.toml"));
+        std::fs::write(&scene, text).unwrap();
+        let output = bumpwork(&[
+            "render",
+            scene.to_str().unwrap(),
+            "-o",
+            out.to_str().unwrap(),
+        ]);
+        assert_user_error(&output, what);
+        let message = stderr(&output);
+        assert!(
+            message.contains(&format!("bad{i}.toml{location}")),
+            "case {i} location: {message}"
+        );
+        assert!(message.contains('^'), "case {i} has a caret: {message}");
+        assert!(!out.exists());
+    }
+}
+
+#[test]
+fn control_characters_in_file_names_are_escaped() {
+    let output = bumpwork(&["render", "evil\x1b[31m.toml", "-o", "/nonexistent/x.png"]);
+    assert_user_error(&output, "evil\\e[31m.toml");
+    assert!(!stderr(&output).contains('\x1b'));
+}
+
+#[test]
+fn bad_sizes_are_refused() {
+    for size in ["0x10", "10x0", "100000x100", "abc", "10x", "-5x5"] {
+        let output = bumpwork(&[
+            "render",
+            "plane-mesh",
+            "-o",
+            "/tmp/never.png",
+            &format!("--size={size}"),
+        ]);
+        assert_user_error(&output, "WIDTHxHEIGHT");
+    }
+}
+
+#[test]
+fn an_unwritable_destination_is_a_user_error_and_leaves_nothing() {
+    let dir = temp_dir("unwritable");
+    let out = dir.join("missing-dir").join("x.png");
+    let output = bumpwork(&[
+        "render",
+        "plane-mesh",
+        "-o",
+        out.to_str().unwrap(),
+        "--size",
+        "8x8",
+    ]);
+    assert_user_error(&output, "cannot write");
+    assert!(!out.exists());
+}
+
+#[test]
+fn check_accepts_good_files_and_reports_each_bad_one() {
+    let dir = temp_dir("check");
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let good = [
+        root.join("patterns/dimples.pat"),
+        root.join("textures/brick.png"),
+        root.join("scenes/sphere-on-plane.toml"),
+    ];
+    let args: Vec<&str> = std::iter::once("check")
+        .chain(good.iter().map(|p| p.to_str().unwrap()))
+        .collect();
+    let output = bumpwork(&args);
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert_eq!(
+        String::from_utf8_lossy(&output.stdout)
+            .matches(": ok: ")
+            .count(),
+        3
+    );
+
+    let pattern = dir.join("bad.pat");
+    std::fs::write(
+        &pattern,
+        "param period = 30 in 5..100\nheight = sin(u / period) + wobble(v)\n",
+    )
+    .unwrap();
+    let image = dir.join("bad.png");
+    std::fs::write(&image, b"\x89PNG\r\n\x1a\nthis is not a png").unwrap();
+    let other = dir.join("notes.txt");
+    std::fs::write(&other, "hello").unwrap();
+    let output = bumpwork(&[
+        "check",
+        pattern.to_str().unwrap(),
+        image.to_str().unwrap(),
+        other.to_str().unwrap(),
+    ]);
+    assert_user_error(&output, "3 of 3 files failed");
+    let message = stderr(&output);
+    assert!(
+        message.contains("bad.pat:2:28") && message.contains("wobble") && message.contains('^'),
+        "{message}"
+    );
+    assert!(message.contains("bad.png"), "{message}");
+    assert!(message.contains("notes.txt: not a pattern"), "{message}");
+}

@@ -1,0 +1,206 @@
+//! The reference's intersections and (u,v) inversions, surface by surface: every hit lies on the
+//! surface (frame(u,v) of the inverted (u,v) reproduces the hit point to 1e-4 of the surface's
+//! size), no hit is missed in front of a known surface point, and inversion undoes `frame`.
+
+
+use bumpwork::reference::{Ray, intersect, surface_uv};
+use bumpwork::surface::{AxisBasis, Cone, Paraboloid, Plane, Sphere, Surface, Triangle, Wave};
+use glam::{DVec3, Vec2, Vec3};
+use crate::reference_support::XorShift;
+
+fn surfaces() -> Vec<(&'static str, Surface, f64)> {
+    vec![
+        (
+            "plane",
+            Surface::Plane(Plane::new(
+                DVec3::new(-200.0, 0.0, 100.0),
+                Vec3::new(0.1, 1.0, 0.3),
+                Vec3::X,
+                Vec2::new(400.0, 300.0),
+            )),
+            400.0,
+        ),
+        (
+            "sphere",
+            Surface::Sphere(Sphere {
+                center: DVec3::new(1e6, -1e6, 1e6),
+                radius: 150.0,
+            }),
+            150.0,
+        ),
+        (
+            "paraboloid",
+            Surface::Paraboloid(Paraboloid {
+                apex: DVec3::ZERO,
+                basis: AxisBasis::from_axis(Vec3::new(0.2, 1.0, 0.4)),
+                curvature: 0.01,
+                radius: 100.0,
+            }),
+            100.0,
+        ),
+        (
+            "cone",
+            Surface::Cone(Cone {
+                apex: DVec3::new(0.0, 100.0, 0.0),
+                basis: AxisBasis::from_axis(-Vec3::Y),
+                half_angle: 0.4,
+                height: 200.0,
+            }),
+            200.0,
+        ),
+        (
+            "wave",
+            Surface::Wave(Wave {
+                origin: DVec3::new(-200.0, 0.0, 150.0),
+                size: Vec2::new(400.0, 300.0),
+                amplitude: 12.0,
+                wavelength: 100.0,
+            }),
+            400.0,
+        ),
+        (
+            "triangle",
+            Surface::Triangle(Triangle::new(
+                DVec3::new(-50.0, 0.0, 0.0),
+                DVec3::new(60.0, 10.0, -20.0),
+                DVec3::new(0.0, 90.0, 30.0),
+            )),
+            120.0,
+        ),
+    ]
+}
+
+/// A (u,v) strictly inside the surface's domain (inside the triangle for a triangle).
+fn random_uv(rng: &mut XorShift, surface: &Surface) -> Vec2 {
+    if let Surface::Triangle(t) = surface {
+        let (a, b) = (rng.next_f64() as f32, rng.next_f64() as f32);
+        let (a, b) = if a + b > 1.0 {
+            (1.0 - a, 1.0 - b)
+        } else {
+            (a, b)
+        };
+        let [p, q, r] = t.corners_uv;
+        return p + (q - p) * a + (r - p) * b;
+    }
+    let d = surface.domain();
+    let s = Vec2::new(rng.range(0.01, 0.99) as f32, rng.range(0.01, 0.99) as f32);
+    d.min + (d.max - d.min) * s
+}
+
+#[test]
+fn rays_aimed_at_surface_points_hit_the_surface_no_later() {
+    let mut rng = XorShift(0x5eed_1234_5678_9abc);
+    for (name, surface, size) in surfaces() {
+        let mut hits = 0;
+        for _ in 0..400 {
+            let uv = random_uv(&mut rng, &surface);
+            let frame = surface.frame(uv.x, uv.y);
+            let target = frame.p.as_dvec3();
+            let eye = target + rng.unit_vector() * rng.range(0.5, 4.0) * size;
+            let direction = target - eye;
+            // The f32 target may sit a hair off the surface: a ray grazing it there may rightly
+            // miss. Grazing rays have their own tests.
+            if frame.n.as_dvec3().dot(direction.normalize()).abs() < 0.05 {
+                hits += 1;
+                continue;
+            }
+            let ray = Ray {
+                origin: eye,
+                direction,
+            };
+            let hit = intersect(&surface, &ray, 1e-9..=1.0 + 1e-4)
+                .unwrap_or_else(|| panic!("{name}: missed {uv} from {eye}"));
+            hits += 1;
+            let p = ray.at(hit.t);
+            let back = surface.frame(hit.uv.x, hit.uv.y).p.as_dvec3();
+            assert!(
+                (back - p).length() <= 1e-4 * size,
+                "{name}: frame({}) = {back} but the hit is {p}",
+                hit.uv
+            );
+        }
+        assert_eq!(hits, 400);
+    }
+}
+
+#[test]
+fn inversion_undoes_the_frame_away_from_seams_and_poles() {
+    let mut rng = XorShift(0x0dd_ba11);
+    for (name, surface, size) in surfaces() {
+        for _ in 0..400 {
+            let uv = random_uv(&mut rng, &surface);
+            let back = surface_uv(&surface, surface.frame(uv.x, uv.y).p.as_dvec3());
+            let d = surface.domain();
+            // f32 frames: about 1e-6 of the surface's size, magnified near the axis for the azimuth.
+            let tolerance = (d.max - d.min) * 1e-3;
+            assert!(
+                (back - uv).abs().cmple(tolerance).all(),
+                "{name}: {uv} came back as {back} (size {size})"
+            );
+        }
+    }
+}
+
+#[test]
+fn sphere_inversion_follows_the_seed_convention() {
+    let sphere = Surface::Sphere(Sphere {
+        center: DVec3::ZERO,
+        radius: 2.0,
+    });
+    let uv = |p: [f64; 3]| surface_uv(&sphere, DVec3::from(p));
+    // Facing +Z at the equator is u = 180, v = 180; u grows towards +X; the +Y pole is v = 0.
+    assert!((uv([0.0, 0.0, 2.0]) - Vec2::new(180.0, 180.0)).length() < 1e-3);
+    assert!((uv([2.0, 0.0, 0.0]).x - 360.0).abs() < 1e-3);
+    assert!(uv([0.0, 2.0, 0.0]).y.abs() < 1e-3);
+    assert!((uv([0.0, -2.0, 0.0]).y - 360.0).abs() < 1e-3);
+    // The seam (−Z side) wraps into [0, 720).
+    for x in [1e-9, -1e-9, 0.0] {
+        let u = uv([x, 0.0, -2.0]).x;
+        assert!((0.0..720.0).contains(&u), "u = {u}");
+    }
+}
+
+#[test]
+fn misses_and_ranges_are_respected() {
+    for (name, surface, size) in surfaces() {
+        let far_away = Ray {
+            origin: DVec3::splat(50.0 * size),
+            direction: DVec3::splat(1.0),
+        };
+        assert!(
+            intersect(&surface, &far_away, 0.0..=1e9).is_none(),
+            "{name}"
+        );
+        // A ray at a surface point, with the range ending before it, finds nothing there.
+        let target = surface.frame(0.0, 0.0).p.as_dvec3();
+        let ray = Ray {
+            origin: target + DVec3::new(0.3, 3.0, 0.2) * size,
+            direction: DVec3::new(-0.3, -3.0, -0.2) * size,
+        };
+        if let Some(hit) = intersect(&surface, &ray, 0.0..=0.5) {
+            assert!(hit.t <= 0.5, "{name}");
+        }
+    }
+}
+
+#[test]
+fn wave_finds_the_first_of_many_crossings_at_grazing_angles() {
+    let wave = Wave {
+        origin: DVec3::ZERO,
+        size: Vec2::new(1000.0, 10.0),
+        amplitude: 5.0,
+        wavelength: 20.0,
+    };
+    let surface = Surface::Wave(wave.clone());
+    // Almost along the crests: the ray dips into the first trough-side flank it meets.
+    let ray = Ray {
+        origin: DVec3::new(-1.0, 4.9, -5.0),
+        direction: DVec3::new(1.0, -1e-4, 0.0),
+    };
+    let hit = intersect(&surface, &ray, 0.0..=1e6).expect("grazing ray hits the first crest");
+    let p = ray.at(hit.t);
+    let height = 5.0 * (std::f64::consts::TAU / 20.0 * p.x).sin();
+    assert!((p.y - height).abs() < 1e-9, "{p} vs height {height}");
+    // The first crest is at x = 5: the ray at y ≈ 4.9 meets its rising flank before it.
+    assert!(p.x > 0.0 && p.x < 5.0, "{p}");
+}
