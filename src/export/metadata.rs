@@ -11,16 +11,37 @@ pub const SCENE: &str = "bumpwork-scene";
 /// The recipe: source, settings, camera, live edits, file hashes (TOML).
 pub const RECIPE: &str = "bumpwork-recipe";
 
+/// The most text one chunk may hold once inflated: a scene file's limit, since the scene and
+/// recipe chunks are scene-file text.
+pub const MAX_CHUNK_TEXT_BYTES: usize = crate::scene::MAX_SCENE_FILE_BYTES as usize;
+
+/// What the PNG decoder may allocate for the chunks before the image data.
+const MAX_HEADER_BYTES: usize = 16 << 20;
+
 /// A PNG's text chunks (tEXt, zTXt and iTXt) as (keyword, text), in file order by kind.
 pub fn read_png_text(path: &Path) -> Result<Vec<(String, String)>, Error> {
-    let file = std::fs::File::open(path).map_err(|e| Error::read(path, e))?;
+    let file = crate::bounded_read::open_regular(path).map_err(|e| Error::read(path, e))?;
     png_text(BufReader::new(file), path)
 }
 
-/// The text chunks of a PNG read from `png`; `path` names it in messages.
+/// The text chunks of a PNG read from `png`; `path` names it in messages. Compressed chunks are
+/// inflated no further than [`MAX_CHUNK_TEXT_BYTES`], so a small crafted file cannot fill memory.
 pub fn png_text(png: impl BufRead + Seek, path: &Path) -> Result<Vec<(String, String)>, Error> {
     let fail = |e: png::DecodingError| Error::read(path, format!("not a readable PNG: {e}"));
-    let mut decoder = png::Decoder::new(png);
+    let too_long = |keyword: &str| {
+        Error::read(
+            path,
+            format!(
+                "its '{}' text is longer than the limit of {} MiB",
+                crate::diagnostic::sanitize(keyword),
+                MAX_CHUNK_TEXT_BYTES >> 20
+            ),
+        )
+    };
+    let limits = png::Limits {
+        bytes: MAX_HEADER_BYTES,
+    };
+    let mut decoder = png::Decoder::new_with_limits(png, limits);
     decoder.set_ignore_text_chunk(false);
     let reader = decoder.read_info().map_err(fail)?;
     let info = reader.info();
@@ -30,10 +51,21 @@ pub fn png_text(png: impl BufRead + Seek, path: &Path) -> Result<Vec<(String, St
         .map(|c| (c.keyword.clone(), c.text.clone()))
         .collect();
     for chunk in &info.compressed_latin1_text {
+        let mut chunk = chunk.clone();
+        chunk
+            .decompress_text_with_limit(MAX_CHUNK_TEXT_BYTES)
+            .map_err(|_| too_long(&chunk.keyword))?;
         texts.push((chunk.keyword.clone(), chunk.get_text().map_err(fail)?));
     }
     for chunk in &info.utf8_text {
+        let mut chunk = chunk.clone();
+        chunk
+            .decompress_text_with_limit(MAX_CHUNK_TEXT_BYTES)
+            .map_err(|_| too_long(&chunk.keyword))?;
         texts.push((chunk.keyword.clone(), chunk.get_text().map_err(fail)?));
+    }
+    if let Some((keyword, _)) = texts.iter().find(|(_, t)| t.len() > MAX_CHUNK_TEXT_BYTES) {
+        return Err(too_long(keyword));
     }
     Ok(texts)
 }

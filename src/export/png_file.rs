@@ -5,7 +5,6 @@ use super::atomic::{AtomicFile, WritebackFile};
 use crate::Error;
 use crate::raster::Framebuffer;
 use crate::still::RowSink;
-use std::fs::File;
 use std::io::Write;
 use std::path::Path;
 use std::sync::{Arc, Mutex, PoisonError};
@@ -134,7 +133,7 @@ pub fn write_png_with_text(
 
 /// Reads an 8-bit RGB PNG back (as written by `PngStill`): (width, height, rows).
 pub fn read_png_rgb8(path: &Path) -> Result<(u32, u32, Vec<u8>), Error> {
-    let file = File::open(path).map_err(|e| Error::read(path, e))?;
+    let file = crate::bounded_read::open_regular(path).map_err(|e| Error::read(path, e))?;
     let fail = |e: png::DecodingError| Error::read(path, e);
     let mut reader = png::Decoder::new(std::io::BufReader::new(file))
         .read_info()

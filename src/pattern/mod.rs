@@ -31,7 +31,7 @@ mod output;
 mod parser;
 mod real;
 
-use std::io::Read;
+use crate::bounded_read::ReadFailure;
 use std::path::Path;
 use std::sync::Arc;
 
@@ -339,19 +339,16 @@ pub fn check_file(path: &Path) -> Result<Summary, PatternError> {
 }
 
 fn read_limited(path: &Path, origin: &str) -> Result<String, PatternError> {
-    let cannot_read =
-        |e: std::io::Error| PatternError::whole_file(origin, format!("cannot read: {e}"));
-    let file = std::fs::File::open(path).map_err(cannot_read)?;
-    let mut bytes = Vec::new();
-    file.take(MAX_SOURCE_BYTES as u64 + 1)
-        .read_to_end(&mut bytes)
-        .map_err(cannot_read)?;
-    if bytes.len() > MAX_SOURCE_BYTES {
-        return Err(PatternError::whole_file(
-            origin,
-            format!("file too large: more than {MAX_SOURCE_BYTES} bytes"),
-        ));
-    }
+    let bytes =
+        crate::bounded_read::read_bounded(path, MAX_SOURCE_BYTES as u64).map_err(|failure| {
+            match failure {
+                ReadFailure::TooLarge { .. } => PatternError::whole_file(
+                    origin,
+                    format!("file too large: more than {MAX_SOURCE_BYTES} bytes"),
+                ),
+                other => PatternError::whole_file(origin, format!("cannot read: {other}")),
+            }
+        })?;
     String::from_utf8(bytes).map_err(|e| {
         let valid = e.utf8_error().valid_up_to();
         let text = String::from_utf8_lossy(e.as_bytes()).into_owned();

@@ -425,11 +425,9 @@ fn file_names(material: &Material) -> Vec<String> {
 fn hash_file(path: &Path) -> std::io::Result<u64> {
     use std::io::{BufRead, BufReader, Error, ErrorKind, Read};
     let max_bytes = crate::texture::Limits::default().max_bytes;
-    let file = std::fs::File::open(path)?;
+    let file = crate::bounded_read::open_regular(path)
+        .map_err(|e| Error::new(ErrorKind::InvalidInput, e.to_string()))?;
     let metadata = file.metadata()?;
-    if !metadata.is_file() {
-        return Err(Error::new(ErrorKind::InvalidInput, "not a regular file"));
-    }
     if metadata.len() > max_bytes {
         return Err(Error::new(
             ErrorKind::InvalidInput,

@@ -1,9 +1,11 @@
 //! Reading image files into linear texels, with size limits checked from the header
 //! before anything large is allocated.
 
-use std::io::{self, Cursor, Read};
+use std::io::{self, Cursor};
 use std::panic::{self, AssertUnwindSafe};
 use std::path::Path;
+
+use crate::bounded_read::{ReadFailure, read_bounded};
 
 use glam::{Vec3, Vec4};
 use image::{DynamicImage, ImageDecoder, ImageError, ImageFormat, ImageReader};
@@ -144,53 +146,16 @@ pub fn decode_image(
 /// Reads at most `max_bytes` (+1 to notice more): the size in the metadata is not
 /// trusted, since devices and pipes report 0 and would otherwise be read forever.
 fn read_file(path: &Path, limits: &Limits) -> Result<Vec<u8>, Reason> {
-    let file = std::fs::File::open(path).map_err(io_reason)?;
-    let metadata = file.metadata().map_err(io_reason)?;
-    if metadata.is_dir() {
-        return Err(Reason::Unreadable("it is a directory".into()));
-    }
-    if is_device(&metadata) {
-        return Err(Reason::Unreadable("it is a device, not a file".into()));
-    }
-    if metadata.is_file() && metadata.len() > limits.max_bytes {
-        return Err(Reason::Oversized {
+    read_bounded(path, limits.max_bytes).map_err(|failure| match failure {
+        failure if failure.is_missing() => Reason::Missing,
+        ReadFailure::TooLarge { .. } => Reason::Oversized {
             detail: format!(
-                "the file is {} MiB, over the {} MiB limit",
-                metadata.len() >> 20,
-                limits.max_bytes >> 20
+                "the file is over the {} MiB limit",
+                limits.max_bytes.div_ceil(1 << 20)
             ),
-        });
-    }
-    let mut bytes = Vec::new();
-    file.take(limits.max_bytes.saturating_add(1))
-        .read_to_end(&mut bytes)
-        .map_err(io_reason)?;
-    if bytes.len() as u64 > limits.max_bytes {
-        return Err(Reason::Oversized {
-            detail: format!("the file is over the {} byte limit", limits.max_bytes),
-        });
-    }
-    Ok(bytes)
-}
-
-/// Character and block devices (`/dev/zero`, `/dev/urandom`, a disk) are never images; reading
-/// one would only fill memory up to the limit. Pipes are read, up to the limit.
-#[cfg(unix)]
-fn is_device(metadata: &std::fs::Metadata) -> bool {
-    use std::os::unix::fs::FileTypeExt;
-    metadata.file_type().is_char_device() || metadata.file_type().is_block_device()
-}
-
-#[cfg(not(unix))]
-fn is_device(_: &std::fs::Metadata) -> bool {
-    false
-}
-
-fn io_reason(error: io::Error) -> Reason {
-    match error.kind() {
-        io::ErrorKind::NotFound => Reason::Missing,
-        _ => Reason::Unreadable(error.to_string()),
-    }
+        },
+        other => Reason::Unreadable(other.to_string()),
+    })
 }
 
 fn decode(bytes: &[u8], name: &Path, limits: &Limits) -> Result<(ImageInfo, DynamicImage), Reason> {

@@ -63,10 +63,21 @@ impl Reloader {
     }
 }
 
+/// How long dropping a [`Reloader`] waits for its thread to finish a reload in progress before
+/// leaving it behind: quitting must never wait on a load, however slow its files are.
+const STOP_GRACE: Duration = Duration::from_millis(200);
+
 impl Drop for Reloader {
     fn drop(&mut self) {
         let _ = self.control.send(Message::Stop);
-        if let Some(worker) = self.worker.take() {
+        let Some(worker) = self.worker.take() else {
+            return;
+        };
+        let deadline = std::time::Instant::now() + STOP_GRACE;
+        while !worker.is_finished() && std::time::Instant::now() < deadline {
+            std::thread::sleep(Duration::from_millis(2));
+        }
+        if worker.is_finished() {
             let _ = worker.join();
         }
     }

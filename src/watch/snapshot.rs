@@ -13,9 +13,26 @@ impl Snapshot {
     }
 }
 
+/// Hashes what a load would read: a regular file up to the image limit, the largest any load
+/// takes. Anything else (a FIFO, a device, a file past the limit) hashes as its kind and size,
+/// so the watcher never blocks or reads forever, and the load that follows says what is wrong.
 fn content_hash(path: &Path) -> Option<u64> {
-    let mut file = std::fs::File::open(path).ok()?;
+    let limit = crate::texture::Limits::default().max_bytes;
     let mut hasher = DefaultHasher::new();
+    let file = match crate::bounded_read::open_regular(path) {
+        Ok(file) => file,
+        Err(failure) if failure.is_missing() => return None,
+        Err(failure) => {
+            hasher.write(failure.to_string().as_bytes());
+            return Some(hasher.finish());
+        }
+    };
+    let length = file.metadata().ok()?.len();
+    hasher.write_u64(length);
+    if length > limit {
+        return Some(hasher.finish());
+    }
+    let mut file = file.take(limit);
     let mut buffer = vec![0; 64 * 1024];
     loop {
         match file.read(&mut buffer).ok()? {

@@ -1,9 +1,8 @@
 //! `bumpwork bench` as a user runs it: JSON with finite figures, the presets ordered by error as
 //! documented, a chart that decodes, and one clear message for bad input.
 
-
-use std::process::{Command, Output};
 use crate::test_dir::TestDir;
+use std::process::{Command, Output};
 
 fn bumpwork(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_bumpwork"))

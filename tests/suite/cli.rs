@@ -1,6 +1,5 @@
 //! The command line as a user meets it: exit status, messages, files written or not.
 
-
 use crate::cli_support::*;
 use std::path::Path;
 

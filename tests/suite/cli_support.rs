@@ -1,7 +1,6 @@
 //! Running the binary as a user would, for the command-line tests.
 #![allow(dead_code)]
 
-
 pub use crate::test_dir::TestDir;
 
 use std::path::Path;

@@ -1,10 +1,9 @@
 //! Stills as a user makes them: valid PNGs carrying their recipe, `--from` making the same
 //! pixels again, sequences, PPM, and failures that leave no file behind.
 
-
+use crate::cli_support::*;
 use bumpwork::export::metadata::{RECIPE, SCENE, read_png_text};
 use bumpwork::still::Recipe;
-use crate::cli_support::*;
 use std::path::Path;
 use std::process::Command;
 use std::time::{Duration, Instant};
@@ -254,14 +253,12 @@ fn failed_renders_leave_no_file_and_say_why() {
         &bumpwork(&["render", "plane-ripple", "-o", out, "--size", "20000x10"]),
         "1..=16384",
     );
-    let plain =
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/pngsuite/basn2c08.png");
+    let plain = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/pngsuite/basn2c08.png");
     assert_user_error(
         &bumpwork(&["render", "--from", plain.to_str().unwrap(), "-o", out]),
         "not a still bumpwork can make again",
     );
-    let broken =
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/pngsuite/xcrn0g04.png");
+    let broken = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/pngsuite/xcrn0g04.png");
     assert_user_error(
         &bumpwork(&["render", "--from", broken.to_str().unwrap(), "-o", out]),
         "PNG",

@@ -4,8 +4,9 @@
 //! (Library-level cousins: `pattern_errors` (10⁶ nested parentheses), `texture_limits` (lying
 //! PNG and PPM headers allocate nothing), `fuzz_regressions`.)
 
-
-use crate::cli_support::{assert_user_error, bumpwork, bumpwork_bounded, raw_control, stderr, temp_dir};
+use crate::cli_support::{
+    assert_user_error, bumpwork, bumpwork_bounded, raw_control, stderr, temp_dir,
+};
 use std::ffi::{OsStr, OsString};
 use std::os::unix::ffi::{OsStrExt, OsStringExt};
 use std::path::{Path, PathBuf};
@@ -323,5 +324,54 @@ fn the_image_budget_is_the_users_to_set_and_checked() {
             &with_budget(bad),
             "BUMPWORK_MAX_IMAGE_MIB must be a whole number",
         );
+    }
+}
+
+#[test]
+fn fifos_are_refused_at_once_wherever_they_are_named() {
+    let dir = temp_dir("hostile-fifos");
+    for name in ["p.pat", "s.toml", "i.png"] {
+        let path = dir.join(name);
+        let c_path = std::ffi::CString::new(path.as_os_str().as_bytes()).unwrap();
+        // SAFETY: mkfifo reads the NUL-terminated path it is given.
+        assert_eq!(unsafe { libc::mkfifo(c_path.as_ptr(), 0o600) }, 0);
+    }
+    let scene = write(
+        &dir,
+        "binds.toml",
+        sphere_scene(&format!(
+            "{{ image = \"{}\" }}",
+            dir.join("i.png").display()
+        ))
+        .as_bytes(),
+    );
+    let out = dir.join("out.png");
+    let (pattern, scene_fifo) = (dir.join("p.pat"), dir.join("s.toml"));
+    let cases: [Vec<&OsStr>; 5] = [
+        vec!["check".as_ref(), pattern.as_os_str()],
+        vec![
+            "render".as_ref(),
+            pattern.as_os_str(),
+            "-o".as_ref(),
+            out.as_os_str(),
+        ],
+        vec!["check".as_ref(), scene_fifo.as_os_str()],
+        vec![
+            "render".as_ref(),
+            scene_fifo.as_os_str(),
+            "-o".as_ref(),
+            out.as_os_str(),
+        ],
+        vec![
+            "render".as_ref(),
+            scene.as_os_str(),
+            "-o".as_ref(),
+            out.as_os_str(),
+        ],
+    ];
+    for args in cases {
+        // No writer ever opens these pipes: a blocking open would hang until the time-out.
+        assert_clean_error(&run(&args), "named pipe (FIFO), not a regular file");
+        assert!(!out.exists(), "{args:?} left a still");
     }
 }

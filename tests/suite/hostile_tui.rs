@@ -5,7 +5,6 @@
 
 #![cfg(unix)]
 
-
 use crate::tmux_support::{Tmux, missing};
 
 const TITLE: &str = "pwned";
@@ -54,7 +53,9 @@ fn escapes_from_files_reach_the_screen_only_as_text() {
     assert!(drawn > 10, "the picture was cleared:\n{screen}");
     tmux.send_keys(&["q"]);
     assert!(
-        crate::tmux_support::eventually(crate::tmux_support::DEADLINE, || tmux.pane("#{pane_dead}") == "1"),
+        crate::tmux_support::eventually(crate::tmux_support::DEADLINE, || tmux
+            .pane("#{pane_dead}")
+            == "1"),
         "the workbench did not quit"
     );
     let _ = std::fs::remove_dir_all(&dir);

@@ -3,7 +3,6 @@
 //! concurrent exports), the workbench's exports take new names, and a still never replaces a
 //! pattern or scene file.
 
-
 use crate::cli_support::{assert_user_error, bumpwork, temp_dir};
 use std::path::Path;
 
@@ -52,7 +51,10 @@ fn only_the_atomic_file_writes_files() {
         let text = std::fs::read_to_string(file).unwrap();
         let code = text.split("#[cfg(test)]").next().unwrap();
         for call in WRITES {
-            if calls(code, call) && !file.ends_with("export/atomic.rs") {
+            let reads_only = file.ends_with("bounded_read.rs")
+                && *call == "OpenOptions"
+                && !code.contains(".write(");
+            if calls(code, call) && !file.ends_with("export/atomic.rs") && !reads_only {
                 writers.push(format!("{}: {call}", file.display()));
             }
         }

@@ -1,7 +1,6 @@
 //! Division by zero, square roots of negatives and logs of zero never reach the output as NaN
 //! or infinity; the evaluator reports how many fragments were made flat.
 
-
 use bumpwork::pattern::{BumpSample, Inputs, Pattern};
 
 fn us(values: &[f32]) -> (Vec<f32>, Vec<f32>) {

@@ -1,9 +1,8 @@
 //! `dimples-seed.pat` reproduces the seed lecture's dimples code, and `dimples.pat` is its
 //! continuous height form.
 
-
-use bumpwork::pattern::native::dimples_seed;
 use crate::pattern_support::{bump, sample_points, shipped};
+use bumpwork::pattern::native::dimples_seed;
 
 #[test]
 fn slope_file_matches_the_seed_code() {

@@ -2,7 +2,6 @@
 //! (unlike the seed's `x % 50`, which mirrors there). Checks are solid (x, y and z), so every
 //! plane parallel to a coordinate plane shows squares.
 
-
 use crate::pattern_support::{colors, shipped};
 
 const PERIOD: f32 = 50.0;

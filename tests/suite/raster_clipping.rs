@@ -2,11 +2,10 @@
 //! triangles crossing the near plane. No panic, no NaN, and coverage and depth agree with a
 //! per-pixel ray cast of the exact surfaces.
 
-
+use crate::common::*;
 use bumpwork::raster::{Camera, Framebuffer, Interpolation, Viewport};
 use bumpwork::scene::{Material, Object, Scene};
 use bumpwork::surface::{Plane, Sphere, Surface};
-use crate::common::*;
 use glam::{DVec3, Vec2, Vec3};
 
 const VIEWPORT: Viewport = Viewport {

@@ -1,10 +1,9 @@
 //! Extremes: zero-area triangles, 1×1 and 1×N outputs, scenes translated by 1e6.
 
-
+use crate::common::*;
 use bumpwork::raster::{Framebuffer, PreparedScene, RenderTarget, Viewport, render};
 use bumpwork::scene::{Light, PRESET_NAMES, Scene, preset};
 use bumpwork::surface::{Surface, Tessellation};
-use crate::common::*;
 use glam::DVec3;
 
 fn render_scene(scene: Scene, viewport: Viewport) -> Framebuffer {

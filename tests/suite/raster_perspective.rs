@@ -2,11 +2,10 @@
 //! equals the analytic ray–plane intersection to within 1e-3 of a texture period. Affine
 //! interpolation fails the same check, so the check can fail.
 
-
+use crate::common::*;
 use bumpwork::raster::{Interpolation, Viewport};
 use bumpwork::scene::{Material, Object, Scene};
 use bumpwork::surface::{Plane, Surface};
-use crate::common::*;
 use glam::{DVec3, Vec2, Vec3};
 
 const PERIOD: f64 = 30.0;

@@ -2,7 +2,7 @@
 //! top-left rule gives each shared edge and vertex to exactly one triangle. So do the sample
 //! points of a supersampling pass, which the rasteriser moves off the centres.
 
-
+use crate::common::*;
 use bumpwork::raster::{
     Fragment, FrameObject, ImageWindow, PerFragment, PreparedScene, render_with,
 };
@@ -12,7 +12,6 @@ use bumpwork::raster::{
 };
 use bumpwork::scene::{Light, Material, Object, Scene};
 use bumpwork::surface::{Sphere, Surface, Tessellation};
-use crate::common::*;
 use glam::{DVec3, Vec2, Vec3};
 use proptest::prelude::*;
 

@@ -2,7 +2,7 @@
 //! is exact (planes, triangles), within stated bounds on the curved presets at the default
 //! tessellation, and converging as the tessellation grows.
 
-
+use crate::reference_support::*;
 use bumpwork::raster::{
     Fragment, FrameObject, PerFragment, PreparedScene, RenderTarget, render_with,
 };
@@ -10,7 +10,6 @@ use bumpwork::reference::render_reference;
 use bumpwork::scene::preset;
 use bumpwork::surface::Tessellation;
 use glam::Vec3;
-use crate::reference_support::*;
 
 /// (u, v, object) in the colour channels: the fragments themselves, before any shading.
 fn uv_shader() -> PerFragment<impl Fn(&FrameObject, &Fragment) -> Vec3 + Sync> {

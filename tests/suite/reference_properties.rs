@@ -1,13 +1,12 @@
 //! Properties over random cameras and scenes (proptest): neither renderer writes a NaN or an
 //! infinity, and the rasterizer's error against the reference shrinks as the tessellation grows.
 
-
+use crate::reference_support::*;
 use bumpwork::raster::Viewport;
 use bumpwork::reference::metrics::{normal_angle_error, silhouette_mismatch};
 use bumpwork::scene::{Scene, parse_scene};
 use bumpwork::shade::ViewMode;
 use proptest::prelude::*;
-use crate::reference_support::*;
 
 const VIEWPORT: Viewport = Viewport {
     width: 48,

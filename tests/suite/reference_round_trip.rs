@@ -2,11 +2,10 @@
 //! surface (frame(u,v) of the inverted (u,v) reproduces the hit point to 1e-4 of the surface's
 //! size), no hit is missed in front of a known surface point, and inversion undoes `frame`.
 
-
+use crate::reference_support::XorShift;
 use bumpwork::reference::{Ray, intersect, surface_uv};
 use bumpwork::surface::{AxisBasis, Cone, Paraboloid, Plane, Sphere, Surface, Triangle, Wave};
 use glam::{DVec3, Vec2, Vec3};
-use crate::reference_support::XorShift;
 
 fn surfaces() -> Vec<(&'static str, Surface, f64)> {
     vec![

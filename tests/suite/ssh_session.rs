@@ -12,12 +12,11 @@
 
 #![cfg(unix)]
 
-
+use crate::test_dir::TestDir;
+use crate::tmux_support::{DEADLINE, Tmux, eventually, missing};
 use std::net::{Ipv4Addr, TcpListener, TcpStream};
 use std::path::Path;
 use std::process::{Child, Command, Stdio};
-use crate::test_dir::TestDir;
-use crate::tmux_support::{DEADLINE, Tmux, eventually, missing};
 
 const SSHD: &str = "/usr/sbin/sshd";
 

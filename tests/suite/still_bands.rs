@@ -1,7 +1,6 @@
 //! Supersampled stills in bands: edges get intermediate values (and keep their area), a still
 //! streamed in bands matches the same still rendered whole, and no value is lost or made up.
 
-
 use bumpwork::raster::{
     Camera, Fragment, FrameObject, FrameStats, Framebuffer, ImageWindow, Interpolation,
     PerFragment, PreparedScene, RenderTarget, Viewport, render_with,

@@ -1,9 +1,8 @@
 //! Loading every supported format into linear texels, and the error for each way a
 //! file can be bad.
 
-
-use std::path::{Path, PathBuf};
 use crate::test_dir::TestDir;
+use std::path::{Path, PathBuf};
 
 use bumpwork::texture::{
     Encoding, Limits, LoadedImage, Reason, Texel, TextureError, check_image, load_image,
@@ -183,7 +182,7 @@ fn configured_limits_reject_a_file_the_defaults_accept() {
 }
 
 #[test]
-fn a_device_is_refused_and_an_endless_pipe_is_cut_off_at_the_byte_limit() {
+fn a_device_and_a_pipe_are_refused_without_reading() {
     let zero = Path::new("/dev/zero");
     if !zero.exists() {
         return; // not a Unix system: nothing to check
@@ -201,18 +200,7 @@ fn a_device_is_refused_and_an_endless_pipe_is_cut_off_at_the_byte_limit() {
     if !made.is_ok_and(|s| s.success()) {
         return; // no mkfifo: the device case above is the check
     }
-    let writer_end = fifo.clone();
-    let writer = std::thread::spawn(move || {
-        use std::io::Write;
-        let mut pipe = std::fs::OpenOptions::new()
-            .write(true)
-            .open(writer_end)
-            .unwrap();
-        let block = vec![0u8; 1 << 16];
-        // Ends when the reader closes its end (EPIPE).
-        while pipe.write_all(&block).is_ok() {}
-    });
+    // No writer ever opens the pipe: a blocking open would wait here forever.
     let error = load_image(&fifo, &limits, Encoding::Srgb).unwrap_err();
-    assert!(matches!(error.reason, Reason::Oversized { .. }), "{error}");
-    writer.join().unwrap();
+    assert!(error.to_string().contains("named pipe"), "{error}");
 }

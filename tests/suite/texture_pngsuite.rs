@@ -7,11 +7,7 @@ use bumpwork::texture::{Encoding, Limits, LoadedImage, Reason, Texel, check_imag
 
 fn suite_dir() -> PathBuf {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/pngsuite");
-    assert!(
-        dir.is_dir(),
-        "PngSuite not found at {} ",
-        dir.display()
-    );
+    assert!(dir.is_dir(), "PngSuite not found at {} ", dir.display());
     dir
 }
 

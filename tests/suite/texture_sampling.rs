@@ -1,11 +1,10 @@
 //! Filters and wrap modes on synthetic textures, and images as height fields.
 
+use crate::test_dir::TestDir;
 use bumpwork::texture::{
     Filter, Footprint, HeightMap, Limits, Raster, Sampler, Texel, Texture, Wrap,
 };
 use glam::Vec2;
-use crate::test_dir::TestDir;
-
 
 const WRAPS: [Wrap; 3] = [Wrap::Repeat, Wrap::Clamp, Wrap::Mirror];
 const FILTERS: [Filter; 3] = [Filter::Nearest, Filter::Bilinear, Filter::Trilinear];

@@ -7,60 +7,11 @@
 
 #![cfg(unix)]
 
-use portable_pty::{CommandBuilder, PtySize, native_pty_system};
-use std::io::{Read, Write};
-use std::num::NonZeroU16;
-use std::sync::{Arc, Mutex};
-use std::time::{Duration, Instant};
+use crate::pty_support::{Session, status_contains};
+use portable_pty::CommandBuilder;
 
 const COLS: u16 = 100;
 const ROWS: u16 = 30;
-const DEADLINE: Duration = Duration::from_secs(90);
-
-struct Session {
-    screen: Arc<Mutex<vt100::Parser>>,
-    writer: Box<dyn Write + Send>,
-}
-
-impl Session {
-    fn send(&mut self, keys: &str) {
-        self.writer.write_all(keys.as_bytes()).unwrap();
-        self.writer.flush().unwrap();
-    }
-
-    /// Polls the screen until `condition` holds; panics with the screen after the deadline.
-    fn wait_for(&self, what: &str, condition: impl Fn(&vt100::Screen) -> bool) {
-        let start = Instant::now();
-        loop {
-            {
-                let parser = self.screen.lock().unwrap();
-                if condition(parser.screen()) {
-                    return;
-                }
-                if start.elapsed() > DEADLINE {
-                    panic!(
-                        "timed out waiting for {what}; screen:\n{}",
-                        parser.screen().contents()
-                    );
-                }
-            }
-            std::thread::sleep(Duration::from_millis(50));
-        }
-    }
-
-    fn status_line(&self) -> String {
-        let parser = self.screen.lock().unwrap();
-        parser
-            .screen()
-            .rows(0, COLS)
-            .nth(ROWS as usize - 1)
-            .unwrap_or_default()
-    }
-
-    fn picture(&self) -> Vec<(vt100::Color, vt100::Color)> {
-        picture(self.screen.lock().unwrap().screen())
-    }
-}
 
 /// The picture's colours, to see that it changed.
 fn picture(screen: &vt100::Screen) -> Vec<(vt100::Color, vt100::Color)> {
@@ -71,27 +22,10 @@ fn picture(screen: &vt100::Screen) -> Vec<(vt100::Color, vt100::Color)> {
         .collect()
 }
 
-fn status_contains(text: &'static str) -> impl Fn(&vt100::Screen) -> bool {
-    move |screen| {
-        screen
-            .rows(0, COLS)
-            .nth(ROWS as usize - 1)
-            .is_some_and(|line| line.contains(text))
-    }
-}
-
 #[test]
 fn the_workbench_runs_in_a_real_terminal_and_gives_it_back() {
     let dir = std::env::temp_dir().join(format!("bumpwork-pty-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
-    let pty = native_pty_system()
-        .openpty(PtySize {
-            rows: ROWS,
-            cols: COLS,
-            pixel_width: 0,
-            pixel_height: 0,
-        })
-        .unwrap();
     // The shell reports the exit status and the line discipline after the workbench ends.
     let mut command = CommandBuilder::new("sh");
     command.args([
@@ -103,30 +37,13 @@ fn the_workbench_runs_in_a_real_terminal_and_gives_it_back() {
     command.env("TERM", "xterm-256color");
     command.env("COLORTERM", "truecolor");
     command.env_remove("NO_COLOR");
-    let mut child = pty.slave.spawn_command(command).unwrap();
-    drop(pty.slave);
-
-    let rows = NonZeroU16::new(ROWS).unwrap();
-    let cols = NonZeroU16::new(COLS).unwrap();
-    let screen = Arc::new(Mutex::new(vt100::Parser::new(rows, cols, 0)));
-    let mut reader = pty.master.try_clone_reader().unwrap();
-    let feed = Arc::clone(&screen);
-    std::thread::spawn(move || {
-        let mut buffer = [0u8; 65536];
-        while let Ok(n @ 1..) = reader.read(&mut buffer) {
-            feed.lock().unwrap().process(&buffer[..n]);
-        }
-    });
-    let mut session = Session {
-        screen,
-        writer: pty.master.take_writer().unwrap(),
-    };
+    let mut session = Session::spawn(command, COLS, ROWS);
 
     session.wait_for("the first frame", status_contains("1/2 plane-dimples"));
     session.wait_for("the alternate screen, cursor hidden", |s| {
         s.alternate_screen() && s.hide_cursor()
     });
-    let before = session.picture();
+    let before = picture(session.screen.lock().unwrap().screen());
 
     session.send("lll");
     session.wait_for("the orbit to change the picture", |s| picture(s) != before);
@@ -161,7 +78,7 @@ fn the_workbench_runs_in_a_real_terminal_and_gives_it_back() {
     session.wait_for("the shell after the workbench", |s| {
         s.contents().contains("DONE")
     });
-    let status = child.wait().unwrap();
+    let status = session.child.wait().unwrap();
     assert!(status.success());
     let parser = session.screen.lock().unwrap();
     let screen = parser.screen();

@@ -1,10 +1,9 @@
 //! Starting and dropping a reloader 100 times leaves no thread and no watcher behind. Alone in
 //! its binary so the thread count is this test's own.
 
-
+use crate::watch_support::*;
 use bumpwork::watch::{Reloader, SceneFileSource};
 use std::fs;
-use crate::watch_support::*;
 
 #[test]
 fn a_hundred_starts_and_drops_leave_no_thread_or_watcher_behind() {

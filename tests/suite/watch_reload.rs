@@ -1,12 +1,11 @@
 //! Hot reload in-process: a scene in a temporary directory, edited the ways editors save, with
 //! broken saves in between; after each step the loaded scene is the expected one.
 
-
+use crate::watch_support::*;
 use bumpwork::scene::parse_scene;
 use bumpwork::watch::{FileSetSource, Reloader, SceneFileSource};
 use std::fs;
 use std::io::Write;
-use crate::watch_support::*;
 
 fn start_with_pattern(dir: &TempDir) -> (Reloader, Shown) {
     fs::write(dir.join("ridges.pat"), pattern_source(1)).unwrap();

@@ -2,10 +2,9 @@
 //! is left behind, and what is shown in the end is the final file. Alone in its binary so the
 //! thread count is this test's own.
 
-
+use crate::watch_support::*;
 use bumpwork::watch::{Reloader, SceneFileSource};
 use std::fs;
-use crate::watch_support::*;
 
 const SAVES: u32 = 1000;
 

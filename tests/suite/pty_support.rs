@@ -1,0 +1,110 @@
+//! The real binary in a pseudo-terminal, its screen kept by a terminal emulator (vt100).
+#![allow(dead_code)]
+
+use portable_pty::{Child, CommandBuilder, PtySize, native_pty_system};
+use std::io::{Read, Write};
+use std::num::NonZeroU16;
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
+
+pub const DEADLINE: Duration = Duration::from_secs(90);
+
+pub struct Session {
+    pub screen: Arc<Mutex<vt100::Parser>>,
+    writer: Box<dyn Write + Send>,
+    pub child: Box<dyn Child + Send + Sync>,
+    rows: u16,
+    cols: u16,
+}
+
+impl Session {
+    /// Runs `command` in a fresh pseudo-terminal of `cols` × `rows`.
+    pub fn spawn(command: CommandBuilder, cols: u16, rows: u16) -> Session {
+        let pty = native_pty_system()
+            .openpty(PtySize {
+                rows,
+                cols,
+                pixel_width: 0,
+                pixel_height: 0,
+            })
+            .unwrap();
+        let child = pty.slave.spawn_command(command).unwrap();
+        drop(pty.slave);
+        let size = |n| NonZeroU16::new(n).unwrap();
+        let screen = Arc::new(Mutex::new(vt100::Parser::new(size(rows), size(cols), 0)));
+        let mut reader = pty.master.try_clone_reader().unwrap();
+        let feed = Arc::clone(&screen);
+        std::thread::spawn(move || {
+            let mut buffer = [0u8; 65536];
+            while let Ok(n @ 1..) = reader.read(&mut buffer) {
+                feed.lock().unwrap().process(&buffer[..n]);
+            }
+        });
+        Session {
+            screen,
+            writer: pty.master.take_writer().unwrap(),
+            child,
+            rows,
+            cols,
+        }
+    }
+
+    pub fn send(&mut self, keys: &str) {
+        self.writer.write_all(keys.as_bytes()).unwrap();
+        self.writer.flush().unwrap();
+    }
+
+    /// Polls the screen until `condition` holds; panics with the screen after the deadline.
+    pub fn wait_for(&self, what: &str, condition: impl Fn(&vt100::Screen) -> bool) {
+        let start = Instant::now();
+        loop {
+            {
+                let parser = self.screen.lock().unwrap();
+                if condition(parser.screen()) {
+                    return;
+                }
+                if start.elapsed() > DEADLINE {
+                    panic!(
+                        "timed out waiting for {what}; screen:\n{}",
+                        parser.screen().contents()
+                    );
+                }
+            }
+            std::thread::sleep(Duration::from_millis(20));
+        }
+    }
+
+    pub fn status_line(&self) -> String {
+        let parser = self.screen.lock().unwrap();
+        parser
+            .screen()
+            .rows(0, self.cols)
+            .nth(self.rows as usize - 1)
+            .unwrap_or_default()
+    }
+
+    /// Waits up to `limit` for the program to end: its exit code, or `None` if it still runs
+    /// (then it is killed).
+    pub fn exit_within(&mut self, limit: Duration) -> Option<u32> {
+        let start = Instant::now();
+        while start.elapsed() < limit {
+            if let Some(status) = self.child.try_wait().unwrap() {
+                return Some(status.exit_code());
+            }
+            std::thread::sleep(Duration::from_millis(5));
+        }
+        let _ = self.child.kill();
+        None
+    }
+}
+
+/// The last row of `screen` contains `text`.
+pub fn status_contains(text: &'static str) -> impl Fn(&vt100::Screen) -> bool {
+    move |screen| {
+        let (rows, cols) = screen.size();
+        screen
+            .rows(0, cols.get())
+            .nth(rows.get() as usize - 1)
+            .is_some_and(|line| line.contains(text))
+    }
+}
