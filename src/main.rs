@@ -1,6 +1,7 @@
 //! The command line: parses arguments and calls the library. Exit status 0 on success, 1 on any
 //! user error with one message on stderr.
 
+#[macro_use]
 mod commands;
 
 use bumpwork::Error;
@@ -35,6 +36,7 @@ enum Command {
 }
 
 fn main() -> ExitCode {
+    restore_default_sigpipe();
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
         Err(e) if !e.use_stderr() => {
@@ -58,6 +60,16 @@ fn main() -> ExitCode {
             eprintln!("bumpwork: error: {}", sanitize_lines(&e.to_string()));
             ExitCode::FAILURE
         }
+    }
+}
+
+/// Rust ignores SIGPIPE, so a closed pipe would be an error on every later write; with the
+/// default action `bumpwork check … | head -1` ends quietly, as coreutils do.
+fn restore_default_sigpipe() {
+    #[cfg(unix)]
+    // SAFETY: setting a signal's disposition to the default before any thread starts.
+    unsafe {
+        libc::signal(libc::SIGPIPE, libc::SIG_DFL);
     }
 }
 

@@ -46,6 +46,9 @@ fn parse_metric(text: &str) -> Result<ChartMetric, String> {
 }
 
 pub fn run(args: BenchArgs) -> Result<(), Error> {
+    if let Some(chart) = &args.chart {
+        bumpwork::export::check_destination(chart)?;
+    }
     let names: Vec<String> = if args.scenes.is_empty() {
         STANDARD_SCENES.iter().map(|s| s.to_string()).collect()
     } else {
@@ -87,11 +90,10 @@ pub fn run(args: BenchArgs) -> Result<(), Error> {
     }
     let front = front_of(&summaries, args.chart_metric);
     if args.json {
-        print_json(&args, &measurements, &summaries, &front);
+        print_json(&args, &measurements, &summaries, &front)
     } else {
-        print_tables(&args, &measurements, &summaries, &front);
+        print_tables(&args, &measurements, &summaries, &front)
     }
-    Ok(())
 }
 
 /// Which summaries are on the Pareto front of summed time against the chart's error.
@@ -117,12 +119,19 @@ fn kind_name(variant: &Variant) -> &'static str {
     }
 }
 
-fn print_tables(args: &BenchArgs, rows: &[Measurement], summaries: &[Summary], front: &[bool]) {
-    println!(
+fn print_tables(
+    args: &BenchArgs,
+    rows: &[Measurement],
+    summaries: &[Summary],
+    front: &[bool],
+) -> Result<(), Error> {
+    say!(
         "{}x{} pixels, {} timed runs each; error against the exact reference (ray cast, shaded as `exact`)",
-        args.size.0, args.size.1, args.runs
+        args.size.0,
+        args.size.1,
+        args.runs
     );
-    println!(
+    say!(
         "variants with n samples per pixel are measured against the reference ray cast through the same n sample positions{}",
         args.max_samples
             .map(|cap| format!("; samples capped at {cap}"))
@@ -132,8 +141,8 @@ fn print_tables(args: &BenchArgs, rows: &[Measurement], summaries: &[Summary], f
     for m in rows {
         if m.scene != scene {
             scene = &m.scene;
-            println!("\n{scene}");
-            println!(
+            say!("\n{scene}");
+            say!(
                 "  {:<24} {:>8} {:>26} {:>8} {:>5} {:>16} {:>6}",
                 "variant",
                 "tris",
@@ -147,7 +156,7 @@ fn print_tables(args: &BenchArgs, rows: &[Measurement], summaries: &[Summary], f
         let t = &m.timing;
         let ms = |d: std::time::Duration| d.as_secs_f64() * 1e3;
         let e = &m.error;
-        println!(
+        say!(
             "  {:<24} {:>8} {:>26} {:>8} {:>5.0} {:>16} {:>6}",
             m.variant.name,
             m.triangles,
@@ -167,13 +176,17 @@ fn print_tables(args: &BenchArgs, rows: &[Measurement], summaries: &[Summary], f
             e.silhouette_mismatch
         );
     }
-    println!("\nall scenes (# numbers the chart's dots; * on the Pareto front)");
-    println!(
+    say!("\nall scenes (# numbers the chart's dots; * on the Pareto front)");
+    say!(
         "  {:>3} {:<24} {:>14} {:>13} {:>14}  quality",
-        "#", "variant", "sum of ms", "mean PSNR dB", "mean normal°"
+        "#",
+        "variant",
+        "sum of ms",
+        "mean PSNR dB",
+        "mean normal°"
     );
     for (i, (s, on_front)) in summaries.iter().zip(front).enumerate() {
-        println!(
+        say!(
             "  {:>3} {:<24} {:>14.2} {:>13.2} {:>14.3}  {}",
             format!("{}{}", i + 1, if *on_front { "*" } else { "" }),
             s.variant.name,
@@ -183,6 +196,7 @@ fn print_tables(args: &BenchArgs, rows: &[Measurement], summaries: &[Summary], f
             s.variant.quality.describe()
         );
     }
+    Ok(())
 }
 
 fn psnr_text(db: f64) -> String {
@@ -238,7 +252,12 @@ struct JsonSummary<'a> {
     pareto: bool,
 }
 
-fn print_json(args: &BenchArgs, rows: &[Measurement], summaries: &[Summary], front: &[bool]) {
+fn print_json(
+    args: &BenchArgs,
+    rows: &[Measurement],
+    summaries: &[Summary],
+    front: &[bool],
+) -> Result<(), Error> {
     let ms = |d: std::time::Duration| d.as_secs_f64() * 1e3;
     let report = JsonReport {
         width: args.size.0,
@@ -280,8 +299,9 @@ fn print_json(args: &BenchArgs, rows: &[Measurement], summaries: &[Summary], fro
             })
             .collect(),
     };
-    println!(
+    say!(
         "{}",
         serde_json::to_string_pretty(&report).expect("plain data serialises")
     );
+    Ok(())
 }

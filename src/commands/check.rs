@@ -21,7 +21,7 @@ pub fn run(args: CheckArgs) -> Result<(), Error> {
     let mut bad = 0;
     for path in &args.files {
         match check(path) {
-            Ok(summary) => println!("{}: ok: {summary}", sanitize(&path.display().to_string())),
+            Ok(summary) => say!("{}: ok: {summary}", sanitize(&path.display().to_string())),
             Err(message) => {
                 eprintln!("{}", bumpwork::diagnostic::sanitize_lines(&message));
                 bad += 1;

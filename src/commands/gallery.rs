@@ -5,8 +5,8 @@ use super::interrupt::Interrupt;
 use super::progress::RenderProgress;
 use bumpwork::Error;
 use bumpwork::export::{
-    SheetLayout, SheetPicture, StillFormat, StillRequest, draw_sheet, read_png_rgb8, write_sheet,
-    write_still,
+    SheetLayout, SheetPicture, StillFormat, StillRequest, check_destination, draw_sheet,
+    read_png_rgb8, write_sheet, write_still,
 };
 use bumpwork::quality::Quality;
 use bumpwork::shade::ViewMode;
@@ -38,9 +38,25 @@ pub struct GalleryArgs {
     scenes: Vec<String>,
 }
 
+/// The gallery's directory, made if missing; anything else of that name is refused.
+fn make_directory(directory: &Path) -> Result<(), Error> {
+    if std::fs::metadata(directory).is_ok_and(|m| !m.is_dir()) {
+        return Err(Error::write(
+            directory,
+            "it exists and is not a directory; -o names the directory to write the gallery into",
+        ));
+    }
+    std::fs::create_dir_all(directory)
+        .map_err(|e| Error::write(directory, bumpwork::bounded_read::io_words(&e)))
+}
+
 pub fn run(args: GalleryArgs) -> Result<(), Error> {
     let names = scene_names(&args.scenes)?;
-    std::fs::create_dir_all(&args.output).map_err(|e| Error::write(&args.output, e))?;
+    make_directory(&args.output)?;
+    for name in &names {
+        check_destination(&args.output.join(format!("{name}.png")))?;
+    }
+    check_destination(&args.output.join(SHEET_NAME))?;
     let interrupt = Interrupt::watch();
     let mut progress = RenderProgress::new("gallery");
     let mut pictures = Vec::new();
@@ -65,7 +81,7 @@ pub fn run(args: GalleryArgs) -> Result<(), Error> {
     let sheet = draw_sheet(&pictures, layout)
         .ok_or_else(|| Error::write(&sheet_path, "the contact sheet is too large"))?;
     write_sheet(&sheet, &sheet_path)?;
-    println!(
+    say!(
         "{} stills and {} in {}",
         names.len(),
         SHEET_NAME,

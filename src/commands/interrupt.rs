@@ -1,7 +1,12 @@
-//! Ctrl-C, SIGTERM and SIGHUP during a long render: noted, so the render stops between groups of
-//! passes and removes its temporary file instead of dying with a partial one.
+//! Ctrl-C, SIGTERM, SIGHUP and every other signal whose default is to end the process, during a
+//! long render: noted, so the render stops between groups of passes and removes its temporary
+//! file instead of dying with a partial one. (SIGKILL cannot be caught; SIGPIPE keeps its
+//! default, which `main` restores: a closed pipe is never written to through a temporary file.)
 
-use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
+use signal_hook::consts::{
+    SIGALRM, SIGHUP, SIGINT, SIGPROF, SIGQUIT, SIGTERM, SIGUSR1, SIGUSR2, SIGVTALRM, SIGXCPU,
+    SIGXFSZ,
+};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
@@ -13,7 +18,11 @@ impl Interrupt {
     /// Starts noting the signals (until the process ends).
     pub fn watch() -> Interrupt {
         let signal = Arc::new(AtomicUsize::new(0));
-        for s in [SIGINT, SIGTERM, SIGHUP] {
+        let terminating = [
+            SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM, SIGVTALRM, SIGPROF,
+            SIGXCPU, SIGXFSZ,
+        ];
+        for s in terminating {
             // If a handler cannot be installed the default action stays: the process dies and
             // the temporary file is left (never the destination).
             let _ = signal_hook::flag::register_usize(s, Arc::clone(&signal), s as usize);

@@ -1,5 +1,14 @@
 //! One file per subcommand; `main.rs` only parses and dispatches.
 
+/// Prints a line to standard output, as `println!` does, but a failed write (a full disk) is
+/// the command's error instead of a panic. A closed pipe ends the process by SIGPIPE, quietly,
+/// as coreutils do (`main` restores its default action).
+macro_rules! say {
+    ($($arg:tt)*) => {
+        $crate::commands::write_line(format_args!($($arg)*))?
+    };
+}
+
 pub mod bench;
 pub mod check;
 pub mod gallery;
@@ -10,6 +19,19 @@ pub mod view;
 
 /// Largest output side accepted (stills are rendered in bands, so memory does not grow with it).
 pub use bumpwork::still::MAX_SIDE;
+
+pub fn write_line(line: std::fmt::Arguments) -> Result<(), bumpwork::Error> {
+    use std::io::Write;
+    let mut out = std::io::stdout().lock();
+    writeln!(out, "{line}")
+        .and_then(|()| out.flush())
+        .map_err(|e| {
+            bumpwork::Error::write(
+                std::path::Path::new("standard output"),
+                bumpwork::bounded_read::io_words(&e),
+            )
+        })
+}
 
 /// Text from a file or the command line, safe to show in a terminal.
 pub fn sanitized(text: &str) -> String {

@@ -5,7 +5,9 @@ use super::interrupt::Interrupt;
 use super::progress::RenderProgress;
 use bumpwork::Error;
 use bumpwork::export::metadata::{RECIPE, SCENE, read_png_text, text_of};
-use bumpwork::export::{StillFormat, StillRequest, write_still};
+use bumpwork::export::{
+    STANDARD_OUTPUT, StillFormat, StillRequest, check_destination, write_still,
+};
 use bumpwork::quality::Quality;
 use bumpwork::scene::Scene;
 use bumpwork::shade::ViewMode;
@@ -75,12 +77,12 @@ const MAX_FRAMES: u64 = 100_000;
 pub fn run(args: RenderArgs) -> Result<(), Error> {
     if args.list {
         for name in bumpwork::scene::PRESET_NAMES {
-            println!("{name}");
+            say!("{name}");
         }
         return Ok(());
     }
     let output = args.output.clone().expect("clap requires -o unless --list");
-    refuse_to_overwrite_sources(&output)?;
+    check_outputs(&args, &output)?;
     let start = match &args.from {
         Some(still) => from_still(still)?,
         None => from_source(args.scene.as_deref().expect("clap requires a scene"))?,
@@ -100,6 +102,28 @@ pub fn run(args: RenderArgs) -> Result<(), Error> {
             recipe: &recipe,
         };
         render_one(&request, &path, args.format, &interrupt)?;
+    }
+    Ok(())
+}
+
+/// Every file the render would write can be written, before any work is done.
+fn check_outputs(args: &RenderArgs, output: &Path) -> Result<(), Error> {
+    if output.as_os_str() == STANDARD_OUTPUT {
+        if args.time_range.is_some() {
+            return Err(Error::InvalidArgument(
+                "-o - writes one still; a --time-range sequence needs a file name to number".into(),
+            ));
+        }
+        if args.format == StillFormat::Pov {
+            return Err(Error::InvalidArgument(
+                "-o - cannot take a POV-Ray scene: its image maps are written beside it".into(),
+            ));
+        }
+        return check_destination(output);
+    }
+    refuse_to_overwrite_sources(output)?;
+    for (_, path) in frames(args, 0.0, output)? {
+        check_destination(&path)?;
     }
     Ok(())
 }

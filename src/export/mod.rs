@@ -1,17 +1,18 @@
-//! Writing stills to files: PNG (with the recipe in text chunks) and the seed's PPM, always
-//! atomically.
+//! Writing stills to files: PNG (with the recipe in text chunks) and the seed's PPM, never
+//! half-written (see `output_file`).
 
-mod atomic;
 mod contact_sheet;
 pub mod label_font;
 pub mod metadata;
+mod output_file;
 mod png_file;
 mod pov_scene;
 mod ppm_file;
 mod still_file;
+mod writeback;
 
-pub use atomic::AtomicFile;
 pub use contact_sheet::{SheetLayout, SheetPicture, draw_sheet, write_sheet};
+pub use output_file::{OutputFile, STANDARD_OUTPUT, check_destination};
 pub use png_file::{PngStill, read_png_rgb8, write_png, write_png_with_text};
 pub use pov_scene::{BAKE_SIDE, write_pov};
 pub use ppm_file::PpmStill;

@@ -1,7 +1,8 @@
 //! PNG output with the `png` crate: 8-bit sRGB, text chunks before the image data, rows
 //! streamed in as they are rendered.
 
-use super::atomic::{AtomicFile, WritebackFile};
+use super::output_file::OutputFile;
+use super::writeback::WritebackFile;
 use crate::Error;
 use crate::raster::Framebuffer;
 use crate::still::RowSink;
@@ -17,7 +18,7 @@ const CHUNK_BYTES: usize = 1 << 17;
 
 /// A PNG being written: rows go in top first; `finish` completes it and makes it appear.
 pub struct PngStill {
-    file: AtomicFile,
+    file: OutputFile,
     writer: png::StreamWriter<'static, CheckedWriter<WritebackFile>>,
     failure: WriteFailure,
 }
@@ -71,7 +72,7 @@ impl PngStill {
         (width, height): (u32, u32),
         texts: &[(&str, String)],
     ) -> Result<PngStill, Error> {
-        let (file, handle) = AtomicFile::create(path)?;
+        let (file, handle) = OutputFile::create(path)?;
         let fail = |e: png::EncodingError| Error::write(path, e);
         let failure = WriteFailure::default();
         let handle = CheckedWriter {

@@ -5,7 +5,7 @@
 //! so they cannot be baked: they are left out with a warning. POV-Ray scales bump maps its own
 //! way, so the bumps look alike, not equal. POV-Ray is left-handed: z is negated throughout.
 
-use super::atomic::AtomicFile;
+use super::output_file::OutputFile;
 use super::png_file::PngStill;
 use crate::Error;
 use crate::raster::{Camera, PreparedObject, PreparedScene};
@@ -35,7 +35,7 @@ pub fn write_pov(
         let maps = bake_maps(&scene.objects[index], index, time, path, &mut warnings)?;
         write_object(&mut sdl, object, scene.ambient, &maps);
     }
-    let (file, mut handle) = AtomicFile::create(path)?;
+    let (file, mut handle) = OutputFile::create(path)?;
     handle
         .write_all(sdl.as_bytes())
         .map_err(|e| Error::write(path, e))?;
@@ -178,7 +178,7 @@ fn write_height_png(path: &Path, heights: &[f32]) -> Result<f32, Error> {
             ((level.clamp(0.0, 1.0) * 65535.0).round() as u16).to_be_bytes()
         })
         .collect();
-    let (file, handle) = AtomicFile::create(path)?;
+    let (file, handle) = OutputFile::create(path)?;
     let fail = |e: png::EncodingError| Error::write(path, e);
     let mut encoder = png::Encoder::new(handle, BAKE_SIDE, BAKE_SIDE);
     encoder.set_color(png::ColorType::Grayscale);

@@ -122,8 +122,14 @@ fn malformed_scene_files_point_at_line_and_column() {
 
 #[test]
 fn control_characters_in_file_names_are_escaped() {
-    let output = bumpwork(&["render", "evil\x1b[31m.toml", "-o", "/nonexistent/x.png"]);
+    let dir = temp_dir("escaped-names");
+    let out = dir.join("x.png");
+    let output = bumpwork(&["render", "evil\x1b[31m.toml", "-o", out.to_str().unwrap()]);
     assert_user_error(&output, "evil\\e[31m.toml");
+    assert!(!stderr(&output).contains('\x1b'));
+    let nowhere = dir.join("evil\x1b[31m/x.png");
+    let output = bumpwork(&["render", "plane-dimples", "-o", nowhere.to_str().unwrap()]);
+    assert_user_error(&output, "evil\\e[31m does not exist");
     assert!(!stderr(&output).contains('\x1b'));
 }
 

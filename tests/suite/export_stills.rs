@@ -289,7 +289,22 @@ fn failed_renders_leave_no_file_and_say_why() {
 
 #[test]
 fn an_interrupted_export_leaves_no_partial_file() {
-    let dir = temp_dir("still-interrupt");
+    let signals = [
+        ("INT", 2),
+        ("TERM", 15),
+        ("HUP", 1),
+        ("QUIT", 3),
+        ("USR1", 10),
+        ("USR2", 12),
+        ("ALRM", 14),
+    ];
+    for (name, number) in signals {
+        interrupt_export(name, number);
+    }
+}
+
+fn interrupt_export(signal: &str, number: i32) {
+    let dir = temp_dir(&format!("still-interrupt-{signal}"));
     let out = dir.join("big.png");
     let child = Command::new(env!("CARGO_BIN_EXE_bumpwork"))
         .args([
@@ -314,13 +329,18 @@ fn an_interrupted_export_leaves_no_partial_file() {
     let pid = child.id().to_string();
     assert!(
         Command::new("kill")
-            .args(["-INT", &pid])
+            .args([&format!("-{signal}"), &pid])
             .status()
             .unwrap()
             .success()
     );
     let output = child.wait_with_output().unwrap();
-    assert_eq!(output.status.code(), Some(130), "{}", stderr(&output));
+    assert_eq!(
+        output.status.code(),
+        Some(128 + number),
+        "SIG{signal}: {}",
+        stderr(&output)
+    );
     assert!(
         stderr(&output).contains("interrupted"),
         "{}",

@@ -17,6 +17,7 @@ mod hostile_files;
 mod hostile_tui;
 mod never_stuck;
 mod nothing_lost;
+mod output_paths;
 mod pattern_builtins;
 mod pattern_errors;
 mod pattern_fuzz;

@@ -1,12 +1,12 @@
 //! Nothing lost: pattern and scene files are never written by bumpwork. Every file it writes goes
-//! through `export::AtomicFile` (whole or absent: see `export_stills` for interrupted, failed and
+//! through `export::OutputFile` (whole or absent: see `export_stills` for interrupted, failed and
 //! concurrent exports), the workbench's exports take new names, and a still never replaces a
 //! pattern or scene file.
 
 use crate::cli_support::{assert_user_error, bumpwork, temp_dir};
 use std::path::Path;
 
-/// The calls that create or change files. Only `src/export/atomic.rs` may make them; tests
+/// The calls that create or change files. Only `src/export/output_file.rs` may make them; tests
 /// (the `#[cfg(test)]` module that ends a file) may do as they like.
 const WRITES: &[&str] = &[
     "fs::write",
@@ -30,7 +30,7 @@ fn sources(dir: &Path, out: &mut Vec<std::path::PathBuf>) {
     }
 }
 
-/// Whether `code` calls `call` itself (`File::create`, not `AtomicFile::create`).
+/// Whether `code` calls `call` itself (`File::create`, not `OutputFile::create`).
 fn calls(code: &str, call: &str) -> bool {
     code.match_indices(call).any(|(at, _)| {
         !code[..at]
@@ -54,16 +54,16 @@ fn only_the_atomic_file_writes_files() {
             let reads_only = file.ends_with("bounded_read.rs")
                 && *call == "OpenOptions"
                 && !code.contains(".write(");
-            if calls(code, call) && !file.ends_with("export/atomic.rs") && !reads_only {
+            if calls(code, call) && !file.ends_with("export/output_file.rs") && !reads_only {
                 writers.push(format!("{}: {call}", file.display()));
             }
         }
     }
     assert!(
         writers.is_empty(),
-        "files written outside AtomicFile: {writers:#?}"
+        "files written outside OutputFile: {writers:#?}"
     );
-    let atomic = std::fs::read_to_string(src.join("export/atomic.rs")).unwrap();
+    let atomic = std::fs::read_to_string(src.join("export/output_file.rs")).unwrap();
     assert!(
         atomic.contains(".persist("),
         "the atomic file still commits by rename"
