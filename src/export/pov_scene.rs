@@ -12,8 +12,7 @@ use crate::raster::{Camera, PreparedObject, PreparedScene};
 use crate::scene::{Light, Object, Scene};
 use crate::still::RowSink;
 use glam::{DVec3, Vec2, Vec3};
-use std::fmt::Write as _;
-use std::io::Write as _;
+use std::io::Write;
 use std::path::{Path, PathBuf};
 
 /// Side of the baked colour and bump images.
@@ -29,19 +28,45 @@ pub fn write_pov(
     path: &Path,
 ) -> Result<Vec<String>, Error> {
     let scene = &prepared.scene;
-    let mut sdl = header(scene, camera, size);
+    let (file, handle) = OutputFile::create(path)?;
+    let mut out = std::io::BufWriter::new(handle);
+    let fail = |e: std::io::Error| Error::write(path, crate::bounded_read::io_words(&e));
+    write_header(&mut out, scene, camera, size).map_err(fail)?;
     let mut warnings = Vec::new();
     for (index, object) in prepared.objects.iter().enumerate() {
         let maps = bake_maps(&scene.objects[index], index, time, path, &mut warnings)?;
-        write_object(&mut sdl, object, scene.ambient, &maps);
+        write_object(&mut out, object, scene.ambient, &maps).map_err(fail)?;
     }
-    let (file, mut handle) = OutputFile::create(path)?;
-    handle
-        .write_all(sdl.as_bytes())
-        .map_err(|e| Error::write(path, e))?;
-    drop(handle);
+    out.flush().map_err(fail)?;
+    drop(out);
     file.commit()?;
     Ok(warnings)
+}
+
+/// Text for a `//` comment: one line, whatever the scene's name holds.
+fn comment_text(text: &str) -> String {
+    text.chars()
+        .map(|c| {
+            if c.is_control() || matches!(c, '\u{2028}' | '\u{2029}') {
+                ' '
+            } else {
+                c
+            }
+        })
+        .collect()
+}
+
+/// A POV-Ray string literal: quotes and backslashes escaped, control characters dropped.
+fn pov_string(text: &str) -> String {
+    let mut literal = String::from("\"");
+    for c in text.chars().filter(|c| !c.is_control()) {
+        if matches!(c, '"' | '\\') {
+            literal.push('\\');
+        }
+        literal.push(c);
+    }
+    literal.push('"');
+    literal
 }
 
 fn pov(v: DVec3) -> String {
@@ -52,31 +77,36 @@ fn rgb(c: Vec3) -> String {
     format!("rgb <{}, {}, {}>", c.x, c.y, c.z)
 }
 
-fn header(scene: &Scene, camera: &Camera, (width, height): (u32, u32)) -> String {
+fn write_header(
+    sdl: &mut impl Write,
+    scene: &Scene,
+    camera: &Camera,
+    (width, height): (u32, u32),
+) -> std::io::Result<()> {
     let aspect = width as f64 / height as f64;
     let half_v = (camera.vfov_degrees as f64).to_radians() / 2.0;
     let hfov = 2.0 * (half_v.tan() * aspect).atan();
-    let mut sdl = String::new();
-    let _ = writeln!(sdl, "// {} — written by {}", scene.name, crate::PROGRAM);
-    let _ = writeln!(
+    let name = comment_text(&scene.name);
+    writeln!(sdl, "// {name} — written by {}", crate::PROGRAM)?;
+    writeln!(
         sdl,
         "// povray +W{width} +H{height} (+A0.3 for antialiasing)"
-    );
-    let _ = writeln!(
+    )?;
+    writeln!(
         sdl,
         "#version 3.7;\nglobal_settings {{ assumed_gamma 1.0 ambient_light rgb 1 }}"
-    );
-    let _ = writeln!(sdl, "background {{ {} }}", rgb(scene.background));
-    let _ = writeln!(
+    )?;
+    writeln!(sdl, "background {{ {} }}", rgb(scene.background))?;
+    writeln!(
         sdl,
         "camera {{ perspective location {} look_at {} sky {} right x*{aspect} up y angle {} }}",
         pov(camera.eye),
         pov(camera.target),
         pov(camera.up.as_dvec3()),
         hfov.to_degrees()
-    );
+    )?;
     for light in &scene.lights {
-        let _ = match *light {
+        match *light {
             Light::Point { position, color } => {
                 writeln!(
                     sdl,
@@ -91,9 +121,9 @@ fn header(scene: &Scene, camera: &Camera, (width, height): (u32, u32)) -> String
                 pov(towards.as_dvec3() * 1e6),
                 rgb(color)
             ),
-        };
+        }?;
     }
-    sdl
+    Ok(())
 }
 
 /// File names (relative to the .pov file) of an object's baked maps, and the bump map's depth.
@@ -191,58 +221,70 @@ fn write_height_png(path: &Path, heights: &[f32]) -> Result<f32, Error> {
 }
 
 /// One object as a mesh2; without normal and uv indices POV-Ray uses the face indices for both.
-fn write_object(sdl: &mut String, object: &PreparedObject, ambient: Vec3, maps: &BakedMaps) {
+/// Streamed list by list: a finely tessellated object's text is never held whole.
+fn write_object(
+    sdl: &mut impl Write,
+    object: &PreparedObject,
+    ambient: Vec3,
+    maps: &BakedMaps,
+) -> std::io::Result<()> {
     let surface = &object.surface;
     let mesh = &object.mesh;
     let origin = surface.origin();
     let domain = surface.domain();
     let extent = domain.max - domain.min;
-    let list = |items: Vec<String>| format!("{},\n    {}", items.len(), items.join(",\n    "));
-    let vertices = mesh
-        .positions
-        .iter()
-        .map(|&p| pov(origin + p.as_dvec3()))
-        .collect();
-    let normals = mesh
-        .uvs
-        .iter()
-        .map(|uv| pov(surface.frame(uv.x, uv.y).n.as_dvec3()))
-        .collect();
-    let uvs = mesh
-        .uvs
-        .iter()
-        .map(|&uv| {
-            let t = (uv - domain.min) / extent.max(Vec2::splat(1e-30));
-            format!("<{}, {}>", t.x, t.y)
-        })
-        .collect();
-    let faces = mesh
-        .indices
-        .iter()
-        .map(|[a, b, c]| format!("<{a}, {b}, {c}>"))
-        .collect();
+    write!(sdl, "mesh2 {{\n  vertex_vectors {{ ")?;
+    write_list(
+        sdl,
+        mesh.positions.iter().map(|&p| pov(origin + p.as_dvec3())),
+    )?;
+    write!(sdl, " }}\n  normal_vectors {{ ")?;
+    let normal_at = |uv: &Vec2| pov(surface.frame(uv.x, uv.y).n.as_dvec3());
+    write_list(sdl, mesh.uvs.iter().map(normal_at))?;
+    write!(sdl, " }}\n  uv_vectors {{ ")?;
+    let uv_of = |&uv: &Vec2| {
+        let t = (uv - domain.min) / extent.max(Vec2::splat(1e-30));
+        format!("<{}, {}>", t.x, t.y)
+    };
+    write_list(sdl, mesh.uvs.iter().map(uv_of))?;
+    write!(sdl, " }}\n  face_indices {{ ")?;
+    let face = |[a, b, c]: &[u32; 3]| format!("<{a}, {b}, {c}>");
+    write_list(sdl, mesh.indices.iter().map(face))?;
     let material = &object.material;
     let pigment = match &maps.color {
-        Some(file) => format!("uv_mapping image_map {{ png \"{file}\" interpolate 2 }}"),
+        Some(file) => format!(
+            "uv_mapping image_map {{ png {} interpolate 2 }}",
+            pov_string(file)
+        ),
         None => rgb(material.color),
     };
     let normal = match &maps.bump {
         Some((file, depth)) => format!(
-            "normal {{ uv_mapping bump_map {{ png \"{file}\" interpolate 2 bump_size {depth} }} }}"
+            "normal {{ uv_mapping bump_map {{ png {} interpolate 2 bump_size {depth} }} }}",
+            pov_string(file)
         ),
         None => String::new(),
     };
-    let _ = writeln!(
+    writeln!(
         sdl,
-        "mesh2 {{\n  vertex_vectors {{ {} }}\n  normal_vectors {{ {} }}\n  uv_vectors {{ {} }}\n  \
-         face_indices {{ {} }}\n  \
-         texture {{ pigment {{ {pigment} }} {normal}\n    finish {{ ambient {} diffuse 1 specular {} roughness {} }} }}\n}}",
-        list(vertices),
-        list(normals),
-        list(uvs),
-        list(faces),
+        " }}\n  texture {{ pigment {{ {pigment} }} {normal}\n    finish {{ ambient {} diffuse 1 specular {} roughness {} }} }}\n}}",
         rgb(ambient),
         material.specular,
         1.0 / material.shininess.max(1e-3),
-    );
+    )
+}
+
+/// `N,` then the items, one a line.
+fn write_list(
+    sdl: &mut impl Write,
+    items: impl ExactSizeIterator<Item = String>,
+) -> std::io::Result<()> {
+    write!(sdl, "{},", items.len())?;
+    let mut first = true;
+    for item in items {
+        let separator = if first { "" } else { "," };
+        write!(sdl, "{separator}\n    {item}")?;
+        first = false;
+    }
+    Ok(())
 }

@@ -498,3 +498,50 @@ fn a_recipe_from_another_version_that_cannot_be_read_says_which_version_made_it(
         Vec::<String>::new()
     );
 }
+
+/// A scene's name and the output's own name reach the .pov file only as a one-line comment and
+/// as escaped string literals: neither can add a directive such as `#fopen`.
+#[test]
+fn names_cannot_inject_pov_ray_directives() {
+    let dir = temp_dir("still-pov-injection");
+    let scene = dir.join("inj.toml");
+    let text = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/sphere-on-plane.toml"),
+    )
+    .unwrap();
+    let hostile = "name = \"x\\n#fopen F \\\"pwned.txt\\\" write\\n#write (F, \\\"1\\\")\"\n";
+    std::fs::write(&scene, format!("{hostile}{}", strip_name(&text))).unwrap();
+    let pov = dir.join("a\" + #fopen.pov");
+    let out = bumpwork(&[
+        "render",
+        scene.to_str().unwrap(),
+        "-o",
+        pov.to_str().unwrap(),
+        "--format",
+        "pov",
+        "--tessellation",
+        "4",
+    ]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let sdl = std::fs::read_to_string(&pov).unwrap();
+    let first = sdl.lines().next().unwrap();
+    assert!(first.starts_with("// x #fopen"), "{first}");
+    for line in sdl.lines().skip(1) {
+        assert!(
+            !line.contains("#fopen") || line.contains("png \"a\\\" + #fopen"),
+            "{line}"
+        );
+        assert!(
+            !line.trim_start().starts_with("#fopen") && !line.contains("#write"),
+            "{line}"
+        );
+    }
+}
+
+fn strip_name(scene: &str) -> String {
+    scene
+        .lines()
+        .filter(|l| !l.starts_with("name"))
+        .map(|l| format!("{l}\n"))
+        .collect()
+}
