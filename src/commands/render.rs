@@ -11,7 +11,9 @@ use bumpwork::export::{
 use bumpwork::quality::Quality;
 use bumpwork::scene::Scene;
 use bumpwork::shade::ViewMode;
-use bumpwork::still::{MAX_DENSITY, MAX_SAMPLES, Recipe, ResolveFilter, StillSettings};
+use bumpwork::still::{
+    MAX_DENSITY, MAX_SAMPLES, MAX_TIME_SECONDS, Recipe, ResolveFilter, StillSettings,
+};
 use std::path::{Path, PathBuf};
 
 #[derive(clap::Args)]
@@ -26,6 +28,10 @@ pub struct RenderArgs {
     /// here override the recorded ones.
     #[arg(long, value_name = "STILL.png")]
     from: Option<PathBuf>,
+    /// With --from: also read the pattern and image files the still names outside its own
+    /// directory (a still may come from anyone, so by default only files beside it are read).
+    #[arg(long, requires = "from")]
+    read_outside: bool,
     /// Output size in pixels, WIDTHxHEIGHT [default: 800x600].
     #[arg(long, value_parser = super::parse_size)]
     size: Option<(u32, u32)>,
@@ -84,7 +90,7 @@ pub fn run(args: RenderArgs) -> Result<(), Error> {
     let output = args.output.clone().expect("clap requires -o unless --list");
     check_outputs(&args, &output)?;
     let start = match &args.from {
-        Some(still) => from_still(still)?,
+        Some(still) => from_still(still, args.read_outside)?,
         None => from_source(args.scene.as_deref().expect("clap requires a scene"))?,
     };
     let settings = override_settings(start.settings, &args);
@@ -167,11 +173,14 @@ fn from_source(name: &str) -> Result<Start, Error> {
     })
 }
 
-fn from_still(still: &Path) -> Result<Start, Error> {
+fn from_still(still: &Path, read_outside: bool) -> Result<Start, Error> {
     let texts = read_png_text(still)?;
     let origin = format!("{} ({RECIPE})", still.display());
     let recipe = Recipe::parse(text_of(&texts, RECIPE, still)?, &origin)?;
     let scene_text = text_of(&texts, SCENE, still)?.to_string();
+    if !read_outside {
+        confine_to_still_directory(&recipe.files_read(&scene_text)?, still)?;
+    }
     for change in recipe.changed_files() {
         eprintln!("bumpwork: warning: {change}; the picture may differ");
     }
@@ -191,6 +200,26 @@ fn from_still(still: &Path) -> Result<Start, Error> {
         scene_text,
         settings,
     })
+}
+
+/// Refuses a file outside the still's directory (links followed), which a crafted still could
+/// otherwise use to read and quote any file the user can read.
+fn confine_to_still_directory(files: &[PathBuf], still: &Path) -> Result<(), Error> {
+    let parent = still.parent().filter(|p| !p.as_os_str().is_empty());
+    let directory = std::fs::canonicalize(parent.unwrap_or(Path::new(".")))
+        .map_err(|e| Error::read(still, bumpwork::bounded_read::io_words(&e)))?;
+    for file in files {
+        let resolved = std::fs::canonicalize(file).unwrap_or_else(|_| file.clone());
+        if !resolved.starts_with(&directory) {
+            return Err(Error::InvalidArgument(format!(
+                "the still {} names {}, outside its directory {}; add --read-outside to read it",
+                super::sanitized(&still.display().to_string()),
+                super::sanitized(&file.display().to_string()),
+                super::sanitized(&directory.display().to_string()),
+            )));
+        }
+    }
+    Ok(())
 }
 
 fn override_settings(base: StillSettings, args: &RenderArgs) -> StillSettings {
@@ -302,7 +331,7 @@ fn parse_time(text: &str) -> Result<f64, String> {
     text.trim()
         .parse::<f64>()
         .ok()
-        .filter(|t| t.is_finite() && t.abs() <= 1e9)
+        .filter(|t| t.is_finite() && t.abs() <= MAX_TIME_SECONDS)
         .ok_or_else(|| format!("expected a time in seconds (|t| ≤ 1e9), got '{text}'"))
 }
 

@@ -11,24 +11,9 @@ use std::path::{Path, PathBuf};
 /// pattern or image it names is missing or broken.
 pub fn scene_file_dependencies(path: &Path) -> Result<Vec<PathBuf>, Error> {
     let text = crate::read_text_limited(path, MAX_SCENE_FILE_BYTES)?;
-    let file: SceneFile = toml::from_str(&text).map_err(|e| {
-        let offset = e.span().map_or(0, |s| s.start);
-        let origin = path.display().to_string();
-        Error::Diagnostic(crate::diagnostic::render(
-            &origin,
-            &text,
-            offset,
-            e.message(),
-        ))
-    })?;
     let base = path.parent().unwrap_or(Path::new("."));
     let mut files = vec![path.to_path_buf()];
-    let bindings = file
-        .objects
-        .iter()
-        .flat_map(|o| [&o.texture, &o.bump])
-        .flatten();
-    for file in bindings.flat_map(|b| binding_files(b, base)) {
+    for file in scene_text_dependencies(&text, &path.display().to_string(), base)? {
         if !files.contains(&file) {
             files.push(file);
         }
@@ -36,7 +21,27 @@ pub fn scene_file_dependencies(path: &Path) -> Result<Vec<PathBuf>, Error> {
     Ok(files)
 }
 
-fn binding_files(binding: &BindingFile, base: &Path) -> Vec<PathBuf> {
+/// The pattern and image files scene text names, joined to `base`; `origin` names the text in
+/// messages.
+pub fn scene_text_dependencies(
+    text: &str,
+    origin: &str,
+    base: &Path,
+) -> Result<Vec<PathBuf>, Error> {
+    let file: SceneFile = toml::from_str(text).map_err(|e| {
+        let offset = e.span().map_or(0, |s| s.start);
+        Error::Diagnostic(crate::diagnostic::render(origin, text, offset, e.message()))
+    })?;
+    Ok(file
+        .objects
+        .iter()
+        .flat_map(|o| [&o.texture, &o.bump])
+        .flatten()
+        .flat_map(|b| binding_files(b, base))
+        .collect())
+}
+
+pub(crate) fn binding_files(binding: &BindingFile, base: &Path) -> Vec<PathBuf> {
     let pattern = binding
         .pattern
         .as_deref()

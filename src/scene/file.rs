@@ -167,6 +167,9 @@ macro_rules! checked {
     };
 }
 
+/// The nearest near plane, as a fraction of the eye-target distance.
+const MIN_NEAR_FRACTION: f32 = 1e-6;
+
 /// Coordinates past this are refused: beyond it even f64 positions lose sub-unit precision.
 const MAX_COORDINATE: f64 = 1e12;
 
@@ -286,13 +289,21 @@ impl SceneFile {
 }
 
 impl CameraFile {
-    fn to_camera(&self) -> Result<Camera, String> {
+    pub(crate) fn to_camera(&self) -> Result<Camera, String> {
         let distance = (self.target.0 - self.eye.0).length() as f32;
         if distance <= 0.0 {
             return Err("the camera's eye and target are the same point".into());
         }
         let near = self.near.map_or(distance * 1e-3, |n| n.0);
         let far = self.far.map_or(distance * 1e6, |f| f.0);
+        // Nearer than this, f32 depth across the default range holds no precision at all.
+        let nearest = distance * MIN_NEAR_FRACTION;
+        if near < nearest {
+            return Err(format!(
+                "the camera's near ({near}) must be at least {MIN_NEAR_FRACTION:e} of the \
+                 eye-target distance, {nearest}"
+            ));
+        }
         if near >= far {
             return Err(format!(
                 "the camera's near ({near}) must be less than its far ({far})"

@@ -9,7 +9,8 @@ mod source;
 
 pub use binding_file::{BindingFile, FilterFile, MappingKind, WrapFile};
 pub use file::{
-    Finite, LightFile, MAX_SCENE_FILE_BYTES, Positive, SceneFile, load_scene_file, parse_scene,
+    CameraFile, Direction, FieldOfView, Finite, LightFile, MAX_SCENE_FILE_BYTES, Point, Positive,
+    SceneFile, load_scene_file, parse_scene,
 };
 pub use material::{
     Bump, BumpSource, ImageHeight, ImageTexture, Material, PatternBinding, Placement, Texturing,

@@ -10,7 +10,8 @@ mod stream;
 
 pub use bands::{BandBuffers, BandJob, band_rows, render_supersampled};
 pub use recipe::{
-    FileHash, MAX_DENSITY, MAX_SIDE, ObjectState, Recipe, RecipeCamera, StillSettings,
+    FileHash, MAX_DENSITY, MAX_SIDE, MAX_TIME_SECONDS, ObjectState, Recipe, RecipeCamera,
+    StillSettings,
 };
 pub use samples::{MAX_SAMPLES, RefiningOrder, ResolveFilter, Supersampling};
 pub use stream::{RowSink, StillStop, stream_still};

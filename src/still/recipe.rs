@@ -7,11 +7,10 @@ use crate::Error;
 use crate::quality::Quality;
 use crate::raster::Camera;
 use crate::scene::{
-    BindingFile, BumpSource, Finite, LightFile, Material, PatternBinding, Positive, Scene,
-    Texturing,
+    BindingFile, BumpSource, CameraFile, Direction, FieldOfView, Finite, LightFile, Material,
+    PatternBinding, Point, Positive, Scene, Texturing,
 };
 use crate::shade::{GradientMethod, ViewMode};
-use glam::{DVec3, Vec3};
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
 
@@ -19,6 +18,8 @@ use std::path::{Path, PathBuf};
 pub const MAX_SIDE: u32 = 16384;
 /// The largest tessellation density (cells per half turn).
 pub const MAX_DENSITY: u32 = 4096;
+/// The largest scene time, in seconds either way: past it f32 pattern time loses whole seconds.
+pub const MAX_TIME_SECONDS: f64 = 1e9;
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, rename_all = "kebab-case")]
@@ -164,8 +165,11 @@ impl Recipe {
             ));
         }
         check_quality(&self.quality)?;
-        if !self.time.is_finite() {
-            return Err("time is not a finite number".into());
+        if !(self.time.is_finite() && self.time.abs() <= MAX_TIME_SECONDS) {
+            return Err(format!(
+                "time {:e} is outside ±{MAX_TIME_SECONDS:e} seconds",
+                self.time
+            ));
         }
         let filter = ResolveFilter::parse(&self.filter)
             .ok_or_else(|| format!("unknown filter '{}'", self.filter))?;
@@ -205,6 +209,20 @@ impl Recipe {
         scene.camera = self.camera.to_camera()?;
         scene.lights = self.lights.iter().map(LightFile::to_light).collect();
         Ok(scene)
+    }
+
+    /// Every pattern and image file rebuilding the scene from `scene_text` would read.
+    pub fn files_read(&self, scene_text: &str) -> Result<Vec<PathBuf>, Error> {
+        let base = source_directory(&self.source);
+        let mut files =
+            crate::scene::dependencies::scene_text_dependencies(scene_text, "scene", &base)?;
+        let bindings = self
+            .objects
+            .iter()
+            .flat_map(|o| [&o.bump, &o.texture])
+            .flatten();
+        files.extend(bindings.flat_map(|b| crate::scene::dependencies::binding_files(b, &base)));
+        Ok(files)
     }
 
     /// Files whose content is no longer what the still was made from, as messages.
@@ -259,28 +277,19 @@ impl RecipeCamera {
         }
     }
 
+    /// The camera checked exactly as a scene file's `[camera]` is.
     fn to_camera(&self) -> Result<Camera, Error> {
-        let finite = self.eye.iter().chain(&self.target).all(|c| c.is_finite())
-            && self.up.iter().all(|c| c.is_finite());
-        let sane = finite
-            && self.fov > 0.0
-            && self.fov < 180.0
-            && self.near > 0.0
-            && self.near < self.far
-            && self.far.is_finite();
-        if !sane {
-            return Err(Error::Diagnostic(
-                "the recipe's camera has non-finite values or a bad fov/near/far".into(),
-            ));
-        }
-        Ok(Camera {
-            eye: DVec3::from_array(self.eye),
-            target: DVec3::from_array(self.target),
-            up: Vec3::from_array(self.up),
-            vfov_degrees: self.fov,
-            near: self.near,
-            far: self.far,
-        })
+        let refuse = |m: String| Error::Diagnostic(format!("the recipe's camera: {m}"));
+        let widen = |v: [f32; 3]| v.map(f64::from);
+        let file = CameraFile {
+            eye: Point::try_from(self.eye).map_err(refuse)?,
+            target: Point::try_from(self.target).map_err(refuse)?,
+            up: Direction::try_from(widen(self.up)).map_err(refuse)?,
+            fov: FieldOfView::try_from(f64::from(self.fov)).map_err(refuse)?,
+            near: Some(Positive::try_from(f64::from(self.near)).map_err(refuse)?),
+            far: Some(Positive::try_from(f64::from(self.far)).map_err(refuse)?),
+        };
+        file.to_camera().map_err(refuse)
     }
 }
 

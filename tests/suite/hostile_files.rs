@@ -375,3 +375,115 @@ fn fifos_are_refused_at_once_wherever_they_are_named() {
         assert!(!out.exists(), "{args:?} left a still");
     }
 }
+
+/// A copy of `still` whose text chunks went through `edit` (compressed iTXt, as stills carry).
+fn doctored(still: &Path, out: &Path, edit: impl Fn(&str, &str) -> String) {
+    let texts = bumpwork::export::metadata::read_png_text(still).unwrap();
+    let mut encoder = png::Encoder::new(std::fs::File::create(out).unwrap(), 1, 1);
+    encoder.set_color(png::ColorType::Rgb);
+    for (keyword, text) in &texts {
+        encoder
+            .add_itxt_chunk(keyword.clone(), edit(keyword, text))
+            .unwrap();
+    }
+    let mut writer = encoder.write_header().unwrap();
+    writer.write_image_data(&[0, 0, 0]).unwrap();
+    writer.finish().unwrap();
+}
+
+fn render_from(still: &Path, extra: &[&str]) -> Output {
+    let again = still.with_file_name("again.png");
+    let mut args = vec![
+        OsStr::new("render"),
+        OsStr::new("--from"),
+        still.as_os_str(),
+        OsStr::new("-o"),
+        again.as_os_str(),
+    ];
+    args.extend(extra.iter().map(OsStr::new));
+    run(&args)
+}
+
+#[test]
+fn a_crafted_still_reads_nothing_outside_its_directory_and_bad_values_are_refused() {
+    let dir = temp_dir("hostile-recipe");
+    let still = dir.join("still.png");
+    let output = bumpwork(&[
+        "render",
+        "plane-dimples",
+        "--size",
+        "8x8",
+        "-o",
+        still.to_str().unwrap(),
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+
+    // The scene text names a file outside the still's directory as its bump pattern.
+    let outside = temp_dir("hostile-recipe-outside");
+    let secret = write(&outside, "secret.pat", b"TOP SECRET first line\n");
+    let reads_secret = dir.join("reads-secret.png");
+    doctored(&still, &reads_secret, |_, text| {
+        let named = format!("pattern = \"{}\"", secret.display());
+        text.replace("pattern = \"dimples-seed\"", &named)
+    });
+    let refused = render_from(&reads_secret, &[]);
+    assert_clean_error(&refused, "outside its directory");
+    assert!(
+        !stderr(&refused).contains("TOP SECRET"),
+        "{}",
+        stderr(&refused)
+    );
+    let allowed = render_from(&reads_secret, &["--read-outside"]);
+    assert!(
+        stderr(&allowed).contains("secret.pat"),
+        "{}",
+        stderr(&allowed)
+    );
+
+    // Values a scene file refuses are refused in a recipe too.
+    let cases = [
+        ("up = [", "up = [0.0, 0.0, 0.0]\n#", "a direction"),
+        ("fov = ", "fov = 0.0\n#", "an angle in degrees"),
+        ("near = ", "near = 1e-45\n#", "the camera's near"),
+        ("time = ", "time = 1e300\n#", "time 1e300 is outside"),
+    ];
+    for (key, replacement, expected) in cases {
+        let bad = dir.join("bad.png");
+        doctored(&still, &bad, |keyword, text| {
+            if keyword != "bumpwork-recipe" {
+                return text.to_string();
+            }
+            text.lines()
+                .map(|l| {
+                    if l.starts_with(key) {
+                        format!("{replacement}{l}")
+                    } else {
+                        l.to_string()
+                    }
+                })
+                .collect::<Vec<_>>()
+                .join("\n")
+        });
+        assert_clean_error(&render_from(&bad, &[]), expected);
+    }
+}
+
+/// A few kilobytes of compressed recipe that would inflate to 16 MiB: refused at the scene
+/// file's limit, within a small memory cap.
+#[test]
+fn a_compressed_recipe_bomb_is_refused_at_the_limit() {
+    use png::text_metadata::ITXtChunk;
+    let dir = temp_dir("hostile-bomb");
+    let bomb = dir.join("bomb.png");
+    let mut encoder = png::Encoder::new(std::fs::File::create(&bomb).unwrap(), 1, 1);
+    encoder.set_color(png::ColorType::Rgb);
+    let mut writer = encoder.write_header().unwrap();
+    let mut chunk = ITXtChunk::new("bumpwork-recipe", "#".repeat(16 << 20));
+    chunk.compressed = true;
+    writer.write_text_chunk(&chunk).unwrap();
+    writer.write_image_data(&[0, 0, 0]).unwrap();
+    writer.finish().unwrap();
+    let size = std::fs::metadata(&bomb).unwrap().len();
+    assert!(size < 256 << 10, "{size} bytes");
+    assert_clean_error(&render_from(&bomb, &[]), "longer than the limit of 1 MiB");
+}
