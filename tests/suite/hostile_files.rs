@@ -260,23 +260,12 @@ fn a_recipe_naming_a_device_does_not_hang_render_from() {
         "8x8",
     ]);
     assert!(output.status.success(), "{}", stderr(&output));
-    let texts = bumpwork::export::metadata::read_png_text(&still).unwrap();
     let pattern_path = dir.join("p.pat").canonicalize().unwrap();
-    let mut encoder = png::Encoder::new(
-        std::fs::File::create(dir.join("doctored.png")).unwrap(),
-        1,
-        1,
-    );
-    encoder.set_color(png::ColorType::Rgb);
-    for (keyword, text) in &texts {
-        // Only the list of hashed files: the scene still reads the real pattern.
-        let hashed = format!("path = \"{}\"", pattern_path.display());
-        let text = text.replace(&hashed, "path = \"/dev/zero\"");
-        encoder.add_itxt_chunk(keyword.clone(), text).unwrap();
-    }
-    let mut writer = encoder.write_header().unwrap();
-    writer.write_image_data(&[0, 0, 0]).unwrap();
-    writer.finish().unwrap();
+    // Only the list of hashed files: the scene still reads the real pattern.
+    let hashed = format!("path = \"{}\"", pattern_path.display());
+    doctored(&still, &dir.join("doctored.png"), |_, text| {
+        text.replace(&hashed, "path = \"/dev/zero\"")
+    });
     let doctored = dir.join("doctored.png");
     let again = dir.join("again.png");
     let output = run(&[
