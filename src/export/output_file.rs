@@ -37,17 +37,12 @@ pub struct OutputFile {
 enum Commit {
     /// The bytes went straight to standard output, a FIFO or a device.
     Direct,
-    /// Renamed over `target` once synced.
-    Rename {
+    /// Synced, then renamed over `target`, or copied into its inode when it has other hard links.
+    Replace {
         temporary: TempPath,
         target: PathBuf,
         sync: File,
-    },
-    /// Copied into `target`'s own inode, which has other hard links.
-    CopyInto {
-        temporary: TempPath,
-        target: PathBuf,
-        sync: File,
+        copy_into: bool,
     },
 }
 
@@ -83,19 +78,11 @@ impl OutputFile {
             Target::Regular { path, existing } => {
                 let (file, temporary) = temporary_beside(&path, existing.as_ref(), destination)?;
                 let sync = file.try_clone().map_err(|e| Error::write(destination, e))?;
-                let links = existing.as_ref().map_or(1, hard_links);
-                let commit = if links > 1 {
-                    Commit::CopyInto {
-                        temporary,
-                        target: path,
-                        sync,
-                    }
-                } else {
-                    Commit::Rename {
-                        temporary,
-                        target: path,
-                        sync,
-                    }
+                let commit = Commit::Replace {
+                    temporary,
+                    target: path,
+                    sync,
+                    copy_into: existing.as_ref().map_or(1, hard_links) > 1,
                 };
                 Ok((output(commit), file))
             }
@@ -111,18 +98,20 @@ impl OutputFile {
         let fail = |e: std::io::Error| Error::write(&self.destination, io_words(&e));
         match self.commit {
             Commit::Direct => Ok(()),
-            Commit::Rename {
+            Commit::Replace {
                 temporary,
                 target,
                 sync,
+                copy_into: false,
             } => {
                 sync.sync_all().map_err(fail)?;
                 temporary.persist(&target).map_err(|e| fail(e.error))
             }
-            Commit::CopyInto {
+            Commit::Replace {
                 temporary,
                 target,
                 sync,
+                copy_into: true,
             } => {
                 sync.sync_all().map_err(fail)?;
                 let mut finished = File::open(&temporary).map_err(fail)?;

@@ -81,3 +81,12 @@ pub fn raw_control(text: &[u8]) -> Option<char> {
         .chars()
         .find(|&c| c.is_control() && c != '\n')
 }
+
+/// Makes a FIFO at `path` (no reader or writer opens it).
+#[cfg(unix)]
+pub fn make_fifo(path: &Path) {
+    use std::os::unix::ffi::OsStrExt;
+    let name = std::ffi::CString::new(path.as_os_str().as_bytes()).unwrap();
+    // SAFETY: mkfifo reads the NUL-terminated path it is given.
+    assert_eq!(unsafe { libc::mkfifo(name.as_ptr(), 0o600) }, 0);
+}

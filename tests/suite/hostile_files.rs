@@ -320,10 +320,7 @@ fn the_image_budget_is_the_users_to_set_and_checked() {
 fn fifos_are_refused_at_once_wherever_they_are_named() {
     let dir = temp_dir("hostile-fifos");
     for name in ["p.pat", "s.toml", "i.png"] {
-        let path = dir.join(name);
-        let c_path = std::ffi::CString::new(path.as_os_str().as_bytes()).unwrap();
-        // SAFETY: mkfifo reads the NUL-terminated path it is given.
-        assert_eq!(unsafe { libc::mkfifo(c_path.as_ptr(), 0o600) }, 0);
+        crate::cli_support::make_fifo(&dir.join(name));
     }
     let scene = write(
         &dir,

@@ -5,6 +5,7 @@
 
 #![cfg(unix)]
 
+use crate::cli_support::make_fifo;
 use crate::pty_support::{Session, status_contains};
 use portable_pty::CommandBuilder;
 use std::path::Path;
@@ -25,12 +26,6 @@ const QUITS: [(&str, Quit); 4] = [
     ("SIGTERM", Quit::Signal(libc::SIGTERM)),
     ("SIGHUP", Quit::Signal(libc::SIGHUP)),
 ];
-
-fn make_fifo(path: &Path) {
-    let name = std::ffi::CString::new(path.as_os_str().as_encoded_bytes()).unwrap();
-    // SAFETY: mkfifo reads the NUL-terminated path it is given.
-    assert_eq!(unsafe { libc::mkfifo(name.as_ptr(), 0o600) }, 0);
-}
 
 /// Starts `view live.pat`, turns the file into what `replace` makes, waits for the failed reload
 /// to be reported, then quits each way in turn (a fresh workbench for each).
