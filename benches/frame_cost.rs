@@ -52,7 +52,7 @@ fn stills(n: usize, samples: u32, contrast: Option<f32>) {
     let (_, text, scene) = pov_peer_files(&dir);
     let camera = scene.camera.clone();
     let settings = pov_peer_settings(samples, contrast);
-    let prepared = settings.prepare(scene, &camera);
+    let prepared = settings.prepare(scene, &camera).unwrap();
     let recipe = Recipe::capture("peer", &prepared.scene, &camera, &settings);
     let request = StillRequest {
         prepared: &prepared,
@@ -75,7 +75,7 @@ fn pov_peer_scene() -> (PreparedScene, Camera, Quality) {
     let _ = std::fs::remove_dir_all(&dir);
     let camera = scene.camera.clone();
     let quality = Quality::interactive();
-    let prepared = quality.prepare(scene, &camera, VIEWPORT);
+    let prepared = quality.prepare(scene, &camera, VIEWPORT, 0).unwrap();
     (prepared, camera, quality)
 }
 

@@ -41,7 +41,7 @@ fn main() {
     let (scene_path, text, scene) = pov_peer_files(&dir);
     let camera = scene.camera.clone();
     let base = pov_peer_settings(1, None);
-    let prepared = base.prepare(scene, &camera);
+    let prepared = base.prepare(scene, &camera).unwrap();
     let pov = dir.join("peer.pov");
     write_pov(&prepared, &camera, SIZE, 0.0, &pov).expect("pov scene");
     println!(

@@ -26,6 +26,8 @@ pub enum Error {
     },
     #[error("{0}")]
     InvalidArgument(String),
+    #[error("{0}")]
+    OverBudget(#[from] crate::memory_budget::OverBudget),
     /// A signal stopped the work; nothing partial was left behind. Exit status 128 + signal.
     #[error("interrupted by signal {0}; no file was written")]
     Interrupted(i32),

@@ -74,7 +74,7 @@ fn restore_default_sigpipe() {
 }
 
 fn run(cli: Cli) -> Result<(), Error> {
-    bumpwork::texture::check_image_budget().map_err(Error::InvalidArgument)?;
+    bumpwork::memory_budget::check_budget_var().map_err(Error::InvalidArgument)?;
     match cli.command {
         Some(Command::Render(args)) => commands::render::run(args),
         Some(Command::Check(args)) => commands::check::run(args),

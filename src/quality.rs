@@ -9,6 +9,7 @@ mod adaptive;
 
 pub use adaptive::{MAX_ADAPTIVE_DENSITY, adaptive_density, projected_chord_error};
 
+use crate::memory_budget::{MemoryUse, OverBudget};
 use crate::pattern::Precision;
 use crate::raster::{Camera, Interpolation, PreparedObject, PreparedScene, RenderTarget, Viewport};
 use crate::scene::{Scene, Texturing};
@@ -145,24 +146,50 @@ impl Quality {
         })
     }
 
-    /// Tessellates the scene for this view (after applying the filter override).
-    pub fn prepare(&self, mut scene: Scene, camera: &Camera, viewport: Viewport) -> PreparedScene {
+    /// Tessellates the scene for this view (after applying the filter override), once the
+    /// meshes, the scene's images and lights and `output_bytes` of buffers are known to fit the
+    /// memory budget together.
+    pub fn prepare(
+        &self,
+        mut scene: Scene,
+        camera: &Camera,
+        viewport: Viewport,
+        output_bytes: u64,
+    ) -> Result<PreparedScene, OverBudget> {
         if let Some(filter) = self.filter {
             override_filter(&mut scene, filter);
         }
+        let tessellations: Vec<Tessellation> = scene
+            .objects
+            .par_iter()
+            .map(|o| Tessellation {
+                density: self.density_for(&o.surface, camera, viewport),
+            })
+            .collect();
+        let triangles = scene
+            .objects
+            .iter()
+            .zip(&tessellations)
+            .map(|(o, &tessellation)| o.surface.triangle_count(tessellation))
+            .fold(0, u64::saturating_add);
+        MemoryUse {
+            image_bytes: scene.image_bytes(),
+            triangles,
+            lights: scene.lights.len() as u64,
+            output_bytes,
+        }
+        .check(crate::memory_budget::budget_bytes())?;
         let objects = scene
             .objects
             .par_iter()
-            .map(|o| {
-                let density = self.density_for(&o.surface, camera, viewport);
-                PreparedObject {
-                    surface: o.surface.clone(),
-                    material: o.material.clone(),
-                    mesh: o.surface.tessellate(Tessellation { density }),
-                }
+            .zip(tessellations)
+            .map(|(o, tessellation)| PreparedObject {
+                surface: o.surface.clone(),
+                material: o.material.clone(),
+                mesh: o.surface.tessellate(tessellation),
             })
             .collect();
-        PreparedScene { scene, objects }
+        Ok(PreparedScene { scene, objects })
     }
 
     /// The tessellation density this quality gives a surface in this view.

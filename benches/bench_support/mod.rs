@@ -12,7 +12,7 @@ use bumpwork::scene::{
 use bumpwork::shade::ViewMode;
 use bumpwork::still::{ResolveFilter, StillSettings};
 use bumpwork::surface::{Sphere, Surface};
-use bumpwork::texture::{Filter, Mapping, Sampler, Spherical, Texture, Wrap, load_texture};
+use bumpwork::texture::{Filter, ImageCache, Mapping, Sampler, Spherical, Texture, Wrap};
 use glam::{DVec3, Vec3};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
@@ -65,7 +65,9 @@ pub fn bilinear() -> Sampler {
 /// The euc peer's frame: the bench sphere wearing the chelsea photograph (spherical mapping,
 /// bilinear). Returns the scene and the texture it samples.
 pub fn textured_sphere_scene() -> (Scene, Arc<Texture>) {
-    let texture = Arc::new(load_texture("chelsea", Path::new(".")).expect("chelsea"));
+    let texture = ImageCache::new(u64::MAX)
+        .texture("chelsea", Path::new("."))
+        .expect("chelsea");
     let mut scene = sphere_scene();
     scene.objects[0].material.texture = Some(Texturing::Image(ImageTexture {
         name: "chelsea".into(),

@@ -130,26 +130,29 @@ pub fn measure_scene(
     viewport: Viewport,
     runs: usize,
     references: &[Reference],
-) -> Vec<Measurement> {
+) -> Result<Vec<Measurement>, crate::memory_budget::OverBudget> {
     let camera: &Camera = &scene.camera;
     let mut ready: Vec<Ready> = variants
         .iter()
         .map(|variant| {
             let quality = &variant.quality;
-            let prepared = quality.prepare(scene.clone(), camera, viewport);
+            let output_bytes = u64::from(viewport.width)
+                * u64::from(viewport.height)
+                * Framebuffer::BYTES_PER_PIXEL;
+            let prepared = quality.prepare(scene.clone(), camera, viewport, output_bytes)?;
             let shader = quality.shader(&prepared, camera);
             let target = quality.target(camera, viewport);
-            Ready {
+            Ok(Ready {
                 variant,
                 prepared,
                 shader,
                 target,
                 samples: quality.samples.max(1),
-            }
+            })
         })
-        .collect();
+        .collect::<Result<_, _>>()?;
     let timings = time_in_rounds(&ready, runs);
-    ready
+    Ok(ready
         .iter_mut()
         .zip(timings)
         .map(|(r, timing)| {
@@ -171,7 +174,7 @@ pub fn measure_scene(
                 error: frames.error_against(&reference.frames),
             }
         })
-        .collect()
+        .collect())
 }
 
 /// Per variant, the timing of up to `runs` frames taken one per round after an untimed

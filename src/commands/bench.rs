@@ -82,7 +82,7 @@ pub fn run(args: BenchArgs) -> Result<(), Error> {
             viewport,
             runs,
             &references,
-        ));
+        )?);
     }
     let summaries = summarize(&variants, &measurements);
     if let Some(path) = &args.chart {

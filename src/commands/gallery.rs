@@ -5,8 +5,8 @@ use super::interrupt::Interrupt;
 use super::progress::RenderProgress;
 use bumpwork::Error;
 use bumpwork::export::{
-    SheetLayout, SheetPicture, StillFormat, StillRequest, check_destination, draw_sheet,
-    read_png_rgb8, write_sheet, write_still,
+    ContactSheet, SheetLayout, SheetPicture, StillFormat, StillRequest, check_destination,
+    read_png_rgb8, write_still,
 };
 use bumpwork::quality::Quality;
 use bumpwork::shade::ViewMode;
@@ -52,35 +52,34 @@ fn make_directory(directory: &Path) -> Result<(), Error> {
 
 pub fn run(args: GalleryArgs) -> Result<(), Error> {
     let names = scene_names(&args.scenes)?;
+    let layout = SheetLayout {
+        thumbnail: args.thumbnail,
+        columns: args.columns,
+    };
+    let mut sheet = ContactSheet::new(names.len(), layout).map_err(Error::InvalidArgument)?;
     make_directory(&args.output)?;
     for name in &names {
         check_destination(&args.output.join(format!("{name}.png")))?;
     }
-    check_destination(&args.output.join(SHEET_NAME))?;
+    let sheet_path = args.output.join(SHEET_NAME);
+    check_destination(&sheet_path)?;
     let interrupt = Interrupt::watch();
     let mut progress = RenderProgress::new("gallery");
-    let mut pictures = Vec::new();
     for (i, name) in names.iter().enumerate() {
         let path = args.output.join(format!("{name}.png"));
         let mut report = |f: f64| progress.update((i as f64 + f) / names.len() as f64);
         render_scene(name, &args, &path, &mut report, &interrupt)?;
         let (width, height, rgb) = read_png_rgb8(&path)?;
-        pictures.push(SheetPicture {
+        let picture = SheetPicture {
             label: name.clone(),
             width,
             height,
             rgb,
-        });
+        };
+        sheet.place(i, &picture);
     }
     progress.finish();
-    let layout = SheetLayout {
-        thumbnail: args.thumbnail,
-        columns: args.columns,
-    };
-    let sheet_path = args.output.join(SHEET_NAME);
-    let sheet = draw_sheet(&pictures, layout)
-        .ok_or_else(|| Error::write(&sheet_path, "the contact sheet is too large"))?;
-    write_sheet(&sheet, &sheet_path)?;
+    sheet.write(&sheet_path)?;
     say!(
         "{} stills and {} in {}",
         names.len(),
@@ -128,7 +127,7 @@ fn render_scene(
         time: 0.0,
         mode: ViewMode::Shaded,
     };
-    let prepared = settings.prepare(scene, &camera);
+    let prepared = settings.prepare(scene, &camera)?;
     let recipe = Recipe::capture(name, &prepared.scene, &camera, &settings);
     let scene_text = bumpwork::scene::source_text(name)?;
     let request = StillRequest {

@@ -95,7 +95,7 @@ pub fn run(args: RenderArgs) -> Result<(), Error> {
     };
     let settings = override_settings(start.settings, &args);
     let camera = start.scene.camera.clone();
-    let prepared = settings.prepare(start.scene, &camera);
+    let prepared = settings.prepare(start.scene, &camera)?;
     let interrupt = Interrupt::watch();
     for (time, path) in frames(&args, settings.time, &output)? {
         let settings = StillSettings { time, ..settings };

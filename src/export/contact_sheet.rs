@@ -4,6 +4,8 @@
 use super::label_font::{GLYPH_HEIGHT, text_pixels, text_width};
 use super::{PngStill, metadata::SOFTWARE};
 use crate::Error;
+use crate::memory_budget::size_words;
+use crate::still::MAX_SIDE;
 use crate::still::RowSink;
 use std::path::Path;
 use tiny_skia::{Color, FilterQuality, IntSize, Pixmap, PixmapPaint, Transform};
@@ -27,31 +29,89 @@ const GAP: u32 = 8;
 const LABEL_SCALE: u32 = 2;
 const LABEL_HEIGHT: u32 = GLYPH_HEIGHT * LABEL_SCALE + 2 * 4;
 
-/// Draws the sheet in memory: `columns` thumbnails across, labels under each.
-pub fn draw_sheet(pictures: &[SheetPicture], layout: SheetLayout) -> Option<Pixmap> {
-    let (tw, th) = layout.thumbnail;
-    let columns = layout.columns.clamp(1, pictures.len().max(1) as u32);
-    let rows = (pictures.len() as u32).div_ceil(columns).max(1);
-    let cell = (tw + GAP, th + LABEL_HEIGHT + GAP);
-    let mut sheet = Pixmap::new(columns * cell.0 + GAP, rows * cell.1 + GAP)?;
-    sheet.fill(Color::from_rgba8(24, 24, 24, 255));
-    for (i, picture) in pictures.iter().enumerate() {
-        let (col, row) = (i as u32 % columns, i as u32 / columns);
-        let (x, y) = (GAP + col * cell.0, GAP + row * cell.1);
-        draw_thumbnail(&mut sheet, picture, (x, y), (tw, th))?;
-        draw_label(&mut sheet, &picture.label, (x, y + th + 4), tw);
+/// The sheet being drawn: each picture is placed as soon as it is rendered, so the gallery holds
+/// the sheet and one still, never every still at once.
+pub struct ContactSheet {
+    pixmap: Pixmap,
+    layout: SheetLayout,
+}
+
+impl ContactSheet {
+    /// An empty sheet for `count` pictures, or why it cannot be made: a side over `MAX_SIDE`,
+    /// or more memory than the budget, checked before anything is allocated.
+    pub fn new(count: usize, layout: SheetLayout) -> Result<ContactSheet, String> {
+        let (tw, th) = layout.thumbnail;
+        let columns = u64::from(layout.columns.clamp(1, count.max(1) as u32));
+        let rows = (count as u64).div_ceil(columns).max(1);
+        let width = columns * u64::from(tw + GAP) + u64::from(GAP);
+        let height = rows * u64::from(th + LABEL_HEIGHT + GAP) + u64::from(GAP);
+        let side = u64::from(MAX_SIDE);
+        if width > side || height > side {
+            return Err(format!(
+                "the contact sheet would be {width}×{height}, over the {MAX_SIDE}×{MAX_SIDE} \
+                 limit; use a smaller --thumbnail or fewer --columns"
+            ));
+        }
+        // RGBA while drawing, RGB rows while writing.
+        let bytes = width * height * 7;
+        let budget = crate::memory_budget::budget_bytes();
+        if bytes > budget {
+            return Err(format!(
+                "the contact sheet would take {}, over the {} memory budget; use a smaller \
+                 --thumbnail, or raise {}",
+                size_words(bytes),
+                size_words(budget),
+                crate::memory_budget::MEMORY_BUDGET_VAR
+            ));
+        }
+        let mut pixmap =
+            Pixmap::new(width as u32, height as u32).ok_or("the contact sheet cannot be made")?;
+        pixmap.fill(Color::from_rgba8(24, 24, 24, 255));
+        let layout = SheetLayout {
+            columns: columns as u32,
+            ..layout
+        };
+        Ok(ContactSheet { pixmap, layout })
     }
-    Some(sheet)
+
+    /// Draws picture `index` (row by row, `columns` across) with its label under it.
+    pub fn place(&mut self, index: usize, picture: &SheetPicture) {
+        let (tw, th) = self.layout.thumbnail;
+        let columns = self.layout.columns;
+        let cell = (tw + GAP, th + LABEL_HEIGHT + GAP);
+        let (col, row) = (index as u32 % columns, index as u32 / columns);
+        let (x, y) = (GAP + col * cell.0, GAP + row * cell.1);
+        draw_thumbnail(&mut self.pixmap, picture, (x, y), (tw, th));
+        draw_label(&mut self.pixmap, &picture.label, (x, y + th + 4), tw);
+    }
+
+    /// Writes the sheet as an RGB PNG, whole or not at all.
+    pub fn write(&self, path: &Path) -> Result<(), Error> {
+        let sheet = &self.pixmap;
+        let rgb: Vec<u8> = sheet
+            .data()
+            .chunks_exact(4)
+            .flat_map(|p| [p[0], p[1], p[2]])
+            .collect();
+        let mut png = PngStill::create(
+            path,
+            (sheet.width(), sheet.height()),
+            &[(SOFTWARE, crate::PROGRAM.to_string())],
+        )?;
+        png.write_rows(&rgb).map_err(|e| Error::write(path, e))?;
+        png.finish()
+    }
+
+    pub fn size(&self) -> (u32, u32) {
+        (self.pixmap.width(), self.pixmap.height())
+    }
 }
 
 /// Scales `picture` to fit `size` (keeping its aspect) and centres it in the box at `at`.
-fn draw_thumbnail(
-    sheet: &mut Pixmap,
-    picture: &SheetPicture,
-    at: (u32, u32),
-    size: (u32, u32),
-) -> Option<()> {
-    let source = rgba_pixmap(picture)?;
+fn draw_thumbnail(sheet: &mut Pixmap, picture: &SheetPicture, at: (u32, u32), size: (u32, u32)) {
+    let Some(source) = rgba_pixmap(picture) else {
+        return;
+    };
     let scale = (size.0 as f32 / picture.width as f32).min(size.1 as f32 / picture.height as f32);
     let drawn = (picture.width as f32 * scale, picture.height as f32 * scale);
     let left = at.0 as f32 + (size.0 as f32 - drawn.0) / 2.0;
@@ -62,7 +122,6 @@ fn draw_thumbnail(
     };
     let transform = Transform::from_row(scale, 0.0, 0.0, scale, left, top);
     sheet.draw_pixmap(0, 0, source.as_ref(), &paint, transform, None);
-    Some(())
 }
 
 fn rgba_pixmap(picture: &SheetPicture) -> Option<Pixmap> {
@@ -96,20 +155,4 @@ fn draw_label(sheet: &mut Pixmap, label: &str, at: (u32, u32), width: u32) {
             data[i..i + 4].copy_from_slice(&[230, 230, 230, 255]);
         }
     }
-}
-
-/// Writes the sheet as an RGB PNG, atomically.
-pub fn write_sheet(sheet: &Pixmap, path: &Path) -> Result<(), Error> {
-    let rgb: Vec<u8> = sheet
-        .data()
-        .chunks_exact(4)
-        .flat_map(|p| [p[0], p[1], p[2]])
-        .collect();
-    let mut png = PngStill::create(
-        path,
-        (sheet.width(), sheet.height()),
-        &[(SOFTWARE, crate::PROGRAM.to_string())],
-    )?;
-    png.write_rows(&rgb).map_err(|e| Error::write(path, e))?;
-    png.finish()
 }

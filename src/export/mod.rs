@@ -11,9 +11,9 @@ mod ppm_file;
 mod still_file;
 mod writeback;
 
-pub use contact_sheet::{SheetLayout, SheetPicture, draw_sheet, write_sheet};
+pub use contact_sheet::{ContactSheet, SheetLayout, SheetPicture};
 pub use output_file::{OutputFile, STANDARD_OUTPUT, check_destination};
 pub use png_file::{PngStill, read_png_rgb8, write_png, write_png_with_text};
 pub use pov_scene::{BAKE_SIDE, write_pov};
 pub use ppm_file::PpmStill;
-pub use still_file::{BAND_BUDGET_BYTES, StillFormat, StillRequest, write_still};
+pub use still_file::{StillFormat, StillRequest, write_still};

@@ -5,11 +5,10 @@ use super::metadata::{RECIPE, SCENE, SOFTWARE};
 use super::{PngStill, PpmStill};
 use crate::Error;
 use crate::raster::{Camera, FrameStats, PreparedScene, Viewport};
-use crate::still::{BandJob, Recipe, RowSink, StillSettings, StillStop, stream_still};
+use crate::still::{
+    BAND_BUDGET_BYTES, BandJob, Recipe, RowSink, StillSettings, StillStop, stream_still,
+};
 use std::path::Path;
-
-/// Band memory for a streamed still: a 7680-wide band of 576 rows at 28 bytes a pixel.
-pub const BAND_BUDGET_BYTES: u64 = 128 << 20;
 
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
 pub enum StillFormat {

@@ -24,7 +24,7 @@ impl WritebackFile {
             file,
             written: 0,
             started: 0,
-            page: crate::memory::page_size().map(|page| page as u64),
+            page: crate::huge_pages::page_size().map(|page| page as u64),
         }
     }
 }

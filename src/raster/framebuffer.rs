@@ -1,4 +1,4 @@
-use crate::memory::resize_for_overwrite;
+use crate::huge_pages::resize_for_overwrite;
 use glam::Vec3;
 use std::sync::OnceLock;
 
@@ -12,6 +12,12 @@ pub struct Framebuffer {
     /// Distance along the view direction of the visible surface, +∞ for background.
     depth: Vec<f32>,
     known_background: KnownBackground,
+}
+
+impl Framebuffer {
+    /// The memory one pixel takes: its colour and its depth.
+    pub const BYTES_PER_PIXEL: u64 =
+        (std::mem::size_of::<Vec3>() + std::mem::size_of::<f32>()) as u64;
 }
 
 /// How a render's colours meet what the framebuffer holds; depth, where written, is replaced.

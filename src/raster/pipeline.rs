@@ -8,7 +8,7 @@ use super::strips::{Pass, STRIP_ROWS, SetUp, StripBuffers, StripJob};
 use super::tile::TileBuffers;
 use super::top_first::map_top_first;
 use super::window::ImageWindow;
-use crate::memory::zeroed_huge;
+use crate::huge_pages::zeroed_huge;
 use crate::scene::{Material, Scene};
 use crate::shade::LitShader;
 use crate::surface::{Mesh, Surface, Tessellation};
@@ -320,7 +320,7 @@ pub fn render_refining_passes_into(
     let mut refined: Vec<&mut [bool]> = match refinement {
         Some(refinement) => {
             let pixels = viewport.width as usize * viewport.height as usize;
-            crate::memory::resize_for_overwrite(refinement.refined, pixels);
+            crate::huge_pages::resize_for_overwrite(refinement.refined, pixels);
             let rows = (STRIP_ROWS * viewport.width).max(1) as usize;
             refinement.refined.chunks_mut(rows).collect()
         }

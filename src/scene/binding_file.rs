@@ -8,14 +8,13 @@ use super::material::{
 use crate::pattern::{OutputKind, Pattern};
 use crate::surface::Surface;
 use crate::texture::{
-    Cylindrical, Filter, Mapping, Sampler, Scroll, Spherical, SurfaceUv, TriangleMap, Wrap,
-    load_height_map, load_texture,
+    Cylindrical, Filter, ImageCache, Mapping, Sampler, Scroll, Spherical, SurfaceUv, TriangleMap,
+    Wrap,
 };
 use glam::{Vec2, Vec3};
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use std::path::Path;
-use std::sync::Arc;
 
 /// The `bump = {…}` or `texture = {…}` table of an object: exactly one of `pattern` and `image`,
 /// and where it sits. One type for both (rather than a shared part flattened into two) so serde
@@ -96,7 +95,12 @@ pub enum FilterFile {
 }
 
 impl BindingFile {
-    pub fn load_bump(&self, surface: &Surface, base: &Path) -> Result<Bump, String> {
+    pub fn load_bump(
+        &self,
+        surface: &Surface,
+        base: &Path,
+        images: &mut ImageCache,
+    ) -> Result<Bump, String> {
         if self.filter.is_some() {
             return Err("`filter` applies to image textures, not bumps".into());
         }
@@ -111,12 +115,12 @@ impl BindingFile {
                 BumpSource::Pattern(binding)
             }
             (None, Some(name)) => {
-                let map = load_height_map(name, base).map_err(|e| e.to_string())?;
+                let map = images.height_map(name, base).map_err(|e| e.to_string())?;
                 let mapping = self.image_mapping(surface)?;
                 let (wrap_s, wrap_t) = self.wrap_for(&mapping);
                 BumpSource::Image(ImageHeight {
                     name: name.clone(),
-                    map: Arc::new(map),
+                    map,
                     mapping,
                     wrap_s,
                     wrap_t,
@@ -131,7 +135,12 @@ impl BindingFile {
         })
     }
 
-    pub fn load_texture(&self, surface: &Surface, base: &Path) -> Result<Texturing, String> {
+    pub fn load_texture(
+        &self,
+        surface: &Surface,
+        base: &Path,
+        images: &mut ImageCache,
+    ) -> Result<Texturing, String> {
         if self.strength.is_some() || self.invert.is_some() {
             return Err("`strength` and `invert` apply to bumps, not textures".into());
         }
@@ -146,7 +155,7 @@ impl BindingFile {
                 Ok(Texturing::Pattern(binding))
             }
             (None, Some(name)) => {
-                let texture = load_texture(name, base).map_err(|e| e.to_string())?;
+                let texture = images.texture(name, base).map_err(|e| e.to_string())?;
                 let mapping = self.image_mapping(surface)?;
                 let filter = match self.filter.unwrap_or(FilterFile::Trilinear) {
                     FilterFile::Nearest => Filter::Nearest,
@@ -161,7 +170,7 @@ impl BindingFile {
                 };
                 Ok(Texturing::Image(ImageTexture {
                     name: name.clone(),
-                    texture: Arc::new(texture),
+                    texture,
                     mapping,
                     sampler,
                 }))

@@ -7,6 +7,7 @@ use super::{Light, Material, Object, Scene};
 use crate::Error;
 use crate::raster::Camera;
 use crate::surface::{AxisBasis, Cone, Paraboloid, Plane, Sphere, Surface, Triangle, Wave};
+use crate::texture::ImageCache;
 use glam::{DVec3, Vec2, Vec3};
 use serde::{Deserialize, Serialize};
 use std::path::Path;
@@ -262,12 +263,13 @@ impl SceneFile {
     /// The checked scene, or a message naming the object that cannot be built. Pattern and image
     /// paths are relative to `base` (the scene file's directory).
     pub fn to_scene(&self, fallback_name: &str, base: &Path) -> Result<Scene, String> {
+        let mut images = ImageCache::new(crate::memory_budget::budget_bytes());
         let objects = self
             .objects
             .iter()
             .enumerate()
             .map(|(i, o)| {
-                o.to_object(base)
+                o.to_object(base, &mut images)
                     .map_err(|e| format!("object {} ({}): {e}", i + 1, o.surface.kind()))
             })
             .collect::<Result<Vec<_>, _>>()?;
@@ -350,17 +352,17 @@ impl LightFile {
 }
 
 impl ObjectFile {
-    fn to_object(&self, base: &Path) -> Result<Object, String> {
+    fn to_object(&self, base: &Path, images: &mut ImageCache) -> Result<Object, String> {
         let surface = self.surface.to_surface()?;
         let texture = self
             .texture
             .as_ref()
-            .map(|t| t.load_texture(&surface, base))
+            .map(|t| t.load_texture(&surface, base, images))
             .transpose()?;
         let bump = self
             .bump
             .as_ref()
-            .map(|b| b.load_bump(&surface, base))
+            .map(|b| b.load_bump(&surface, base, images))
             .transpose()?;
         Ok(Object {
             surface,

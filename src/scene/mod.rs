@@ -39,6 +39,27 @@ pub struct Object {
     pub material: Material,
 }
 
+impl Scene {
+    /// The memory its decoded images take, each shared image counted once.
+    pub fn image_bytes(&self) -> u64 {
+        let mut seen = std::collections::HashSet::new();
+        let mut bytes = 0;
+        for material in self.objects.iter().map(|o| &o.material) {
+            if let Some(Texturing::Image(image)) = &material.texture
+                && seen.insert(std::sync::Arc::as_ptr(&image.texture).cast::<()>())
+            {
+                bytes += image.texture.bytes();
+            }
+            if let Some(BumpSource::Image(image)) = material.bump.as_ref().map(|b| &b.source)
+                && seen.insert(std::sync::Arc::as_ptr(&image.map).cast::<()>())
+            {
+                bytes += image.map.bytes();
+            }
+        }
+        bytes
+    }
+}
+
 /// Lights have no distance fall-off, like the seed's ray tracer.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Light {

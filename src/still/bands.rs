@@ -11,6 +11,9 @@ use crate::raster::{
 use glam::{Vec2, Vec3};
 use std::ops::Range;
 
+/// Band memory for a streamed still: a 7680-wide band of 576 rows at 28 bytes a pixel.
+pub const BAND_BUDGET_BYTES: u64 = 128 << 20;
+
 /// Bytes a band may hold per pixel: the framebuffer its passes add into (colour and depth), the
 /// adaptive mask and the refined pixels. Not counted: the band's 8-bit rows waiting for the
 /// still's writer, at most 3 more a pixel and in practice under half of that (an 8K adaptive
@@ -38,6 +41,13 @@ pub fn band_rows(width: u32, height: u32, budget_bytes: u64) -> u32 {
     let rows = budget_bytes / (width.max(1) as u64 * BYTES_PER_BAND_PIXEL);
     let tiles = (rows / TILE_SIZE as u64).max(1) as u32;
     (tiles * TILE_SIZE).min(height.max(1))
+}
+
+/// What a `width`×`height` still streamed within `BAND_BUDGET_BYTES` holds at most: its band,
+/// and that band's 8-bit rows waiting for the writer.
+pub fn band_bytes(width: u32, height: u32) -> u64 {
+    let rows = band_rows(width, height, BAND_BUDGET_BYTES);
+    u64::from(rows) * u64::from(width) * (BYTES_PER_BAND_PIXEL + 3)
 }
 
 /// What every band of one still shares.

@@ -22,7 +22,7 @@ use rayon::prelude::*;
 /// marked in parallel, each from the keys of itself and its two neighbours.
 pub fn contrast_mask(pass: &Framebuffer, threshold: f32, mask: &mut Vec<bool>) {
     let (w, h) = (pass.width as usize, pass.height as usize);
-    crate::memory::resize_for_overwrite(mask, w * h);
+    crate::huge_pages::resize_for_overwrite(mask, w * h);
     if w == 0 {
         return;
     }

@@ -8,7 +8,9 @@ mod recipe;
 mod samples;
 mod stream;
 
-pub use bands::{BandBuffers, BandJob, band_rows, render_supersampled};
+pub use bands::{
+    BAND_BUDGET_BYTES, BandBuffers, BandJob, band_bytes, band_rows, render_supersampled,
+};
 pub use recipe::{
     FileHash, MAX_DENSITY, MAX_SIDE, MAX_TIME_SECONDS, ObjectState, Recipe, RecipeCamera,
     StillSettings,

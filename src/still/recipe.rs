@@ -11,6 +11,7 @@ use crate::scene::{
     PatternBinding, Point, Positive, Scene, Texturing,
 };
 use crate::shade::{GradientMethod, ViewMode};
+use crate::texture::ImageCache;
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
 
@@ -93,10 +94,15 @@ pub struct StillSettings {
 impl StillSettings {
     /// The scene tessellated (and texture filters set) as the quality asks, for this camera at
     /// this size.
-    pub fn prepare(&self, scene: Scene, camera: &Camera) -> crate::raster::PreparedScene {
+    pub fn prepare(
+        &self,
+        scene: Scene,
+        camera: &Camera,
+    ) -> Result<crate::raster::PreparedScene, crate::memory_budget::OverBudget> {
         let (width, height) = self.size;
         let full = crate::raster::Viewport { width, height };
-        self.quality.prepare(scene, camera, full)
+        let output_bytes = super::bands::band_bytes(width, height);
+        self.quality.prepare(scene, camera, full, output_bytes)
     }
 
     /// The supersampling these settings ask for.
@@ -378,16 +384,18 @@ fn apply_state(
 ) -> Result<(), String> {
     let surface = &object.surface;
     let material = &mut object.material;
+    // Only patterns are bound again here; images keep the scene's decoded copies.
+    let mut images = ImageCache::new(0);
     if let Some(bump) = &state.bump {
         if bump.pattern.is_some() {
-            material.bump = Some(bump.load_bump(surface, base)?);
+            material.bump = Some(bump.load_bump(surface, base, &mut images)?);
         } else if let Some(live) = &mut material.bump {
             live.strength = bump.strength.map_or(live.strength, |s| s.0);
             live.invert = bump.invert.unwrap_or(live.invert);
         }
     }
     if let Some(texture) = state.texture.as_ref().filter(|t| t.pattern.is_some()) {
-        material.texture = Some(texture.load_texture(surface, base)?);
+        material.texture = Some(texture.load_texture(surface, base, &mut images)?);
     }
     Ok(())
 }
@@ -429,7 +437,7 @@ fn file_names(material: &Material) -> Vec<String> {
 
 /// The FNV-1a hash of a regular file, streamed. A recipe names files from a PNG anyone may have
 /// made: a device (`/dev/zero`), a pipe or a huge file is refused, not read forever.
-/// Files over the image memory limit (`texture::Limits`, which `BUMPWORK_MAX_IMAGE_MIB` sets) are
+/// Files over the image memory limit (`texture::Limits`, which `BUMPWORK_MEMORY_MIB` sets) are
 /// refused too: no pattern or image the renderer reads is larger.
 fn hash_file(path: &Path) -> std::io::Result<u64> {
     use std::io::{BufRead, BufReader, Error, ErrorKind, Read};

@@ -128,6 +128,17 @@ impl Surface {
         }
     }
 
+    /// The triangles `tessellate` makes, counted without making them.
+    pub fn triangle_count(&self, tessellation: Tessellation) -> u64 {
+        if let Surface::Triangle(_) = self {
+            return 1;
+        }
+        let shape = self.grid_shape(tessellation);
+        let fans = u64::from(shape.collapsed_v_min) + u64::from(shape.collapsed_v_max);
+        let cells_u = u64::from(shape.cells_u);
+        2 * cells_u * u64::from(shape.cells_v) - fans * cells_u
+    }
+
     /// Grid resolution (cells along u, cells along v) and which v edges collapse to a point.
     fn grid_shape(&self, tessellation: Tessellation) -> tessellate::GridShape {
         let d = tessellation.density.max(1);
@@ -233,6 +244,52 @@ fn flat_frames(count: usize, uv: impl Fn(usize) -> Vec2, at_origin: Frame, out: 
 
 #[cfg(test)]
 pub(crate) mod tests {
+    #[test]
+    fn triangle_counts_match_the_tessellated_meshes() {
+        use super::{
+            AxisBasis, Cone, Paraboloid, Plane, Sphere, Surface, Tessellation, Triangle, Wave,
+        };
+        use glam::{DVec3, Vec2, Vec3};
+        let basis = AxisBasis::from_axis(Vec3::Y);
+        let surfaces = [
+            Surface::Plane(Plane::new(DVec3::ZERO, Vec3::Y, Vec3::X, Vec2::ONE)),
+            Surface::Sphere(Sphere {
+                center: DVec3::ZERO,
+                radius: 1.0,
+            }),
+            Surface::Paraboloid(Paraboloid {
+                apex: DVec3::ZERO,
+                basis,
+                curvature: 1.0,
+                radius: 1.0,
+            }),
+            Surface::Cone(Cone {
+                apex: DVec3::ZERO,
+                basis,
+                half_angle: 0.5,
+                height: 1.0,
+            }),
+            Surface::Wave(Wave {
+                origin: DVec3::ZERO,
+                size: Vec2::new(4.0, 2.0),
+                amplitude: 0.1,
+                wavelength: 1.0,
+            }),
+            Surface::Triangle(Triangle::new(DVec3::ZERO, DVec3::X, DVec3::Y)),
+        ];
+        for surface in &surfaces {
+            for density in [1, 2, 3, 17, 64] {
+                let tessellation = Tessellation { density };
+                let made = surface.tessellate(tessellation).indices.len() as u64;
+                assert_eq!(
+                    surface.triangle_count(tessellation),
+                    made,
+                    "{surface:?} at {density}"
+                );
+            }
+        }
+    }
+
     /// The flat surfaces' batch gives `frame`'s bits, appended after what `out` held.
     #[test]
     fn flat_batch_frames_are_single_frames() {

@@ -6,7 +6,7 @@ use glam::{Vec2, Vec4};
 
 use super::encoding::Encoding;
 use super::error::TextureError;
-use super::load::{ImageInfo, Limits, load_image};
+use super::load::{ImageInfo, Limits, LoadedImage, load_image};
 use super::mip::MipChain;
 use super::raster::Raster;
 use super::sampler::{Footprint, Sampler};
@@ -38,6 +38,14 @@ impl Texture {
         })
     }
 
+    /// A decoded image's texture, keeping the file's description.
+    pub fn from_image(image: LoadedImage) -> Self {
+        Self {
+            chain: MipChain::build(image.texels),
+            info: Some(image.info),
+        }
+    }
+
     /// A texture from texels already in linear light.
     pub fn from_raster(texels: Raster<Texel>) -> Self {
         Self {
@@ -53,6 +61,11 @@ impl Texture {
 
     pub fn width(&self) -> u32 {
         self.chain.base().width()
+    }
+
+    /// The memory the texels and their mip chain take.
+    pub fn bytes(&self) -> u64 {
+        self.chain.bytes()
     }
 
     pub fn height(&self) -> u32 {

@@ -86,6 +86,11 @@ impl HeightMap {
         self.chain.base().width()
     }
 
+    /// The memory the heights and their mip chain take.
+    pub fn bytes(&self) -> u64 {
+        self.chain.bytes()
+    }
+
     pub fn height(&self) -> u32 {
         self.chain.base().height()
     }

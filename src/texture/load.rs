@@ -26,44 +26,21 @@ pub struct Limits {
 }
 
 impl Default for Limits {
-    /// 16384 per side; `BUMPWORK_MAX_IMAGE_MIB` MiB (512 when unset) per image.
+    /// 16384 per side, and at most the whole memory budget (`BUMPWORK_MEMORY_MIB`).
     fn default() -> Self {
-        Self {
-            max_width: 16_384,
-            max_height: 16_384,
-            max_bytes: image_budget_mib().unwrap_or(DEFAULT_IMAGE_MIB) << 20,
-        }
+        Self::within(crate::memory_budget::budget_bytes())
     }
 }
 
-/// The environment variable that sets the memory one image may take, in MiB.
-pub const IMAGE_BUDGET_VAR: &str = "BUMPWORK_MAX_IMAGE_MIB";
-const DEFAULT_IMAGE_MIB: u64 = 512;
-const MAX_IMAGE_MIB: u64 = 65_536;
-
-/// The image budget the user set, if any and valid; an invalid one is reported by
-/// [`check_image_budget`] at start-up and otherwise leaves the default.
-fn image_budget_mib() -> Option<u64> {
-    check_image_budget().ok().flatten()
-}
-
-/// `Ok(None)` when `BUMPWORK_MAX_IMAGE_MIB` is unset, `Ok(Some(mib))` when it holds a whole
-/// number of MiB from 1 to 65536, and a message otherwise.
-pub fn check_image_budget() -> Result<Option<u64>, String> {
-    let Some(value) = std::env::var_os(IMAGE_BUDGET_VAR) else {
-        return Ok(None);
-    };
-    value
-        .to_str()
-        .and_then(|v| v.trim().parse::<u64>().ok())
-        .filter(|mib| (1..=MAX_IMAGE_MIB).contains(mib))
-        .map(Some)
-        .ok_or_else(|| {
-            format!(
-                "{IMAGE_BUDGET_VAR} must be a whole number of MiB from 1 to {MAX_IMAGE_MIB}, not '{}'",
-                crate::term::sanitize(&value.to_string_lossy())
-            )
-        })
+impl Limits {
+    /// 16384 per side and at most `max_bytes`.
+    pub fn within(max_bytes: u64) -> Self {
+        Self {
+            max_width: 16_384,
+            max_height: 16_384,
+            max_bytes,
+        }
+    }
 }
 
 /// What the file holds, as reported by `bumpwork check IMAGE`.
@@ -145,13 +122,14 @@ pub fn decode_image(
 
 /// Reads at most `max_bytes` (+1 to notice more): the size in the metadata is not
 /// trusted, since devices and pipes report 0 and would otherwise be read forever.
-fn read_file(path: &Path, limits: &Limits) -> Result<Vec<u8>, Reason> {
+pub(super) fn read_file(path: &Path, limits: &Limits) -> Result<Vec<u8>, Reason> {
     read_bounded(path, limits.max_bytes).map_err(|failure| match failure {
         failure if failure.is_missing() => Reason::Missing,
         ReadFailure::TooLarge { .. } => Reason::Oversized {
             detail: format!(
-                "the file is over the {} MiB limit",
-                limits.max_bytes.div_ceil(1 << 20)
+                "the file is larger than the {} of the memory budget left for it (raise {})",
+                crate::memory_budget::size_words(limits.max_bytes),
+                crate::memory_budget::MEMORY_BUDGET_VAR
             ),
         },
         other => Reason::Unreadable(other.to_string()),
@@ -235,9 +213,11 @@ fn check_size(width: u32, height: u32, decoded_bytes: u64, limits: &Limits) -> R
     if needed > limits.max_bytes {
         return Err(Reason::Oversized {
             detail: format!(
-                "{width}×{height} needs about {} MiB, over the {} MiB limit",
-                needed >> 20,
-                limits.max_bytes >> 20
+                "{width}×{height} needs about {}, over the {} of the memory budget left for it \
+                 (use a smaller image, or raise {})",
+                crate::memory_budget::size_words(needed),
+                crate::memory_budget::size_words(limits.max_bytes),
+                crate::memory_budget::MEMORY_BUDGET_VAR
             ),
         });
     }

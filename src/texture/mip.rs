@@ -42,6 +42,12 @@ impl<T: Blend> MipChain<T> {
     pub fn coarsest_level(&self) -> usize {
         self.levels.len() - 1
     }
+
+    /// The texels of every level, in bytes.
+    pub fn bytes(&self) -> u64 {
+        let texels: usize = self.levels.iter().map(|level| level.texels().len()).sum();
+        (texels * std::mem::size_of::<T>()) as u64
+    }
 }
 
 /// The next level, or `None` once the raster is 1×1.

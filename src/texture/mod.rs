@@ -5,8 +5,9 @@
 //! from the left edge, `t` down from the TOP row (as images are stored).
 //!
 //! The path of a textured fragment:
-//! 1. [`Texture::load`] / [`HeightMap::load`] (or [`check_image`] to validate only),
-//!    bounded by [`Limits`]; failures are a [`TextureError`] naming the file.
+//! 1. [`ImageCache`] for a scene's bindings (each file decoded once), [`Texture::load`] /
+//!    [`HeightMap::load`] for one file, or [`check_image`] to validate only, bounded by
+//!    [`Limits`]; failures are a [`TextureError`] naming the file.
 //! 2. A [`Mapping`] turns a [`SurfacePoint`] into [`Mapped`] `st` and ∂(s,t)/∂(u,v).
 //! 3. [`Mapped::footprint`] chains that with the pixel's ∂(u,v)/∂x, ∂(u,v)/∂y.
 //! 4. [`Texture::sample`] with a [`Sampler`] (filter + per-axis [`Wrap`]) gives a
@@ -18,6 +19,7 @@ mod colour;
 mod encoding;
 mod error;
 mod height;
+mod image_cache;
 mod load;
 mod mapping;
 mod mip;
@@ -27,15 +29,13 @@ mod sample_batch;
 mod sampler;
 mod wrap;
 
-pub use builtin::{BUILTIN_IMAGES, load_height_map, load_texture};
+pub use builtin::BUILTIN_IMAGES;
 pub use colour::{Texel, Texture};
 pub use encoding::{Encoding, linear_to_srgb, srgb_to_linear};
 pub use error::{PrintableName, Reason, TextureError};
 pub use height::{HeightMap, HeightSample};
-pub use load::{
-    IMAGE_BUDGET_VAR, ImageInfo, Limits, LoadedImage, check_image, check_image_budget,
-    decode_image, load_image,
-};
+pub use image_cache::ImageCache;
+pub use load::{ImageInfo, Limits, LoadedImage, check_image, decode_image, load_image};
 pub use mapping::{
     Cylindrical, Mapped, Mapping, Planar, PlanarLayout, Scroll, Spherical, SurfacePoint, SurfaceUv,
     TextureMapping, TriangleMap,

@@ -12,7 +12,8 @@ use super::quality::QualityPreset;
 use super::source::open_source;
 use super::view_mode::ViewMode;
 use crate::Error;
-use crate::raster::{Camera, FrameStats, PreparedScene, Viewport};
+use crate::memory_budget::OverBudget;
+use crate::raster::{Camera, FrameStats, Framebuffer, PreparedScene, Viewport};
 use crate::scene::{Material, Scene};
 use crate::term::{ColorMode, GlyphSet};
 use crate::watch::{ReloadOutcome, Reloader};
@@ -100,7 +101,7 @@ impl App {
             scene_index: 0,
             object: first_bumped_object(&scene),
             param: 0,
-            prepared: prepare(scene, quality),
+            prepared: prepare(scene, quality)?,
             orbit,
             view_mode: ViewMode::default(),
             quality,
@@ -169,10 +170,7 @@ impl App {
             }
             Action::NextViewMode => self.view_mode = self.view_mode.cycled(1),
             Action::PreviousViewMode => self.view_mode = self.view_mode.cycled(-1),
-            Action::NextQuality => {
-                self.quality = self.quality.next();
-                self.reprepare();
-            }
+            Action::NextQuality => self.reprepare(self.quality.next()),
             Action::NextGlyphs => self.glyphs = next_glyphs(self.glyphs),
             Action::NextColors => self.colors = next_colors(self.colors),
             Action::TogglePause => self.clock.toggle(),
@@ -252,14 +250,16 @@ impl App {
     pub fn switch_scene(&mut self, step: i32) {
         let count = self.scenes.len() as i32;
         let index = (self.scene_index as i32 + step).rem_euclid(count) as usize;
-        match open_source(&self.scenes[index], self.watch) {
-            Ok((scene, reloader)) => {
+        let opened = open_source(&self.scenes[index], self.watch)
+            .and_then(|(scene, reloader)| Ok((prepare(scene, self.quality)?, reloader)));
+        match opened {
+            Ok((prepared, reloader)) => {
                 self.reloader = reloader;
                 self.scene_index = index;
-                self.object = first_bumped_object(&scene);
+                self.object = first_bumped_object(&prepared.scene);
                 self.param = 0;
-                self.orbit = Orbit::from_camera(&scene.camera);
-                self.prepared = prepare(scene, self.quality);
+                self.orbit = Orbit::from_camera(&prepared.scene.camera);
+                self.prepared = prepared;
                 self.message = Message::None;
                 self.dirty = Dirty::ALL;
             }
@@ -280,11 +280,16 @@ impl App {
             match outcome {
                 ReloadOutcome::Reloaded(reload) => {
                     let scene = reload.keep_live_params(&self.prepared.scene);
-                    self.prepared = prepare(scene, self.quality);
-                    let last = self.prepared.objects.len().saturating_sub(1);
-                    self.object = self.object.min(last);
-                    self.message = Message::Info("reloaded".into());
-                    self.dirty.picture = true;
+                    match prepare(scene, self.quality) {
+                        Ok(prepared) => {
+                            self.prepared = prepared;
+                            let last = self.prepared.objects.len().saturating_sub(1);
+                            self.object = self.object.min(last);
+                            self.message = Message::Info("reloaded".into());
+                            self.dirty.picture = true;
+                        }
+                        Err(e) => self.message = Message::Error(e.to_string()),
+                    }
                 }
                 ReloadOutcome::Failed(error) => {
                     self.message = Message::Error(error.first_line().to_string())
@@ -294,9 +299,15 @@ impl App {
         }
     }
 
-    fn reprepare(&mut self) {
-        let scene = self.prepared.scene.clone();
-        self.prepared = prepare(scene, self.quality);
+    /// Tessellates again for `quality`; one that does not fit keeps the current one.
+    fn reprepare(&mut self, quality: QualityPreset) {
+        match prepare(self.prepared.scene.clone(), quality) {
+            Ok(prepared) => {
+                self.prepared = prepared;
+                self.quality = quality;
+            }
+            Err(e) => self.message = Message::Error(e.to_string()),
+        }
     }
 
     fn export(&mut self) {
@@ -358,11 +369,18 @@ const PLANNED_VIEWPORT: Viewport = Viewport {
     height: 100,
 };
 
-/// Tessellates for the preset, planning adaptive density for the scene's own camera.
-fn prepare(scene: Scene, quality: QualityPreset) -> PreparedScene {
+/// Tessellates for the preset, planning adaptive density for the scene's own camera, within the
+/// memory budget (a terminal's picture is small beside it; the plan counts a large one).
+fn prepare(scene: Scene, quality: QualityPreset) -> Result<PreparedScene, OverBudget> {
     let camera = scene.camera.clone();
-    quality.quality().prepare(scene, &camera, PLANNED_VIEWPORT)
+    let output_bytes = PLANNED_OUTPUT_PIXELS * Framebuffer::BYTES_PER_PIXEL;
+    quality
+        .quality()
+        .prepare(scene, &camera, PLANNED_VIEWPORT, output_bytes)
 }
+
+/// Pixels of the largest picture a terminal is expected to show: 500×150 cells in sextants.
+const PLANNED_OUTPUT_PIXELS: u64 = 1000 * 450;
 
 /// The first object with a bump map, else the first: what the material keys start on.
 fn first_bumped_object(scene: &Scene) -> usize {

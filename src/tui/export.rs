@@ -107,7 +107,7 @@ fn carries_recipe(mode: ViewMode) -> bool {
 }
 
 fn export(order: ExportOrder, cancel: &AtomicBool) -> Result<(), Error> {
-    let prepared = order.settings.prepare(order.scene, &order.camera);
+    let prepared = order.settings.prepare(order.scene, &order.camera)?;
     if !carries_recipe(order.mode) {
         let view = View {
             prepared: &prepared,

@@ -49,8 +49,20 @@ pub fn decode_png_bytes(bytes: &[u8]) -> (u32, u32, Vec<u8>) {
 
 /// Runs the binary with `args` under a cap on its address space (`ulimit -v`, in MiB), so reading
 /// a huge file into memory would fail the run, and kills it if it is still running after `secs`
-/// seconds (a generous bound: hanging is the failure, not slowness).
+/// seconds (a generous bound: hanging is the failure, not slowness). Its memory budget is half
+/// the cap, the rest left for code, thread stacks and allocator arenas.
 pub fn bumpwork_bounded(args: &[&std::ffi::OsStr], memory_mib: u64, secs: u64) -> Output {
+    let budget = (memory_mib / 2).to_string();
+    bumpwork_bounded_with(args, &[("BUMPWORK_MEMORY_MIB", &budget)], memory_mib, secs)
+}
+
+/// As `bumpwork_bounded`, with the environment variables `env` set.
+pub fn bumpwork_bounded_with(
+    args: &[&std::ffi::OsStr],
+    env: &[(&str, &str)],
+    memory_mib: u64,
+    secs: u64,
+) -> Output {
     let mut child = Command::new("sh")
         .arg("-c")
         .arg(format!(
@@ -59,6 +71,7 @@ pub fn bumpwork_bounded(args: &[&std::ffi::OsStr], memory_mib: u64, secs: u64) -
         ))
         .arg(env!("CARGO_BIN_EXE_bumpwork"))
         .args(args)
+        .envs(env.iter().copied())
         .stdout(std::process::Stdio::piped())
         .stderr(std::process::Stdio::piped())
         .spawn()

@@ -293,25 +293,25 @@ fn a_name_that_is_not_utf8_is_shown_lossily() {
     assert_clean_error(&output, "x\u{fffd}\\e.pat");
 }
 
-/// The one limit a user sets: the memory an image may take (`BUMPWORK_MAX_IMAGE_MIB`).
+/// The one limit a user sets: the memory a render may take (`BUMPWORK_MEMORY_MIB`).
 #[test]
-fn the_image_budget_is_the_users_to_set_and_checked() {
+fn the_memory_budget_is_the_users_to_set_and_checked() {
     let brick = Path::new(env!("CARGO_MANIFEST_DIR")).join("textures/brick.png");
     let with_budget = |value: &str| {
         std::process::Command::new(env!("CARGO_BIN_EXE_bumpwork"))
             .arg("check")
             .arg(&brick)
-            .env("BUMPWORK_MAX_IMAGE_MIB", value)
+            .env("BUMPWORK_MEMORY_MIB", value)
             .output()
             .unwrap()
     };
     assert!(with_budget("512").status.success());
     // The shipped brick (decoded, in linear texels, with its mip chain) needs more than 1 MiB.
-    assert_clean_error(&with_budget("1"), "over the 1 MiB limit");
+    assert_clean_error(&with_budget("1"), "over the 1 MiB of the memory budget");
     for bad in ["0", "lots", "-5", "\x1b[2J"] {
         assert_clean_error(
             &with_budget(bad),
-            "BUMPWORK_MAX_IMAGE_MIB must be a whole number",
+            "BUMPWORK_MEMORY_MIB must be a whole number",
         );
     }
 }

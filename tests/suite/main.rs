@@ -15,6 +15,7 @@ mod export_stills;
 mod fuzz_regressions;
 mod hostile_files;
 mod hostile_tui;
+mod memory_budget;
 mod never_stuck;
 mod nothing_lost;
 mod output_paths;

@@ -20,7 +20,9 @@ fn scene(name: &str) -> Scene {
 
 /// The scene rendered at this quality in a view mode.
 fn render(scene: &Scene, quality: &Quality, mode: ViewMode) -> Framebuffer {
-    let prepared = quality.prepare(scene.clone(), &scene.camera, VIEW);
+    let prepared = quality
+        .prepare(scene.clone(), &scene.camera, VIEW, 0)
+        .unwrap();
     let mut shader = quality.shader(&prepared, &scene.camera);
     shader.mode = mode;
     render_with(&prepared, &quality.target(&scene.camera, VIEW), &shader).0
@@ -28,7 +30,9 @@ fn render(scene: &Scene, quality: &Quality, mode: ViewMode) -> Framebuffer {
 
 /// The exact reference in a view mode, shaded with this quality's shading knobs.
 fn reference(scene: &Scene, quality: &Quality, mode: ViewMode) -> Framebuffer {
-    let prepared = quality.prepare(scene.clone(), &scene.camera, VIEW);
+    let prepared = quality
+        .prepare(scene.clone(), &scene.camera, VIEW, 0)
+        .unwrap();
     let mut shader = quality.shader(&prepared, &scene.camera);
     shader.mode = mode;
     render_reference(&prepared, &scene.camera, VIEW, &shader).0
@@ -208,7 +212,9 @@ fn the_filter_override_reaches_every_image_texture_and_changes_the_picture() {
         filter: Some(Filter::Nearest),
         ..Quality::interactive()
     };
-    let prepared = nearest.prepare(textured.clone(), &textured.camera, VIEW);
+    let prepared = nearest
+        .prepare(textured.clone(), &textured.camera, VIEW, 0)
+        .unwrap();
     let filters: Vec<Filter> = prepared
         .objects
         .iter()
@@ -262,7 +268,9 @@ fn passes_at(scene: &Scene, offset: glam::Vec2) -> (Framebuffer, Framebuffer) {
     use bumpwork::raster::{ImageWindow, RenderTarget};
     use bumpwork::reference::{ViewRays, render_rays_into};
     let quality = Quality::interactive();
-    let prepared = quality.prepare(scene.clone(), &scene.camera, VIEW);
+    let prepared = quality
+        .prepare(scene.clone(), &scene.camera, VIEW, 0)
+        .unwrap();
     let shader = quality.shader(&prepared, &scene.camera);
     let target = RenderTarget {
         window: ImageWindow {
