@@ -49,7 +49,7 @@ pub fn render(file: &str, source: &str, offset: usize, message: &str) -> String 
     format!(
         "{file}:{line}:{column}: {message}\n{pad} |\n{line} | {shown}\n{pad} | {space}^",
         file = sanitize(file),
-        message = sanitize(message),
+        message = sanitize(&shorten_quotes(message)),
         pad = " ".repeat(gutter),
         space = " ".repeat(caret),
     )
@@ -78,6 +78,37 @@ fn snippet(before: &str, after: &str) -> (String, usize) {
     (left + &escape_line(&right), caret)
 }
 
+/// `message` with every quoted part (between backticks or double quotes) longer than `CONTEXT`
+/// characters cut to that and marked with `…`: a message quotes what it found, and what it found
+/// may be a 900 000-digit number.
+pub fn shorten_quotes(message: &str) -> String {
+    let mut shown = String::with_capacity(message.len().min(4 * CONTEXT));
+    let mut quote: Option<(char, usize)> = None;
+    for c in message.chars() {
+        match quote {
+            Some((open, _)) if c == open => {
+                quote = None;
+                shown.push(c);
+            }
+            Some((open, length)) => {
+                if length < CONTEXT {
+                    shown.push(c);
+                } else if length == CONTEXT {
+                    shown.push('…');
+                }
+                quote = Some((open, length + 1));
+            }
+            None => {
+                if c == '`' || c == '"' {
+                    quote = Some((c, 0));
+                }
+                shown.push(c);
+            }
+        }
+    }
+    shown
+}
+
 /// A line of a file made safe to show: control characters (and bidi overrides, which reorder what
 /// a terminal shows) escaped, tabs as one space so a caret below stays aligned.
 pub fn escape_line(text: &str) -> String {
@@ -103,6 +134,20 @@ fn floor_char_boundary(s: &str, mut i: usize) -> usize {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn long_quotes_in_messages_are_cut() {
+        let digits = "1".repeat(900_000);
+        let message = format!("number `{digits}` is too large; found \"{digits}\"");
+        let shown = shorten_quotes(&message);
+        assert!(shown.len() < 200, "{} bytes", shown.len());
+        let cut = format!("`{}…`", "1".repeat(CONTEXT));
+        assert!(shown.starts_with(&format!("number {cut} is too large; found \"")));
+        assert_eq!(
+            shorten_quotes("expected `,`, found \"x\""),
+            "expected `,`, found \"x\""
+        );
+    }
 
     #[test]
     fn escapes_terminal_controls() {

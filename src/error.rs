@@ -28,6 +28,10 @@ pub enum Error {
     InvalidArgument(String),
     #[error("{0}")]
     OverBudget(#[from] crate::memory_budget::OverBudget),
+    /// Every message was printed as it was found (`check` of one file): only the exit status is
+    /// left to give.
+    #[error("the error was reported")]
+    Reported,
     /// A signal stopped the work; nothing partial was left behind. Exit status 128 + signal.
     #[error("interrupted by signal {0}; no file was written")]
     Interrupted(i32),

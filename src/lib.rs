@@ -20,6 +20,7 @@ pub mod surface;
 pub mod term;
 pub mod texture;
 pub mod tui;
+pub mod unfinished_files;
 pub mod watch;
 
 pub use error::Error;

@@ -45,12 +45,18 @@ fn main() -> ExitCode {
         }
         Err(e) => {
             // Plain text (no styling), escaped: an argument may hold terminal controls.
-            eprint!("{}", sanitize_lines(&e.render().to_string()));
+            let rendered = sanitize_lines(&e.render().to_string());
+            let (line, hints) = commands::argument_error::one_line(&rendered);
+            eprintln!("bumpwork: error: {line}");
+            if !hints.is_empty() {
+                eprintln!("{hints}");
+            }
             return ExitCode::FAILURE;
         }
     };
     match run(cli) {
         Ok(()) => ExitCode::SUCCESS,
+        Err(Error::Reported) => ExitCode::FAILURE,
         Err(Error::Interrupted(signal)) => {
             eprintln!("bumpwork: {}", Error::Interrupted(signal));
             ExitCode::from(128 + signal as u8)

@@ -171,7 +171,7 @@ pub fn png_metadata(data: &[u8]) {
 fn recipe_and_scene(recipe: &str, scene: &str) {
     match Recipe::parse(recipe, "still.png (bumpwork-recipe)") {
         Ok(recipe) => {
-            if let Err(error) = recipe.scene(scene) {
+            if let Err(error) = recipe.scene(scene, &recipe.source_directory()) {
                 assert_printable(&error.to_string());
             }
         }

@@ -23,13 +23,15 @@ pub fn run(args: CheckArgs) -> Result<(), Error> {
         match check(path) {
             Ok(summary) => say!("{}: ok: {summary}", sanitize(&path.display().to_string())),
             Err(message) => {
-                eprintln!("{}", bumpwork::diagnostic::sanitize_lines(&message));
+                let message = bumpwork::diagnostic::sanitize_lines(&message);
+                eprintln!("bumpwork: error: {message}");
                 bad += 1;
             }
         }
     }
     match bad {
         0 => Ok(()),
+        _ if args.files.len() == 1 => Err(Error::Reported),
         n => Err(Error::InvalidArgument(format!(
             "{n} of {} files failed the check",
             args.files.len()

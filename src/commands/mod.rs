@@ -9,6 +9,7 @@ macro_rules! say {
     };
 }
 
+pub mod argument_error;
 pub mod bench;
 pub mod check;
 pub mod gallery;

@@ -178,10 +178,15 @@ fn from_still(still: &Path, read_outside: bool) -> Result<Start, Error> {
     let origin = format!("{} ({RECIPE})", still.display());
     let recipe = Recipe::parse(text_of(&texts, RECIPE, still)?, &origin)?;
     let scene_text = text_of(&texts, SCENE, still)?.to_string();
-    if !read_outside {
-        confine_to_still_directory(&recipe.files_read(&scene_text)?, still)?;
-    }
-    for change in recipe.changed_files() {
+    // Files are looked for beside the still, unless the user trusts it to name its own.
+    let base = if read_outside {
+        recipe.source_directory()
+    } else {
+        let base = still_directory(still)?;
+        confine_to_directory(&recipe.files_read(&scene_text, &base)?, still, &base)?;
+        base
+    };
+    for change in recipe.changed_files(&base) {
         eprintln!("bumpwork: warning: {change}; the picture may differ");
     }
     if recipe.program != bumpwork::PROGRAM {
@@ -195,22 +200,26 @@ fn from_still(still: &Path, read_outside: bool) -> Result<Start, Error> {
         Error::Diagnostic(format!("{}: {m}", bumpwork::diagnostic::sanitize(&origin)))
     })?;
     Ok(Start {
-        scene: recipe.scene(&scene_text)?,
+        scene: recipe.scene(&scene_text, &base)?,
         source: recipe.source,
         scene_text,
         settings,
     })
 }
 
-/// Refuses a file outside the still's directory (links followed), which a crafted still could
-/// otherwise use to read and quote any file the user can read.
-fn confine_to_still_directory(files: &[PathBuf], still: &Path) -> Result<(), Error> {
+/// The still's directory, links resolved.
+fn still_directory(still: &Path) -> Result<PathBuf, Error> {
     let parent = still.parent().filter(|p| !p.as_os_str().is_empty());
-    let directory = std::fs::canonicalize(parent.unwrap_or(Path::new(".")))
-        .map_err(|e| Error::read(still, bumpwork::bounded_read::io_words(&e)))?;
+    std::fs::canonicalize(parent.unwrap_or(Path::new(".")))
+        .map_err(|e| Error::read(still, bumpwork::bounded_read::io_words(&e)))
+}
+
+/// Refuses a file outside the still's `directory` (links followed), which a crafted still could
+/// otherwise use to read and quote any file the user can read.
+fn confine_to_directory(files: &[PathBuf], still: &Path, directory: &Path) -> Result<(), Error> {
     for file in files {
         let resolved = std::fs::canonicalize(file).unwrap_or_else(|_| file.clone());
-        if !resolved.starts_with(&directory) {
+        if !resolved.starts_with(directory) {
             return Err(Error::InvalidArgument(format!(
                 "the still {} names {}, outside its directory {}; add --read-outside to read it",
                 super::sanitized(&still.display().to_string()),

@@ -14,6 +14,7 @@
 
 use crate::Error;
 use crate::diagnostic::sanitize;
+use crate::unfinished_files::Unfinished;
 use std::fs::{File, Metadata};
 use std::io::ErrorKind;
 use std::path::{Path, PathBuf};
@@ -43,6 +44,8 @@ enum Commit {
         target: PathBuf,
         sync: File,
         copy_into: bool,
+        /// Removed by the shutdown watchdog if the process must exit before this is dropped.
+        _tracked: Unfinished,
     },
 }
 
@@ -79,6 +82,7 @@ impl OutputFile {
                 let (file, temporary) = temporary_beside(&path, existing.as_ref(), destination)?;
                 let sync = file.try_clone().map_err(|e| Error::write(destination, e))?;
                 let commit = Commit::Replace {
+                    _tracked: crate::unfinished_files::track(&temporary),
                     temporary,
                     target: path,
                     sync,
@@ -103,6 +107,7 @@ impl OutputFile {
                 target,
                 sync,
                 copy_into: false,
+                ..
             } => {
                 sync.sync_all().map_err(fail)?;
                 temporary.persist(&target).map_err(|e| fail(e.error))
@@ -112,6 +117,7 @@ impl OutputFile {
                 target,
                 sync,
                 copy_into: true,
+                ..
             } => {
                 sync.sync_all().map_err(fail)?;
                 let mut finished = File::open(&temporary).map_err(fail)?;
@@ -261,6 +267,16 @@ fn directory_problem(directory: &Path, error: &std::io::Error) -> String {
         ErrorKind::PermissionDenied => {
             format!("the directory {} is not writable", shown(directory))
         }
+        // The directory is there (it was checked), yet creating in it says "not found": a
+        // kernel file system such as /proc.
+        ErrorKind::NotFound => format!(
+            "cannot create a file in {}: it takes no new files",
+            shown(directory)
+        ),
+        ErrorKind::ReadOnlyFilesystem => format!(
+            "cannot create a file in {}: its file system is read-only",
+            shown(directory)
+        ),
         _ => format!(
             "cannot create a file in {}: {}",
             shown(directory),

@@ -1,6 +1,6 @@
 //! `PatternError`: every problem in a pattern file, with its place and a rustc-like snippet.
 
-use crate::diagnostic::{Spot, escape_line};
+use crate::diagnostic::{Spot, escape_line, shorten_quotes};
 use std::fmt;
 
 /// A byte range in the source text.
@@ -22,7 +22,7 @@ impl Span {
 }
 
 /// An error in a pattern file. Displays as
-/// `file:line:column: error: message`, then the source line and a caret under the spot.
+/// `file:line:column: message`, then the source line and a caret under the spot.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct PatternError {
     /// File name (or other origin) as given to `compile`, escaped for the terminal.
@@ -47,7 +47,7 @@ impl PatternError {
             origin: escape_line(origin),
             line: spot.line,
             column: spot.column,
-            message: escape_line(&message.into()),
+            message: escape_line(&shorten_quotes(&message.into())),
             source_line: spot.shown,
             caret_offset: spot.caret,
         }
@@ -59,7 +59,7 @@ impl PatternError {
             origin: escape_line(origin),
             line: 0,
             column: 0,
-            message: escape_line(&message.into()),
+            message: escape_line(&shorten_quotes(&message.into())),
             source_line: String::new(),
             caret_offset: 0,
         }
@@ -69,13 +69,13 @@ impl PatternError {
 impl fmt::Display for PatternError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         if self.line == 0 {
-            return write!(f, "{}: error: {}", self.origin, self.message);
+            return write!(f, "{}: {}", self.origin, self.message);
         }
         let number = self.line.to_string();
         let gutter = " ".repeat(number.len());
         writeln!(
             f,
-            "{}:{}:{}: error: {}",
+            "{}:{}:{}: {}",
             self.origin, self.line, self.column, self.message
         )?;
         writeln!(f, "{gutter} |")?;
@@ -100,7 +100,7 @@ mod tests {
         );
         assert_eq!((e.line, e.column), (2, 10));
         let text = e.to_string();
-        assert!(text.starts_with("p.pat:2:10: error: unknown name `b`\n"));
+        assert!(text.starts_with("p.pat:2:10: unknown name `b`\n"));
         assert!(
             text.ends_with("2 | height = b + 1\n  |          ^"),
             "{text}"

@@ -1,6 +1,7 @@
 //! The `bump = {…}` and `texture = {…}` tables of a scene file's objects, and how they load:
 //! patterns and images by built-in name or by path relative to the scene file.
 
+use super::exact_arrays::{exact_nested_optional, exact_optional};
 use super::file::{Finite, Positive};
 use super::material::{
     Bump, BumpSource, ImageHeight, ImageTexture, PatternBinding, Placement, Texturing,
@@ -46,22 +47,38 @@ pub struct BindingFile {
     pub params: BTreeMap<String, f64>,
     /// Patterns: feature size multiplier along u and v. Images with the `uv` mapping: the (u,v)
     /// extent one copy of the image covers (default: the whole surface).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[serde(
+        default,
+        deserialize_with = "exact_optional",
+        skip_serializing_if = "Option::is_none"
+    )]
     pub scale: Option<[Positive; 2]>,
     /// Patterns: degrees.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub rotate: Option<Finite>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[serde(
+        default,
+        deserialize_with = "exact_optional",
+        skip_serializing_if = "Option::is_none"
+    )]
     pub offset: Option<[Finite; 2]>,
     /// Images: how the surface maps to the image (default `uv`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub mapping: Option<MappingKind>,
     /// Images with the `triangle` mapping: the image points (s, t in 0..1, t down) at the
     /// triangle's corners a, b, c.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[serde(
+        default,
+        deserialize_with = "exact_nested_optional",
+        skip_serializing_if = "Option::is_none"
+    )]
     pub image_points: Option<[[Finite; 2]; 3]>,
     /// Images: images per second the picture moves by (the seed's "Mona Scroll").
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[serde(
+        default,
+        deserialize_with = "exact_optional",
+        skip_serializing_if = "Option::is_none"
+    )]
     pub scroll: Option<[Finite; 2]>,
 }
 

@@ -30,7 +30,8 @@ pub fn scene_text_dependencies(
 ) -> Result<Vec<PathBuf>, Error> {
     let file: SceneFile = toml::from_str(text).map_err(|e| {
         let offset = e.span().map_or(0, |s| s.start);
-        Error::Diagnostic(crate::diagnostic::render(origin, text, offset, e.message()))
+        let message = super::user_words::in_user_words(e.message());
+        Error::Diagnostic(crate::diagnostic::render(origin, text, offset, &message))
     })?;
     Ok(file
         .objects

@@ -3,6 +3,7 @@
 //! printed as a file and edited.
 
 use super::binding_file::BindingFile;
+use super::exact_arrays::exact;
 use super::{Light, Material, Object, Scene};
 use crate::Error;
 use crate::raster::Camera;
@@ -83,6 +84,7 @@ pub enum SurfaceFile {
         normal: Direction,
         #[serde(rename = "u-axis")]
         u_axis: Direction,
+        #[serde(deserialize_with = "exact")]
         size: [Positive; 2],
     },
     Sphere {
@@ -107,6 +109,7 @@ pub enum SurfaceFile {
     },
     Wave {
         origin: Point,
+        #[serde(deserialize_with = "exact")]
         size: [Positive; 2],
         amplitude: Finite,
         wavelength: Positive,
@@ -155,7 +158,7 @@ macro_rules! checked {
                 if $check {
                     Ok($name($make))
                 } else {
-                    Err(format!(concat!("expected ", $expected, ", found {:?}"), $v))
+                    Err(format!(concat!("expected ", $expected, ", found {}"), found(&$v)))
                 }
             }
         }
@@ -188,14 +191,26 @@ checked!(
     /// Degrees, strictly between 0 and 90.
     HalfAngle(f32) from "f64" f64, "an angle in degrees between 0 and 90",
     check |v| v > 0.0 && v < 90.0, make v as f32, back |x| shortest(x.0));
-checked!(Point(DVec3) from "[f64; 3]" [f64; 3], "a point: three finite numbers",
-    check |v| v.iter().all(|c| c.abs() < MAX_COORDINATE), make DVec3::from_array(v), back |x| x.0.to_array());
-checked!(Direction(Vec3) from "[f64; 3]" [f64; 3], "a direction: three finite numbers, not all zero",
-    check |v| v.iter().all(|c| c.abs() < 1e30) && v.iter().any(|&c| c as f32 != 0.0),
-    make DVec3::from_array(v).as_vec3(), back |x| x.0.to_array().map(shortest));
-checked!(Rgb(Vec3) from "[f64; 3]" [f64; 3], "a linear RGB colour: three numbers ≥ 0",
-    check |v| v.iter().all(|&c| (0.0..1e30).contains(&c)),
-    make DVec3::from_array(v).as_vec3(), back |x| x.0.to_array().map(shortest));
+// Lists are read whole (`Vec`), not as `[f64; 3]`, which would drop a fourth value unseen.
+checked!(Point(DVec3) from "Vec<f64>" Vec<f64>, "a point: three finite numbers",
+    check |v| v.len() == 3 && v.iter().all(|c| c.abs() < MAX_COORDINATE),
+    make DVec3::from_slice(&v), back |x| x.0.to_array().to_vec());
+checked!(Direction(Vec3) from "Vec<f64>" Vec<f64>, "a direction: three finite numbers, not all zero",
+    check |v| v.len() == 3 && v.iter().all(|c| c.abs() < 1e30) && v.iter().any(|&c| c as f32 != 0.0),
+    make DVec3::from_slice(&v).as_vec3(), back |x| x.0.to_array().map(shortest).to_vec());
+checked!(Rgb(Vec3) from "Vec<f64>" Vec<f64>, "a linear RGB colour: three numbers ≥ 0",
+    check |v| v.len() == 3 && v.iter().all(|&c| (0.0..1e30).contains(&c)),
+    make DVec3::from_slice(&v).as_vec3(), back |x| x.0.to_array().map(shortest).to_vec());
+
+/// What a refused value was, as a message quotes it: at most `FOUND_CHARS` characters.
+fn found(value: &impl std::fmt::Debug) -> String {
+    const FOUND_CHARS: usize = 60;
+    let text = format!("{value:?}");
+    match text.char_indices().nth(FOUND_CHARS) {
+        Some((cut, _)) => format!("{}…", &text[..cut]),
+        None => text,
+    }
+}
 
 /// The f64 that prints like the f32 (0.02, not 0.019999999552965164): files written from scenes
 /// stay readable, and read back to the same f32.
@@ -231,16 +246,23 @@ fn default_shininess() -> Positive {
     Positive(40.0)
 }
 
-/// Parses and checks scene text; `origin` names the file in messages.
+/// Parses and checks scene text; `origin` names the file in messages, and pattern and image
+/// paths are relative to its directory.
 pub fn parse_scene(text: &str, origin: &str) -> Result<Scene, Error> {
+    let base = Path::new(origin).parent().unwrap_or(Path::new("."));
+    parse_scene_in(text, origin, base)
+}
+
+/// As `parse_scene`, with pattern and image paths relative to `base`.
+pub fn parse_scene_in(text: &str, origin: &str, base: &Path) -> Result<Scene, Error> {
     let file: SceneFile = toml::from_str(text).map_err(|e| {
         let offset = e.span().map_or(0, |s| s.start);
-        Error::Diagnostic(crate::diagnostic::render(origin, text, offset, e.message()))
+        let message = super::user_words::in_user_words(e.message());
+        Error::Diagnostic(crate::diagnostic::render(origin, text, offset, &message))
     })?;
     let fallback_name = Path::new(origin)
         .file_stem()
         .map_or("scene".into(), |s| s.to_string_lossy());
-    let base = Path::new(origin).parent().unwrap_or(Path::new("."));
     file.to_scene(&fallback_name, base).map_err(|message| {
         Error::Diagnostic(format!(
             "{}: {message}",

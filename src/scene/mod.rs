@@ -2,15 +2,17 @@
 
 mod binding_file;
 pub mod dependencies;
+pub(crate) mod exact_arrays;
 mod file;
 mod material;
 mod presets;
 mod source;
+pub(crate) mod user_words;
 
 pub use binding_file::{BindingFile, FilterFile, MappingKind, WrapFile};
 pub use file::{
     CameraFile, Direction, FieldOfView, Finite, LightFile, MAX_SCENE_FILE_BYTES, Point, Positive,
-    SceneFile, load_scene_file, parse_scene,
+    SceneFile, load_scene_file, parse_scene, parse_scene_in,
 };
 pub use material::{
     Bump, BumpSource, ImageHeight, ImageTexture, Material, PatternBinding, Placement, Texturing,
@@ -72,12 +74,20 @@ pub fn resolve(name_or_path: &str) -> Result<Scene, crate::Error> {
     if let Some(scene) = preset(name_or_path) {
         return Ok(scene);
     }
-    let path = std::path::Path::new(name_or_path);
-    if path.exists() || name_or_path.ends_with(".toml") {
-        return load_scene_file(path);
+    match unknown_scene(name_or_path) {
+        Some(error) => Err(error),
+        None => load_scene_file(std::path::Path::new(name_or_path)),
     }
-    Err(crate::Error::UnknownScene {
-        name: name_or_path.to_string(),
-        suggestion: presets::closest_name(name_or_path),
+}
+
+/// The error for a name that is no built-in scene and no file that could be one (an existing
+/// path, or a name ending in `.toml` or `.pat`), with the closest built-in name; `None` if the
+/// name may be loaded.
+pub fn unknown_scene(name: &str) -> Option<crate::Error> {
+    let could_be_a_file =
+        std::path::Path::new(name).exists() || name.ends_with(".toml") || name.ends_with(".pat");
+    (preset(name).is_none() && !could_be_a_file).then(|| crate::Error::UnknownScene {
+        name: name.to_string(),
+        suggestion: presets::closest_name(name),
     })
 }

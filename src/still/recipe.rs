@@ -6,6 +6,7 @@ use super::samples::{MAX_SAMPLES, ResolveFilter, Supersampling};
 use crate::Error;
 use crate::quality::Quality;
 use crate::raster::Camera;
+use crate::scene::exact_arrays::exact;
 use crate::scene::{
     BindingFile, BumpSource, CameraFile, Direction, FieldOfView, Finite, LightFile, Material,
     PatternBinding, Point, Positive, Scene, Texturing,
@@ -52,8 +53,11 @@ pub struct Recipe {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, rename_all = "kebab-case")]
 pub struct RecipeCamera {
+    #[serde(deserialize_with = "exact")]
     pub eye: [f64; 3],
+    #[serde(deserialize_with = "exact")]
     pub target: [f64; 3],
+    #[serde(deserialize_with = "exact")]
     pub up: [f32; 3],
     pub fov: f32,
     pub near: f32,
@@ -152,7 +156,11 @@ impl Recipe {
     pub fn parse(text: &str, origin: &str) -> Result<Recipe, Error> {
         let recipe: Recipe = toml::from_str(text).map_err(|e| {
             let offset = e.span().map_or(0, |s| s.start);
-            let message = format!("{}{}", e.message(), other_program_note(text));
+            let message = format!(
+                "{}{}",
+                crate::scene::user_words::in_user_words(e.message()),
+                other_program_note(text)
+            );
             Error::Diagnostic(crate::diagnostic::render(origin, text, offset, &message))
         })?;
         recipe
@@ -192,14 +200,27 @@ impl Recipe {
         })
     }
 
-    /// Rebuilds the scene from its text (as recorded) with the recorded edits and camera.
-    pub fn scene(&self, scene_text: &str) -> Result<Scene, Error> {
+    /// The directory the recorded scene named its files from: the scene file's, or the working
+    /// directory for a built-in scene or a pattern file.
+    pub fn source_directory(&self) -> PathBuf {
+        source_directory(&self.source)
+    }
+
+    /// `source_directory` with links resolved, as recorded names are.
+    fn resolved_source_directory(&self) -> PathBuf {
+        let source = self.source_directory();
+        std::fs::canonicalize(&source).unwrap_or(source)
+    }
+
+    /// Rebuilds the scene from its text (as recorded) with the recorded edits and camera, its
+    /// relative file names read from `base` (the still's own directory, or `source_directory`).
+    pub fn scene(&self, scene_text: &str, base: &Path) -> Result<Scene, Error> {
         let origin = if Path::new(&self.source).is_absolute() && !self.source.ends_with(".pat") {
             self.source.clone()
         } else {
             "scene".to_string()
         };
-        let mut scene = crate::scene::parse_scene(scene_text, &origin)?;
+        let mut scene = crate::scene::parse_scene_in(scene_text, &origin, base)?;
         if scene.objects.len() != self.objects.len() {
             return Err(Error::Diagnostic(format!(
                 "the recorded scene has {} objects but the recipe describes {}",
@@ -207,9 +228,8 @@ impl Recipe {
                 self.objects.len()
             )));
         }
-        let base = source_directory(&self.source);
         for (index, (object, state)) in scene.objects.iter_mut().zip(&self.objects).enumerate() {
-            apply_state(object, state, &base)
+            apply_state(object, &self.rebased(state, base), base)
                 .map_err(|e| Error::Diagnostic(format!("recipe object {}: {}", index + 1, e)))?;
         }
         scene.camera = self.camera.to_camera()?;
@@ -217,28 +237,60 @@ impl Recipe {
         Ok(scene)
     }
 
-    /// Every pattern and image file rebuilding the scene from `scene_text` would read.
-    pub fn files_read(&self, scene_text: &str) -> Result<Vec<PathBuf>, Error> {
-        let base = source_directory(&self.source);
+    /// Every pattern and image file rebuilding the scene from `scene_text` would read, relative
+    /// names taken from `base`.
+    pub fn files_read(&self, scene_text: &str, base: &Path) -> Result<Vec<PathBuf>, Error> {
         let mut files =
-            crate::scene::dependencies::scene_text_dependencies(scene_text, "scene", &base)?;
-        let bindings = self
-            .objects
-            .iter()
-            .flat_map(|o| [&o.bump, &o.texture])
-            .flatten();
-        files.extend(bindings.flat_map(|b| crate::scene::dependencies::binding_files(b, &base)));
+            crate::scene::dependencies::scene_text_dependencies(scene_text, "scene", base)?;
+        let states: Vec<ObjectState> = self.objects.iter().map(|o| self.rebased(o, base)).collect();
+        let bindings = states.iter().flat_map(|o| [&o.bump, &o.texture]).flatten();
+        files.extend(bindings.flat_map(|b| crate::scene::dependencies::binding_files(b, base)));
         Ok(files)
     }
 
-    /// Files whose content is no longer what the still was made from, as messages.
-    pub fn changed_files(&self) -> Vec<String> {
+    /// `state` with the file names it recorded under the source directory moved under `base`.
+    fn rebased(&self, state: &ObjectState, base: &Path) -> ObjectState {
+        let source = self.resolved_source_directory();
+        let move_name = |name: &Option<String>| {
+            name.as_ref()
+                .map(|name| match Path::new(name).strip_prefix(&source) {
+                    Ok(within) => base.join(within).display().to_string(),
+                    Err(_) => name.clone(),
+                })
+        };
+        let move_binding = |binding: &Option<BindingFile>| {
+            binding.as_ref().map(|b| BindingFile {
+                pattern: move_name(&b.pattern),
+                image: move_name(&b.image),
+                ..b.clone()
+            })
+        };
+        ObjectState {
+            bump: move_binding(&state.bump),
+            texture: move_binding(&state.texture),
+        }
+    }
+
+    /// Files whose content is no longer what the still was made from, as messages. Each recorded
+    /// file under the source directory is looked for under `base` instead; with another `base`
+    /// than the source directory, files recorded elsewhere are not read at all.
+    pub fn changed_files(&self, base: &Path) -> Vec<String> {
+        let source = self.resolved_source_directory();
         self.files
             .iter()
-            .filter_map(|f| match hash_file(Path::new(&f.path)) {
-                Ok(hash) if hex(hash) == f.fnv1a64 => None,
-                Ok(_) => Some(format!("{} has changed since the still was made", f.path)),
-                Err(e) => Some(format!("{} cannot be read: {e}", f.path)),
+            .filter_map(|f| {
+                let recorded = Path::new(&f.path);
+                let path = match recorded.strip_prefix(&source) {
+                    Ok(within) => base.join(within),
+                    Err(_) if base == source.as_path() => recorded.to_path_buf(),
+                    Err(_) => return None,
+                };
+                let shown = path.display();
+                match hash_file(&path) {
+                    Ok(hash) if hex(hash) == f.fnv1a64 => None,
+                    Ok(_) => Some(format!("{shown} has changed since the still was made")),
+                    Err(e) => Some(format!("{shown} cannot be read: {e}")),
+                }
             })
             .map(|m| crate::diagnostic::sanitize(&m).into_owned())
             .collect()
@@ -286,10 +338,10 @@ impl RecipeCamera {
     /// The camera checked exactly as a scene file's `[camera]` is.
     fn to_camera(&self) -> Result<Camera, Error> {
         let refuse = |m: String| Error::Diagnostic(format!("the recipe's camera: {m}"));
-        let widen = |v: [f32; 3]| v.map(f64::from);
+        let widen = |v: [f32; 3]| v.map(f64::from).to_vec();
         let file = CameraFile {
-            eye: Point::try_from(self.eye).map_err(refuse)?,
-            target: Point::try_from(self.target).map_err(refuse)?,
+            eye: Point::try_from(self.eye.to_vec()).map_err(refuse)?,
+            target: Point::try_from(self.target.to_vec()).map_err(refuse)?,
             up: Direction::try_from(widen(self.up)).map_err(refuse)?,
             fov: FieldOfView::try_from(f64::from(self.fov)).map_err(refuse)?,
             near: Some(Positive::try_from(f64::from(self.near)).map_err(refuse)?),

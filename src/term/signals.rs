@@ -1,5 +1,7 @@
-//! The signals that end the workbench: SIGINT, SIGTERM and SIGHUP (the SSH link dropped, the terminal
-//! window closed). Handlers only record the signal; the event loop polls [`ShutdownSignals::received`]
+//! The signals that end the workbench: SIGINT, SIGTERM, SIGHUP (the SSH link dropped, the terminal
+//! window closed) and every other catchable signal whose default is to end the process (SIGQUIT,
+//! SIGUSR1, SIGUSR2, SIGALRM, SIGVTALRM, SIGPROF, SIGXCPU, SIGXFSZ), so none of them leaves the
+//! terminal raw or an export's temporary file behind. Handlers only record the signal; the event loop polls [`ShutdownSignals::received`]
 //! (say after each `crossterm::event::poll` with a timeout of 100 ms or less), drops its terminal guard
 //! and exits with [`ShutdownSignal::exit_code`].
 //!
@@ -8,8 +10,9 @@
 //!
 //! An event loop may never poll again: crossterm 0.29's `event::poll` spins forever, ignoring its
 //! timeout, once the tty is gone (crossterm issue #793), which is exactly the SIGHUP case. So a watchdog
-//! thread also sees each shutdown signal and, if the process is still alive a grace period later, restores
-//! the terminal and exits with 128 + signal itself. Shutdown signals therefore always end the process.
+//! thread also sees each shutdown signal and, if the process is still alive a grace period later, removes
+//! the temporary files still being written (`unfinished_files`), restores the terminal and exits with
+//! 128 + signal itself. Shutdown signals therefore always end the process.
 //!
 //! A second signal of the same kind, while the first is still unhandled, exits at once with 128 + signal
 //! and without restoring.
@@ -23,7 +26,10 @@ use std::time::Duration;
 
 use crossterm::event::{KeyCode, KeyEvent, KeyEventKind, KeyModifiers};
 use signal_hook::SigId;
-use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
+use signal_hook::consts::{
+    SIGALRM, SIGHUP, SIGINT, SIGPROF, SIGQUIT, SIGTERM, SIGUSR1, SIGUSR2, SIGVTALRM, SIGXCPU,
+    SIGXFSZ,
+};
 use signal_hook::flag;
 use signal_hook::iterator::Signals;
 use signal_hook::iterator::backend::Handle;
@@ -36,13 +42,29 @@ pub enum ShutdownSignal {
     Interrupt,
     Terminate,
     HangUp,
+    Quit,
+    User1,
+    User2,
+    Alarm,
+    VirtualAlarm,
+    Profiling,
+    CpuTimeLimit,
+    FileSizeLimit,
 }
 
 impl ShutdownSignal {
-    pub const ALL: [ShutdownSignal; 3] = [
+    pub const ALL: [ShutdownSignal; 11] = [
         ShutdownSignal::Interrupt,
         ShutdownSignal::Terminate,
         ShutdownSignal::HangUp,
+        ShutdownSignal::Quit,
+        ShutdownSignal::User1,
+        ShutdownSignal::User2,
+        ShutdownSignal::Alarm,
+        ShutdownSignal::VirtualAlarm,
+        ShutdownSignal::Profiling,
+        ShutdownSignal::CpuTimeLimit,
+        ShutdownSignal::FileSizeLimit,
     ];
 
     pub fn number(self) -> i32 {
@@ -50,6 +72,14 @@ impl ShutdownSignal {
             ShutdownSignal::Interrupt => SIGINT,
             ShutdownSignal::Terminate => SIGTERM,
             ShutdownSignal::HangUp => SIGHUP,
+            ShutdownSignal::Quit => SIGQUIT,
+            ShutdownSignal::User1 => SIGUSR1,
+            ShutdownSignal::User2 => SIGUSR2,
+            ShutdownSignal::Alarm => SIGALRM,
+            ShutdownSignal::VirtualAlarm => SIGVTALRM,
+            ShutdownSignal::Profiling => SIGPROF,
+            ShutdownSignal::CpuTimeLimit => SIGXCPU,
+            ShutdownSignal::FileSizeLimit => SIGXFSZ,
         }
     }
 
@@ -81,7 +111,7 @@ pub struct ShutdownSignals {
 }
 
 impl ShutdownSignals {
-    /// Installs the handlers for SIGINT, SIGTERM and SIGHUP, with the [`DEFAULT_GRACE`] watchdog.
+    /// Installs the handlers for every [`ShutdownSignal`], with the [`DEFAULT_GRACE`] watchdog.
     pub fn register() -> io::Result<ShutdownSignals> {
         Self::register_with_grace(DEFAULT_GRACE)
     }
@@ -176,6 +206,7 @@ fn spawn_watchdog(grace: Duration, cancelled: mpsc::Receiver<()>) -> io::Result<
                 return;
             };
             if let Err(RecvTimeoutError::Timeout) = cancelled.recv_timeout(grace) {
+                crate::unfinished_files::remove_all();
                 restore_terminal();
                 std::process::exit(128 + number);
             }

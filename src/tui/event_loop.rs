@@ -18,6 +18,22 @@ const SIGNAL_POLL: Duration = Duration::from_millis(100);
 /// Runs the workbench until the user quits. A shutdown signal restores the terminal and exits
 /// the process with 128 + the signal number.
 pub fn run(options: &WorkbenchOptions) -> Result<(), Error> {
+    use std::io::IsTerminal;
+    // A misspelt scene is answered as `render` answers it, terminal or not.
+    if let Some(error) = options
+        .scenes
+        .iter()
+        .find_map(|name| crate::scene::unknown_scene(name))
+    {
+        return Err(error);
+    }
+    if !io::stdin().is_terminal() || !io::stdout().is_terminal() {
+        return Err(Error::InvalidArgument(
+            "the workbench needs a terminal, and its standard input or output is not one \
+             (`bumpwork render` makes a still without one)"
+                .into(),
+        ));
+    }
     let colors = options.colors.resolve(|name| std::env::var(name).ok());
     let mut app = App::new(options, colors)?;
     let signals = ShutdownSignals::register().map_err(terminal_error)?;
@@ -26,6 +42,8 @@ pub fn run(options: &WorkbenchOptions) -> Result<(), Error> {
     let result = event_loop(&mut app, &signals);
     drop(guard);
     if let Some(signal) = signals.received() {
+        // Cancels an export under way and waits for it, so its temporary file is removed.
+        drop(app);
         std::process::exit(signal.exit_code());
     }
     result.map_err(terminal_error)

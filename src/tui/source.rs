@@ -10,6 +10,9 @@ use std::path::PathBuf;
 /// pattern and image it names, or the pattern file). If watching cannot start, the scene still
 /// opens, without hot reload. With `watch` off nothing is watched.
 pub fn open_source(name: &str, watch: bool) -> Result<(Scene, Option<Reloader>), Error> {
+    if let Some(error) = crate::scene::unknown_scene(name) {
+        return Err(error);
+    }
     let started = if !watch {
         return Ok((load_source(name)?, None));
     } else if name.ends_with(".pat") {

@@ -57,7 +57,7 @@ fn escapes_in_names_and_contents_are_shown_escaped() {
         // Set the window title, then ring the bell.
         (
             write(&dir, "title\x1b]0;pwned\x07.pat", b"height = u +\n"),
-            "title\\e]0;pwned\\x07.pat:2:1: error: expected an expression",
+            "title\\e]0;pwned\\x07.pat:2:1: expected an expression",
         ),
         // Clear the screen from inside the pattern text.
         (
@@ -472,4 +472,41 @@ fn a_compressed_recipe_bomb_is_refused_at_the_limit() {
     let size = std::fs::metadata(&bomb).unwrap().len();
     assert!(size < 256 << 10, "{size} bytes");
     assert_clean_error(&render_from(&bomb, &[]), "longer than the limit of 1 MiB");
+}
+
+/// A recipe's relative names are read beside the still, whatever directory its `source` claims;
+/// `--read-outside` reads them where the scene was.
+#[test]
+fn a_stills_relative_names_are_read_from_its_own_directory() {
+    let made_in = temp_dir("hostile-recipe-made-in");
+    let moved_to = temp_dir("hostile-recipe-moved-to");
+    std::fs::write(made_in.join("bumps.pat"), "height = 0\n").unwrap();
+    let scene = write(
+        &made_in,
+        "scene.toml",
+        sphere_scene("{ pattern = \"bumps.pat\" }").as_bytes(),
+    );
+    let still = moved_to.join("still.png");
+    let output = bumpwork(&[
+        "render",
+        scene.to_str().unwrap(),
+        "--size",
+        "8x8",
+        "-o",
+        still.to_str().unwrap(),
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    // Nothing beside the still: the name is looked for there, not where the recipe says.
+    let output = render_from(&still, &[]);
+    assert_clean_error(&output, "bumps.pat");
+    let beside = moved_to.join("bumps.pat").display().to_string();
+    assert!(stderr(&output).contains(&beside), "{}", stderr(&output));
+    // A pattern beside the still is the one read.
+    std::fs::write(moved_to.join("bumps.pat"), "height = 0.5 * u\n").unwrap();
+    let output = render_from(&still, &[]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    // With --read-outside, the file where the scene was.
+    std::fs::remove_file(moved_to.join("bumps.pat")).unwrap();
+    let output = render_from(&still, &["--read-outside"]);
+    assert!(output.status.success(), "{}", stderr(&output));
 }

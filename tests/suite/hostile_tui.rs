@@ -40,7 +40,7 @@ fn escapes_from_files_reach_the_screen_only_as_text() {
     // A bad save whose text and error hold escapes: the last good view stays, the error shows.
     std::fs::write(&file, "height = u +\x1b]2;owned\x07\x1b[2J\x1b(0q\n").unwrap();
     let screen = tmux.wait_for("the escaped error", |s| {
-        s.contains("q.pat:1:13: error: unexpected character `\\e`")
+        s.contains("q.pat:1:13: unexpected character `\\e`")
     });
     assert!(!screen.contains('─'), "line drawing switched on:\n{screen}");
     let title = tmux.pane("#{pane_title}");

@@ -16,6 +16,7 @@ mod fuzz_regressions;
 mod hostile_files;
 mod hostile_tui;
 mod memory_budget;
+mod messages;
 mod never_stuck;
 mod nothing_lost;
 mod output_paths;

@@ -22,7 +22,7 @@ fn assert_error(source: &str, line: usize, column: usize, says: &str) {
     let text = e.to_string();
     let lines: Vec<&str> = text.lines().collect();
     assert_eq!(lines.len(), 4, "{text}");
-    assert!(lines[0].starts_with(&format!("bad.pat:{line}:{column}: error: ")));
+    assert!(lines[0].starts_with(&format!("bad.pat:{line}:{column}: ")));
     let source_line = source.lines().nth(line - 1).unwrap_or("");
     assert_eq!(lines[2], format!("{line} | {source_line}"));
     let caret = lines[3].find('^').expect("caret");
@@ -152,7 +152,7 @@ fn unreadable_and_oversized_files_are_errors() {
     assert!(
         missing
             .to_string()
-            .starts_with("/nonexistent/dir/x.pat: error: cannot read")
+            .starts_with("/nonexistent/dir/x.pat: cannot read")
     );
     let dir = std::env::temp_dir().join(format!("bumpwork-pattern-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();

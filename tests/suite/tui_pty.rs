@@ -92,3 +92,40 @@ fn the_workbench_runs_in_a_real_terminal_and_gives_it_back() {
     drop(parser);
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// Every catchable signal that ends the workbench during an export leaves neither the still nor
+/// its temporary file, and ends it within the 0.5 s grace.
+#[test]
+fn a_signal_during_an_export_leaves_no_file() {
+    for (name, signal) in [("SIGQUIT", libc::SIGQUIT), ("SIGUSR1", libc::SIGUSR1)] {
+        let dir = tempfile::tempdir().unwrap();
+        let mut command = CommandBuilder::new(env!("CARGO_BIN_EXE_bumpwork"));
+        // Large and supersampled: the export is still running when the signal comes.
+        command.args([
+            "view",
+            "plane-dimples",
+            "--export-size",
+            "8000x8000",
+            "--export-samples",
+            "64",
+        ]);
+        command.cwd(dir.path());
+        command.env("TERM", "xterm-256color");
+        let mut session = Session::spawn(command, COLS, ROWS);
+        session.wait_for("the first frame", status_contains("plane-dimples"));
+        session.send("e");
+        session.wait_for("the export to start", status_contains("exporting"));
+        let pid = session.child.process_id().unwrap() as i32;
+        // SAFETY: kill only sends a signal to the process we started.
+        assert_eq!(unsafe { libc::kill(pid, signal) }, 0);
+        let start = std::time::Instant::now();
+        let status = session.exit_within(std::time::Duration::from_secs(3));
+        eprintln!("{name}: ended in {:?}", start.elapsed());
+        assert_eq!(status, Some(128 + signal as u32), "{name}");
+        let left: Vec<_> = std::fs::read_dir(dir.path())
+            .unwrap()
+            .map(|entry| entry.unwrap().file_name())
+            .collect();
+        assert!(left.is_empty(), "{name} left {left:?}");
+    }
+}

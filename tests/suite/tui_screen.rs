@@ -162,7 +162,10 @@ fn the_export_key_writes_the_live_view_in_the_background_and_from_makes_it_again
         bumpwork::quality::Quality { samples: 4, ..live }
     );
     let scene = recipe
-        .scene(&texts.iter().find(|(k, _)| k == SCENE).unwrap().1)
+        .scene(
+            &texts.iter().find(|(k, _)| k == SCENE).unwrap().1,
+            &recipe.source_directory(),
+        )
         .unwrap();
     assert_eq!(scene.camera, app.camera());
     assert_eq!(scene.lights, app.scene().lights);
