@@ -56,7 +56,8 @@ pub fn run(args: GalleryArgs) -> Result<(), Error> {
         thumbnail: args.thumbnail,
         columns: args.columns,
     };
-    let mut sheet = ContactSheet::new(names.len(), layout).map_err(Error::InvalidArgument)?;
+    let mut sheet =
+        ContactSheet::new(names.len(), layout, args.size).map_err(Error::InvalidArgument)?;
     make_directory(&args.output)?;
     for name in &names {
         check_destination(&args.output.join(format!("{name}.png")))?;

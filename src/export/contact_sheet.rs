@@ -37,9 +37,14 @@ pub struct ContactSheet {
 }
 
 impl ContactSheet {
-    /// An empty sheet for `count` pictures, or why it cannot be made: a side over `MAX_SIDE`,
-    /// or more memory than the budget, checked before anything is allocated.
-    pub fn new(count: usize, layout: SheetLayout) -> Result<ContactSheet, String> {
+    /// An empty sheet for `count` pictures of `picture` size, or why it cannot be made: a side
+    /// over `MAX_SIDE`, or more memory than the budget (the sheet, and one picture read back to
+    /// be placed), checked before anything is allocated.
+    pub fn new(
+        count: usize,
+        layout: SheetLayout,
+        picture: (u32, u32),
+    ) -> Result<ContactSheet, String> {
         let (tw, th) = layout.thumbnail;
         let columns = u64::from(layout.columns.clamp(1, count.max(1) as u32));
         let rows = (count as u64).div_ceil(columns).max(1);
@@ -52,13 +57,13 @@ impl ContactSheet {
                  limit; use a smaller --thumbnail or fewer --columns"
             ));
         }
-        // RGBA while drawing, RGB rows while writing.
-        let bytes = width * height * 7;
+        // RGBA while drawing and RGB rows while writing; a picture as RGB and as RGBA.
+        let bytes = (width * height + u64::from(picture.0) * u64::from(picture.1)) * 7;
         let budget = crate::memory_budget::budget_bytes();
         if bytes > budget {
             return Err(format!(
-                "the contact sheet would take {}, over the {} memory budget; use a smaller \
-                 --thumbnail, or raise {}",
+                "the contact sheet and a still read back onto it would take {}, over the {} \
+                 memory budget; use a smaller --thumbnail or --size, or raise {}",
                 size_words(bytes),
                 size_words(budget),
                 crate::memory_budget::MEMORY_BUDGET_VAR

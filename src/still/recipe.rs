@@ -104,8 +104,18 @@ impl StillSettings {
         camera: &Camera,
     ) -> Result<crate::raster::PreparedScene, crate::memory_budget::OverBudget> {
         let (width, height) = self.size;
+        self.prepare_with_output(scene, camera, super::bands::band_bytes(width, height))
+    }
+
+    /// As `prepare`, for a still whose buffers take `output_bytes` rather than a band's.
+    pub fn prepare_with_output(
+        &self,
+        scene: Scene,
+        camera: &Camera,
+        output_bytes: u64,
+    ) -> Result<crate::raster::PreparedScene, crate::memory_budget::OverBudget> {
+        let (width, height) = self.size;
         let full = crate::raster::Viewport { width, height };
-        let output_bytes = super::bands::band_bytes(width, height);
         self.quality.prepare(scene, camera, full, output_bytes)
     }
 

@@ -107,20 +107,10 @@ fn carries_recipe(mode: ViewMode) -> bool {
 }
 
 fn export(order: ExportOrder, cancel: &AtomicBool) -> Result<(), Error> {
-    let prepared = order.settings.prepare(order.scene, &order.camera)?;
     if !carries_recipe(order.mode) {
-        let view = View {
-            prepared: &prepared,
-            camera: order.camera,
-            mode: order.mode,
-            time: order.settings.time,
-            quality: order.settings.quality,
-        };
-        let mut framebuffer = empty_framebuffer();
-        let (width, height) = order.settings.size;
-        render_frame(&view, width, height, &mut framebuffer);
-        return write_png(&framebuffer, &order.path);
+        return export_picture(order);
     }
+    let prepared = order.settings.prepare(order.scene, &order.camera)?;
     let recipe = Recipe::capture(
         &order.source,
         &prepared.scene,
@@ -144,6 +134,27 @@ fn export(order: ExportOrder, cancel: &AtomicBool) -> Result<(), Error> {
         &interrupted,
     )?;
     Ok(())
+}
+
+/// A view no recipe makes again (wireframe, error heat map), rendered whole at the export size.
+fn export_picture(order: ExportOrder) -> Result<(), Error> {
+    let (width, height) = order.settings.size;
+    // A whole framebuffer, the error view's reference beside it, and the 8-bit rows.
+    let pixels = u64::from(width) * u64::from(height);
+    let output_bytes = pixels * (2 * crate::raster::Framebuffer::BYTES_PER_PIXEL + 3);
+    let prepared = order
+        .settings
+        .prepare_with_output(order.scene, &order.camera, output_bytes)?;
+    let view = View {
+        prepared: &prepared,
+        camera: order.camera,
+        mode: order.mode,
+        time: order.settings.time,
+        quality: order.settings.quality,
+    };
+    let mut framebuffer = empty_framebuffer();
+    render_frame(&view, width, height, &mut framebuffer);
+    write_png(&framebuffer, &order.path)
 }
 
 /// `dir/stem-SECONDS.png`, or with `-2`, `-3`… added if that exists: never overwrites a file.

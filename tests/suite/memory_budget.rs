@@ -154,3 +154,23 @@ fn a_contact_sheet_past_the_size_limit_is_refused_before_any_still() {
         "nothing is made for a gallery that cannot be finished"
     );
 }
+
+#[test]
+fn a_gallery_whose_sheet_and_still_would_not_fit_is_refused_before_any_still() {
+    let dir = temp_dir("memory-sheet-budget");
+    let gallery = dir.join("gallery");
+    let args = [
+        "gallery",
+        "-o",
+        gallery.to_str().unwrap(),
+        "--size",
+        "2048x2048",
+        "--scenes",
+        "plane-dimples",
+    ]
+    .map(OsStr::new);
+    // A 2048² still read back as RGB and RGBA alone takes 28 MiB.
+    let output = bumpwork_bounded_with(&args, &[("BUMPWORK_MEMORY_MIB", "16")], 384, SECONDS);
+    assert_user_error(&output, "the contact sheet and a still read back onto it");
+    assert!(!gallery.exists());
+}
