@@ -12,9 +12,10 @@ use bench_support::time_png_stills;
 use bumpwork::export::{StillRequest, write_png};
 use bumpwork::measure::Timing;
 use bumpwork::quality::Quality;
-use bumpwork::raster::{PreparedScene, RenderTarget, Viewport, render};
+use bumpwork::raster::{PreparedScene, RenderTarget, Viewport};
 use bumpwork::scene::{BindingFile, MappingKind, load_scene_file, preset_file};
 use bumpwork::shade::ViewMode;
+use bumpwork::shade::render_lit;
 use bumpwork::still::{Recipe, ResolveFilter, StillSettings};
 use bumpwork::surface::Tessellation;
 use std::path::{Path, PathBuf};
@@ -72,7 +73,7 @@ fn main() {
             width: 1920,
             height: 1080,
         };
-        let (framebuffer, _) = render(&prepared, &RenderTarget::new(&camera, viewport));
+        let (framebuffer, _) = render_lit(&prepared, &RenderTarget::new(&camera, viewport));
         write_png(&framebuffer, &out).expect("png");
     });
     println!("  whole frame + write_png (peer): {}", whole.summary_ms());

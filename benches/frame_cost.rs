@@ -20,8 +20,9 @@ use bench_support::{
 use bumpwork::export::StillRequest;
 use bumpwork::quality::Quality;
 use bumpwork::raster::{
-    Camera, FragmentShader, Framebuffer, PreparedScene, RenderTarget, Viewport, render_into,
+    FragmentShader, Framebuffer, PreparedScene, RenderTarget, Viewport, render_into,
 };
+use bumpwork::scene::Camera;
 use bumpwork::scene::load_scene_file;
 use bumpwork::still::{
     BandBuffers, BandJob, Recipe, ResolveFilter, Supersampling, render_supersampled,

@@ -6,8 +6,9 @@
 //! Run: `cargo bench --bench reload_latency`.
 
 use bumpwork::measure::Timing;
-use bumpwork::raster::{PreparedScene, RenderTarget, Viewport, render};
+use bumpwork::raster::{PreparedScene, RenderTarget, Viewport};
 use bumpwork::scene::Scene;
+use bumpwork::shade::render_lit;
 use bumpwork::surface::Tessellation;
 use bumpwork::watch::{DEBOUNCE, ReloadOutcome, Reloader, SceneFileSource};
 use std::path::{Path, PathBuf};
@@ -51,7 +52,7 @@ fn frame(scene: Scene) {
     let camera = scene.camera.clone();
     let prepared = PreparedScene::new(scene, Tessellation::default());
     let target = RenderTarget::new(&camera, VIEWPORT);
-    std::hint::black_box(render(&prepared, &target));
+    std::hint::black_box(render_lit(&prepared, &target));
 }
 
 /// Writes the save, then waits for its reload: (write → scene available, write → frame done).

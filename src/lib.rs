@@ -6,6 +6,7 @@ pub mod diagnostic;
 mod error;
 pub mod export;
 mod huge_pages;
+pub mod label_font;
 pub mod measure;
 pub mod memory_budget;
 pub mod pattern;

@@ -11,7 +11,8 @@ pub use adaptive::{MAX_ADAPTIVE_DENSITY, adaptive_density, projected_chord_error
 
 use crate::memory_budget::{MemoryUse, OverBudget};
 use crate::pattern::Precision;
-use crate::raster::{Camera, Interpolation, PreparedObject, PreparedScene, RenderTarget, Viewport};
+use crate::raster::{Interpolation, PreparedObject, PreparedScene, RenderTarget, Viewport};
+use crate::scene::Camera;
 use crate::scene::{Scene, Texturing};
 use crate::shade::{GradientMethod, LitShader, NormalForm, VertexNormals};
 use crate::surface::Tessellation;

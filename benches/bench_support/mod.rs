@@ -4,7 +4,7 @@
 use bumpwork::export::{StillFormat, StillRequest, write_still};
 use bumpwork::measure::Timing;
 use bumpwork::quality::Quality;
-use bumpwork::raster::Camera;
+use bumpwork::scene::Camera;
 use bumpwork::scene::{
     BindingFile, ImageTexture, Light, MappingKind, Material, Object, Scene, Texturing,
     load_scene_file, preset_file,

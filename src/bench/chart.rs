@@ -5,7 +5,7 @@
 use super::Summary;
 use super::pareto::pareto_front;
 use super::variants::VariantKind;
-use crate::export::label_font::{GLYPH_HEIGHT, text_pixels};
+use crate::label_font::{GLYPH_HEIGHT, text_pixels};
 use crate::raster::Framebuffer;
 use crate::texture::srgb_to_linear;
 use glam::Vec3;
@@ -282,6 +282,17 @@ fn draw_text_scaled(pixmap: &mut Pixmap, x: f32, y: f32, text: &str, rgb: [u8; 3
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::label_font::glyph;
+
+    #[test]
+    fn every_bench_variant_name_and_unit_draws_without_blanks() {
+        let names = crate::bench::variants().into_iter().map(|v| v.name);
+        for text in names.chain(["ms", "dB", "deg", "0123456789*"].map(String::from)) {
+            for c in text.chars() {
+                assert_ne!(glyph(c), [0; 7], "'{c}' of {text}");
+            }
+        }
+    }
 
     #[test]
     fn every_srgb_byte_survives_the_trip_through_linear_light() {

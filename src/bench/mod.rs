@@ -11,8 +11,9 @@ pub use variants::{Variant, VariantKind, variants};
 
 use crate::measure::Timing;
 use crate::quality::Quality;
-use crate::raster::{Camera, Framebuffer, PreparedScene, RenderTarget, Viewport, render_into};
+use crate::raster::{Framebuffer, PreparedScene, RenderTarget, Viewport, render_into};
 use crate::reference::{FrameError, ShadedAndNormals, ViewRays, render_rays_into};
+use crate::scene::Camera;
 use crate::scene::Scene;
 use crate::shade::LitShader;
 use crate::still::{BandBuffers, BandJob, Supersampling, render_supersampled};

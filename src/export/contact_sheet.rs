@@ -1,9 +1,9 @@
 //! The gallery's contact sheet: every still as a labelled thumbnail in one grid, scaled with
 //! tiny-skia's filtered pixmap drawing (bicubic) so thumbnails do not alias.
 
-use super::label_font::{GLYPH_HEIGHT, text_pixels, text_width};
 use super::{PngStill, metadata::SOFTWARE};
 use crate::Error;
+use crate::label_font::{GLYPH_HEIGHT, text_pixels, text_width};
 use crate::memory_budget::size_words;
 use crate::still::MAX_SIDE;
 use crate::still::RowSink;

@@ -2,7 +2,6 @@
 //! half-written (see `output_file`).
 
 mod contact_sheet;
-pub mod label_font;
 pub mod metadata;
 mod output_file;
 mod png_file;

@@ -8,7 +8,8 @@
 use super::output_file::OutputFile;
 use super::png_file::PngStill;
 use crate::Error;
-use crate::raster::{Camera, PreparedObject, PreparedScene};
+use crate::raster::{PreparedObject, PreparedScene};
+use crate::scene::Camera;
 use crate::scene::{Light, Object, Scene};
 use crate::still::RowSink;
 use glam::{DVec3, Vec2, Vec3};

@@ -4,7 +4,8 @@
 use super::metadata::{RECIPE, SCENE, SOFTWARE};
 use super::{PngStill, PpmStill};
 use crate::Error;
-use crate::raster::{Camera, FrameStats, PreparedScene, Viewport};
+use crate::raster::{FrameStats, PreparedScene, Viewport};
+use crate::scene::Camera;
 use crate::still::{
     BAND_BUDGET_BYTES, BandJob, Recipe, RowSink, StillSettings, StillStop, stream_still,
 };

@@ -9,7 +9,8 @@
 //! Precision: f32 as the meshes are. Sags of a tenth of a pixel are ~1e-4 of an object's size,
 //! well above f32's 6e-8 relative step at these magnitudes.
 
-use crate::raster::{Camera, Viewport};
+use crate::raster::Viewport;
+use crate::scene::Camera;
 use crate::surface::{Surface, Tessellation};
 
 /// Densest adaptive tessellation: a sphere at 512 has 512 K triangles.

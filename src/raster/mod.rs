@@ -7,7 +7,6 @@
 //! visible pixels (deferred shading: no fragment is shaded twice).
 
 mod bin;
-mod camera;
 mod clip;
 mod fragment;
 mod framebuffer;
@@ -22,14 +21,13 @@ mod top_first;
 mod window;
 
 pub use bin::{TILE_SIZE, TileBins};
-pub use camera::Camera;
 pub use clip::{ClipVertex, clip_triangle};
 pub use fragment::{Fragment, FragmentShader, FrameObject, PerFragment};
 pub use framebuffer::{Blend, Framebuffer, encode_srgb8, linear_to_srgb8};
 pub use pipeline::{
     FrameStats, Interpolation, PreparedObject, PreparedScene, RenderTarget, Srgb8Strips,
-    frame_objects, render, render_into, render_passes_into, render_refining_passes_into,
-    render_with, screen_triangles,
+    frame_objects, render_into, render_passes_into, render_refining_passes_into, render_with,
+    screen_triangles,
 };
 pub use refine::{RefineRule, Refinement};
 pub use scan::{PixelRect, scan_shifted, scan_triangle};

@@ -1,4 +1,3 @@
-use super::camera::Camera;
 use super::clip::{ClipVertex, clip_triangle, needs_no_clipping};
 use super::fragment::{FragmentShader, FrameObject};
 use super::framebuffer::{Blend, Framebuffer};
@@ -9,8 +8,8 @@ use super::tile::TileBuffers;
 use super::top_first::map_top_first;
 use super::window::ImageWindow;
 use crate::huge_pages::zeroed_huge;
+use crate::scene::Camera;
 use crate::scene::{Material, Scene};
-use crate::shade::LitShader;
 use crate::surface::{Mesh, Surface, Tessellation};
 use bytemuck::Zeroable;
 use glam::{Mat4, Vec3, Vec4};
@@ -135,12 +134,6 @@ pub enum Interpolation {
     PerspectiveCorrect,
     /// Linear in screen space, as early hardware did: cheaper, wrong under perspective.
     Affine,
-}
-
-/// Renders a lit frame on the current rayon pool.
-pub fn render(prepared: &PreparedScene, target: &RenderTarget) -> (Framebuffer, FrameStats) {
-    let shader = LitShader::new(&prepared.scene, target.camera);
-    render_with(prepared, target, &shader)
 }
 
 /// The objects of a prepared scene placed relative to the camera for one frame.

@@ -3,9 +3,9 @@ use super::intersect::intersect;
 use super::ray::{Hit, Ray};
 use super::view_rays::ViewRays;
 use crate::raster::{
-    Camera, Fragment, FragmentShader, FrameObject, Framebuffer, PreparedScene, Viewport,
-    frame_objects,
+    Fragment, FragmentShader, FrameObject, Framebuffer, PreparedScene, Viewport, frame_objects,
 };
+use crate::scene::Camera;
 use glam::{DVec3, Vec3};
 use rayon::prelude::*;
 

@@ -1,4 +1,5 @@
-use crate::raster::{Camera, Viewport};
+use crate::raster::Viewport;
+use crate::scene::Camera;
 use crate::surface::normalize_or;
 use glam::{DVec3, Vec3};
 

@@ -6,7 +6,7 @@ use super::binding_file::BindingFile;
 use super::exact_arrays::exact;
 use super::{Light, Material, Object, Scene};
 use crate::Error;
-use crate::raster::Camera;
+use crate::scene::Camera;
 use crate::surface::{AxisBasis, Cone, Paraboloid, Plane, Sphere, Surface, Triangle, Wave};
 use crate::texture::ImageCache;
 use glam::{DVec3, Vec2, Vec3};

@@ -1,6 +1,7 @@
 //! What is drawn: surfaces with materials, lights and a camera, from a TOML file or a preset.
 
 mod binding_file;
+mod camera;
 pub mod dependencies;
 pub(crate) mod exact_arrays;
 mod file;
@@ -20,8 +21,8 @@ pub use material::{
 pub use presets::{PRESET_NAMES, preset, preset_file};
 pub use source::{load_source, source_text};
 
-use crate::raster::Camera;
 use crate::surface::Surface;
+pub use camera::Camera;
 use glam::{DVec3, Vec3};
 
 /// A scene ready to render. Colours are linear RGB.

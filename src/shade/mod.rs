@@ -15,6 +15,6 @@ pub use bake::{bake_color, bake_height};
 pub use bump::{NormalForm, bumped_normal};
 pub use gradient::GradientMethod;
 pub use lighting::{FrameLights, blinn_phong, facing_sign};
-pub use scene_shader::{LitShader, ShadeScratch};
+pub use scene_shader::{LitShader, ShadeScratch, render_lit};
 pub use vertex_normals::{Interpolated, VertexNormals};
 pub use view_mode::ViewMode;

@@ -9,7 +9,10 @@ use super::pattern_batch::{PatternBatch, Sites};
 use super::vertex_normals::VertexNormals;
 use super::view_mode::ViewMode;
 use crate::pattern::{OutputKind, Precision};
-use crate::raster::{Camera, Fragment, FragmentShader, FrameObject};
+use crate::raster::{
+    Fragment, FragmentShader, FrameObject, FrameStats, Framebuffer, PreparedScene, RenderTarget,
+};
+use crate::scene::Camera;
 use crate::scene::{BumpSource, Material, Scene, Texturing};
 use crate::surface::{Frame, Surface};
 use crate::texture::{Footprint, Mapping, SurfacePoint, SurfaceUv, Texel, Wrap};
@@ -666,6 +669,12 @@ fn single_object(fragments: &[Fragment]) -> Option<u32> {
         .iter()
         .all(|f| f.object == object)
         .then_some(object)
+}
+
+/// Renders a lit frame, shaded as the scene asks, on the current rayon pool.
+pub fn render_lit(prepared: &PreparedScene, target: &RenderTarget) -> (Framebuffer, FrameStats) {
+    let shader = LitShader::new(&prepared.scene, target.camera);
+    crate::raster::render_with(prepared, target, &shader)
 }
 
 #[cfg(test)]

@@ -4,10 +4,11 @@
 use super::contrast::contrast_mask;
 use super::samples::Supersampling;
 use crate::raster::{
-    Blend, Camera, FragmentShader, FrameStats, Framebuffer, ImageWindow, Interpolation,
-    PreparedScene, RefineRule, Refinement, RenderTarget, ScreenTriangle, Srgb8Strips, TILE_SIZE,
-    Viewport, render_into, render_passes_into, render_refining_passes_into,
+    Blend, FragmentShader, FrameStats, Framebuffer, ImageWindow, Interpolation, PreparedScene,
+    RefineRule, Refinement, RenderTarget, ScreenTriangle, Srgb8Strips, TILE_SIZE, Viewport,
+    render_into, render_passes_into, render_refining_passes_into,
 };
+use crate::scene::Camera;
 use glam::{Vec2, Vec3};
 use std::ops::Range;
 

@@ -5,7 +5,7 @@
 use super::samples::{MAX_SAMPLES, ResolveFilter, Supersampling};
 use crate::Error;
 use crate::quality::Quality;
-use crate::raster::Camera;
+use crate::scene::Camera;
 use crate::scene::exact_arrays::exact;
 use crate::scene::{
     BindingFile, BumpSource, CameraFile, Direction, FieldOfView, Finite, LightFile, Material,

@@ -8,7 +8,7 @@ use super::view_mode::ViewMode;
 use crate::Error;
 use crate::export::{StillFormat, StillRequest, write_png, write_still};
 use crate::quality::Quality;
-use crate::raster::Camera;
+use crate::scene::Camera;
 use crate::scene::Scene;
 use crate::still::{Recipe, ResolveFilter, StillSettings};
 use std::path::{Path, PathBuf};

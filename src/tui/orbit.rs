@@ -1,7 +1,7 @@
 //! The camera as an orbit around its target: yaw and pitch about the world up axis, a distance,
 //! and a target that pans in the view plane.
 
-use crate::raster::Camera;
+use crate::scene::Camera;
 use glam::{DVec3, Vec3};
 
 /// Pitch stays short of the poles, where yaw would lose its meaning and the view would flip.

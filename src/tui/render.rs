@@ -5,7 +5,8 @@ use super::resample::resample_to_srgb;
 use super::view_mode::{RenderedFrame, ViewMode, render_view_mode};
 use super::wireframe::draw_wireframe;
 use crate::quality::Quality;
-use crate::raster::{Camera, Framebuffer, PreparedScene, Viewport};
+use crate::raster::{Framebuffer, PreparedScene, Viewport};
+use crate::scene::Camera;
 use crate::term::{CellGrid, EncodeOptions, GlyphSet, Picture, encode};
 use glam::Vec3;
 

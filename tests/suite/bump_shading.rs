@@ -1,7 +1,8 @@
 //! Bump mapping and textures as the renderer applies them: properties of whole frames.
 
-use bumpwork::raster::{Framebuffer, PreparedScene, RenderTarget, Viewport, render};
+use bumpwork::raster::{Framebuffer, PreparedScene, RenderTarget, Viewport};
 use bumpwork::scene::{Light, Scene, parse_scene, preset};
+use bumpwork::shade::render_lit;
 use bumpwork::surface::Tessellation;
 use glam::{DVec3, Vec3};
 
@@ -11,7 +12,7 @@ fn frame(scene: Scene, width: u32, height: u32) -> (Framebuffer, bumpwork::raste
     let camera = scene.camera.clone();
     let prepared = PreparedScene::new(scene, Tessellation { density: 32 });
     let target = RenderTarget::new(&camera, Viewport { width, height });
-    render(&prepared, &target)
+    render_lit(&prepared, &target)
 }
 
 fn temp_dir(name: &str) -> TestDir {

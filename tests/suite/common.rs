@@ -2,10 +2,11 @@
 #![allow(dead_code)]
 
 use bumpwork::raster::{
-    Camera, ClipVertex, Fragment, FrameObject, Framebuffer, Interpolation, PerFragment, PixelRect,
+    ClipVertex, Fragment, FrameObject, Framebuffer, Interpolation, PerFragment, PixelRect,
     PreparedScene, RenderTarget, SampleShift, ScreenTriangle, ShiftSpan, TrianglePlanes, Viewport,
     render_with, scan_shifted,
 };
+use bumpwork::scene::Camera;
 use bumpwork::scene::Scene;
 use bumpwork::surface::Tessellation;
 use glam::{Vec2, Vec3, Vec4};

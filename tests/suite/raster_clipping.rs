@@ -3,7 +3,8 @@
 //! per-pixel ray cast of the exact surfaces.
 
 use crate::common::*;
-use bumpwork::raster::{Camera, Framebuffer, Interpolation, Viewport};
+use bumpwork::raster::{Framebuffer, Interpolation, Viewport};
+use bumpwork::scene::Camera;
 use bumpwork::scene::{Material, Object, Scene};
 use bumpwork::surface::{Plane, Sphere, Surface};
 use glam::{DVec3, Vec2, Vec3};

@@ -1,8 +1,9 @@
 //! Extremes: zero-area triangles, 1×1 and 1×N outputs, scenes translated by 1e6.
 
 use crate::common::*;
-use bumpwork::raster::{Framebuffer, PreparedScene, RenderTarget, Viewport, render};
+use bumpwork::raster::{Framebuffer, PreparedScene, RenderTarget, Viewport};
 use bumpwork::scene::{Light, PRESET_NAMES, Scene, preset};
+use bumpwork::shade::render_lit;
 use bumpwork::surface::{Surface, Tessellation};
 use glam::DVec3;
 
@@ -10,7 +11,7 @@ fn render_scene(scene: Scene, viewport: Viewport) -> Framebuffer {
     let camera = scene.camera.clone();
     let prepared = PreparedScene::new(scene, Tessellation { density: 16 });
     let target = RenderTarget::new(&camera, viewport);
-    render(&prepared, &target).0
+    render_lit(&prepared, &target).0
 }
 
 #[test]

@@ -5,11 +5,12 @@
 
 use bumpwork::raster::{
     Blend, Framebuffer, ImageWindow, PreparedScene, RefineRule, Refinement, RenderTarget,
-    STRIP_ROWS, Srgb8Strips, Viewport, render, render_into, render_passes_into,
+    STRIP_ROWS, Srgb8Strips, Viewport, render_into, render_passes_into,
     render_refining_passes_into,
 };
 use bumpwork::scene::{Scene, preset};
 use bumpwork::shade::LitShader;
+use bumpwork::shade::render_lit;
 use bumpwork::surface::Tessellation;
 use glam::{DVec3, Vec2, Vec3};
 use std::sync::Mutex;
@@ -36,7 +37,7 @@ fn far_sphere(background: Vec3) -> PreparedScene {
 }
 
 fn fresh(prepared: &PreparedScene, viewport: Viewport) -> Framebuffer {
-    render(
+    render_lit(
         prepared,
         &RenderTarget::new(&prepared.scene.camera, viewport),
     )

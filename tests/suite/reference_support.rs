@@ -1,8 +1,9 @@
 //! Helpers shared by the reference renderer's tests: render a scene both ways, compare.
 #![allow(dead_code)]
 
-use bumpwork::raster::{Camera, Framebuffer, PreparedScene, RenderTarget, Viewport, render_with};
+use bumpwork::raster::{Framebuffer, PreparedScene, RenderTarget, Viewport, render_with};
 use bumpwork::reference::{FrameError, ShadedAndNormals, render_reference};
+use bumpwork::scene::Camera;
 use bumpwork::scene::Scene;
 use bumpwork::shade::LitShader;
 use bumpwork::surface::Tessellation;

@@ -2,9 +2,10 @@
 //! streamed in bands matches the same still rendered whole, and no value is lost or made up.
 
 use bumpwork::raster::{
-    Camera, Fragment, FrameObject, FrameStats, Framebuffer, ImageWindow, Interpolation,
-    PerFragment, PreparedScene, RenderTarget, Viewport, render_with,
+    Fragment, FrameObject, FrameStats, Framebuffer, ImageWindow, Interpolation, PerFragment,
+    PreparedScene, RenderTarget, Viewport, render_with,
 };
+use bumpwork::scene::Camera;
 use bumpwork::scene::{Material, Object, Scene};
 use bumpwork::still::{
     BandBuffers, BandJob, ResolveFilter, RowSink, Supersampling, render_supersampled, stream_still,
