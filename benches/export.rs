@@ -14,7 +14,7 @@ use bumpwork::measure::Timing;
 use bumpwork::quality::Quality;
 use bumpwork::raster::{PreparedScene, RenderTarget, Viewport};
 use bumpwork::scene::{BindingFile, MappingKind, load_scene_file, preset_file};
-use bumpwork::shade::ViewMode;
+use bumpwork::shade::ShaderMode;
 use bumpwork::shade::render_lit;
 use bumpwork::still::{Recipe, ResolveFilter, StillSettings};
 use bumpwork::surface::Tessellation;
@@ -50,7 +50,7 @@ fn settings(samples: u32) -> StillSettings {
         },
         resolve: ResolveFilter::default(),
         time: 0.0,
-        mode: ViewMode::Shaded,
+        mode: ShaderMode::Shaded,
     }
 }
 

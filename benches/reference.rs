@@ -7,7 +7,7 @@
 use bumpwork::raster::{Framebuffer, PreparedScene, RenderTarget, Viewport, render_with};
 use bumpwork::reference::{FrameError, frame_error, render_reference};
 use bumpwork::scene::{PRESET_NAMES, Scene, preset};
-use bumpwork::shade::{LitShader, ViewMode};
+use bumpwork::shade::{LitShader, ShaderMode};
 use bumpwork::surface::Tessellation;
 use std::time::{Duration, Instant};
 
@@ -33,7 +33,7 @@ struct Measured {
 fn render_pair(
     scene: &Scene,
     density: u32,
-    mode: ViewMode,
+    mode: ShaderMode,
 ) -> (Framebuffer, Framebuffer, [Duration; 2]) {
     let prepared = PreparedScene::new(scene.clone(), Tessellation { density });
     let mut shader = LitShader::new(scene, &scene.camera);
@@ -49,8 +49,8 @@ fn render_pair(
 
 fn measure(scene: &Scene, density: u32) -> Measured {
     let (raster, reference, [raster_time, reference_time]) =
-        render_pair(scene, density, ViewMode::Shaded);
-    let (normals, normals_reference, _) = render_pair(scene, density, ViewMode::Normals);
+        render_pair(scene, density, ShaderMode::Shaded);
+    let (normals, normals_reference, _) = render_pair(scene, density, ShaderMode::Normals);
     Measured {
         error: frame_error(&raster, &reference, &normals, &normals_reference),
         raster_time,

@@ -8,7 +8,7 @@
 use std::hint::black_box;
 use std::time::Instant;
 
-use bumpwork::texture::{Filter, Footprint, Raster, Sampler, Texel, Texture, Wrap};
+use bumpwork::texture::{Filter, Footprint, Sampler, Texel, TexelGrid, Texture, Wrap};
 use glam::{Mat2, Vec2};
 
 const SIDE: u32 = 2048;
@@ -23,7 +23,7 @@ fn noise_texture() -> Texture {
         state ^= state << 5;
         (state >> 8) as f32 / (1 << 24) as f32
     };
-    Texture::from_raster(Raster::from_fn(SIDE, SIDE, |_, _| {
+    Texture::from_raster(TexelGrid::from_fn(SIDE, SIDE, |_, _| {
         Texel::new(next(), next(), next(), 1.0)
     }))
 }

@@ -9,7 +9,7 @@ use bumpwork::scene::{
     BindingFile, ImageTexture, Light, MappingKind, Material, Object, Scene, Texturing,
     load_scene_file, preset_file,
 };
-use bumpwork::shade::ViewMode;
+use bumpwork::shade::ShaderMode;
 use bumpwork::still::{ResolveFilter, StillSettings};
 use bumpwork::surface::{Sphere, Surface};
 use bumpwork::texture::{Filter, ImageCache, Mapping, Sampler, Spherical, Texture, Wrap};
@@ -126,7 +126,7 @@ pub fn pov_peer_settings(samples: u32, adaptive_samples: Option<f32>) -> StillSe
         },
         resolve: ResolveFilter::Box,
         time: 0.0,
-        mode: ViewMode::Shaded,
+        mode: ShaderMode::Shaded,
     }
 }
 

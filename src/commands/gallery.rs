@@ -9,7 +9,7 @@ use bumpwork::export::{
     read_png_rgb8, write_still,
 };
 use bumpwork::quality::Quality;
-use bumpwork::shade::ViewMode;
+use bumpwork::shade::ShaderMode;
 use bumpwork::still::{MAX_SAMPLES, Recipe, ResolveFilter, StillSettings};
 use std::path::{Path, PathBuf};
 
@@ -126,7 +126,7 @@ fn render_scene(
         },
         resolve: ResolveFilter::default(),
         time: 0.0,
-        mode: ViewMode::Shaded,
+        mode: ShaderMode::Shaded,
     };
     let prepared = settings.prepare(scene, &camera)?;
     let recipe = Recipe::capture(name, &prepared.scene, &camera, &settings);

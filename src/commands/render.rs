@@ -10,7 +10,7 @@ use bumpwork::export::{
 };
 use bumpwork::quality::Quality;
 use bumpwork::scene::Scene;
-use bumpwork::shade::ViewMode;
+use bumpwork::shade::ShaderMode;
 use bumpwork::still::{
     MAX_DENSITY, MAX_SAMPLES, MAX_TIME_SECONDS, Recipe, ResolveFilter, StillSettings,
 };
@@ -167,7 +167,7 @@ fn from_source(name: &str) -> Result<Start, Error> {
             quality: Quality::default(),
             resolve: ResolveFilter::default(),
             time: 0.0,
-            mode: ViewMode::Shaded,
+            mode: ShaderMode::Shaded,
         },
         scene,
     })
@@ -255,7 +255,7 @@ fn override_settings(base: StillSettings, args: &RenderArgs) -> StillSettings {
         mode: args
             .mode
             .as_deref()
-            .and_then(|m| ViewMode::ALL.into_iter().find(|v| v.name() == m))
+            .and_then(|m| ShaderMode::ALL.into_iter().find(|v| v.name() == m))
             .unwrap_or(base.mode),
     }
 }
@@ -333,7 +333,7 @@ fn render_one(
 }
 
 fn mode_names() -> Vec<&'static str> {
-    ViewMode::ALL.iter().map(|m| m.name()).collect()
+    ShaderMode::ALL.iter().map(|m| m.name()).collect()
 }
 
 fn parse_time(text: &str) -> Result<f64, String> {

@@ -403,7 +403,7 @@ mod tests {
             t: 2.5,
             precision: Precision::Fastest,
         };
-        for (name, source) in super::super::builtin::BUILTINS {
+        for (name, source) in super::super::shipped::BUILTINS {
             let pattern = super::super::Pattern::compile(source, name).expect("a shipped pattern");
             let program = &pattern.inner.program;
             both_builds::<f64>(program, &inputs);

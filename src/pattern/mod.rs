@@ -16,7 +16,6 @@
 //! and gradient 0, colour black. Every `eval_*` returns how many there were.
 
 mod ast;
-mod builtin;
 mod check;
 mod compile;
 mod dual;
@@ -30,19 +29,20 @@ mod ops;
 mod output;
 mod parser;
 mod real;
+mod shipped;
 
 use crate::bounded_read::ReadFailure;
 use std::path::Path;
 use std::sync::Arc;
 
 pub use ast::OutputKind;
-pub use builtin::{BUILTINS, builtin};
 pub use check::Param;
 pub use error::PatternError;
 pub use eval::{CHUNK, Inputs, Scratch};
 pub use output::BumpSample;
 pub use parser::MAX_DEPTH;
 pub use real::Precision;
+pub use shipped::{BUILTINS, builtin};
 
 use check::Input;
 use compile::Program;

@@ -339,7 +339,7 @@ pub struct TileFrame<'a, S> {
 /// fragment: the fragments' writes might have changed it, for all the compiler knew).
 #[derive(Clone, Copy)]
 struct FragmentMaker {
-    t: TrianglePlanes,
+    t: FragmentPlanes,
     y: u32,
     perspective: bool,
     /// Whether the shader reads the (u,v) derivatives (see `TileFrame::derivatives`).
@@ -349,7 +349,7 @@ struct FragmentMaker {
 
 /// What a fragment reads of its triangle.
 #[derive(Clone, Copy)]
-struct TrianglePlanes {
+struct FragmentPlanes {
     object: u32,
     origin: Vec2,
     inv_w: AttributePlane,
@@ -361,7 +361,7 @@ impl FragmentMaker {
     #[inline(always)]
     fn new<S>(t: &ScreenTriangle, frame: &TileFrame<S>, y: u32) -> FragmentMaker {
         FragmentMaker {
-            t: TrianglePlanes {
+            t: FragmentPlanes {
                 object: t.object,
                 origin: sample_origin(t.origin, &frame.shift),
                 inv_w: t.inv_w,

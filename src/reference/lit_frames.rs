@@ -1,6 +1,6 @@
 use super::metrics::{FrameError, frame_error};
 use crate::raster::Framebuffer;
-use crate::shade::{LitShader, ViewMode};
+use crate::shade::{LitShader, ShaderMode};
 
 /// The two frames the error metrics need from one renderer: as configured, and the normals view.
 pub struct ShadedAndNormals {
@@ -10,13 +10,13 @@ pub struct ShadedAndNormals {
 
 impl ShadedAndNormals {
     /// Renders with `render` (the rasterizer or the reference, any quality setting) once with the
-    /// shader as it is and once in `ViewMode::Normals`, then restores the shader's mode.
+    /// shader as it is and once in `ShaderMode::Normals`, then restores the shader's mode.
     pub fn render(
         shader: &mut LitShader,
         mut render: impl FnMut(&LitShader) -> Framebuffer,
     ) -> ShadedAndNormals {
         let shaded = render(shader);
-        let mode = std::mem::replace(&mut shader.mode, ViewMode::Normals);
+        let mode = std::mem::replace(&mut shader.mode, ShaderMode::Normals);
         let normals = render(shader);
         shader.mode = mode;
         ShadedAndNormals { shaded, normals }

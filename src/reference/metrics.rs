@@ -1,7 +1,7 @@
 //! Error of a frame against the reference frame of the same scene and camera.
 //!
 //! Colour errors are measured on what is displayed: 8-bit sRGB, in steps of 1/255. Normal errors
-//! come from two frames rendered with `ViewMode::Normals` (n·0.5 + 0.5 in linear light, decoded
+//! come from two frames rendered with `ShaderMode::Normals` (n·0.5 + 0.5 in linear light, decoded
 //! exactly). Coverage is a finite depth.
 
 use crate::raster::{Framebuffer, linear_to_srgb8};
@@ -22,7 +22,7 @@ pub struct FrameError {
 }
 
 /// All figures at once: `shaded` frames for colour and coverage, `normals` frames (rendered with
-/// `ViewMode::Normals`) for the normal angles.
+/// `ShaderMode::Normals`) for the normal angles.
 pub fn frame_error(
     shaded: &Framebuffer,
     shaded_reference: &Framebuffer,

@@ -1,16 +1,17 @@
 //! What is drawn: surfaces with materials, lights and a camera, from a TOML file or a preset.
 
 mod binding_file;
+mod by_name;
 mod camera;
 pub mod dependencies;
 pub(crate) mod exact_arrays;
 mod file;
 mod material;
 mod presets;
-mod source;
 pub(crate) mod user_words;
 
 pub use binding_file::{BindingFile, FilterFile, MappingKind, WrapFile};
+pub use by_name::{load_source, source_text};
 pub use file::{
     CameraFile, Direction, FieldOfView, Finite, LightFile, MAX_SCENE_FILE_BYTES, Point, Positive,
     SceneFile, load_scene_file, parse_scene, parse_scene_in,
@@ -19,7 +20,6 @@ pub use material::{
     Bump, BumpSource, ImageHeight, ImageTexture, Material, PatternBinding, Placement, Texturing,
 };
 pub use presets::{PRESET_NAMES, preset, preset_file};
-pub use source::{load_source, source_text};
 
 use crate::surface::Surface;
 pub use camera::Camera;

@@ -8,13 +8,13 @@ mod lanes;
 mod lighting;
 mod pattern_batch;
 mod scene_shader;
+mod shader_mode;
 mod vertex_normals;
-mod view_mode;
 
 pub use bake::{bake_color, bake_height};
 pub use bump::{NormalForm, bumped_normal};
 pub use gradient::GradientMethod;
 pub use lighting::{FrameLights, blinn_phong, facing_sign};
 pub use scene_shader::{LitShader, ShadeScratch, render_lit};
+pub use shader_mode::ShaderMode;
 pub use vertex_normals::{Interpolated, VertexNormals};
-pub use view_mode::ViewMode;

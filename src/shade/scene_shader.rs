@@ -6,8 +6,8 @@ use super::bump::{NormalForm, blinn_normals, blinn_normals_on_flat, bumped_norma
 use super::gradient::{GradientMethod, central_difference, shifted_fragments};
 use super::lighting::{FrameLights, blinn_phong_many, facing_sign};
 use super::pattern_batch::{PatternBatch, Sites};
+use super::shader_mode::ShaderMode;
 use super::vertex_normals::VertexNormals;
-use super::view_mode::ViewMode;
 use crate::pattern::{OutputKind, Precision};
 use crate::raster::{
     Fragment, FragmentShader, FrameObject, FrameStats, Framebuffer, PreparedScene, RenderTarget,
@@ -26,7 +26,7 @@ pub struct LitShader {
     pub lights: FrameLights,
     /// Seconds, for animated patterns and scrolling images.
     pub time: f64,
-    pub mode: ViewMode,
+    pub mode: ShaderMode,
     pub normal_form: NormalForm,
     pub gradient: GradientMethod,
     pub pattern_precision: Precision,
@@ -42,7 +42,7 @@ impl LitShader {
         LitShader {
             lights: FrameLights::new(scene.ambient, &scene.lights, camera.eye),
             time: 0.0,
-            mode: ViewMode::Shaded,
+            mode: ShaderMode::Shaded,
             normal_form: NormalForm::Blinn,
             gradient: GradientMethod::Exact,
             pattern_precision: Precision::Fastest,
@@ -188,7 +188,7 @@ impl LitShader {
         }
         let mut flattened = self.base_colors(object, fragments, group, scratch);
         flattened += self.bump_gradients(object, fragments, group, scratch);
-        if self.mode == ViewMode::Shaded && material.bump.is_none() {
+        if self.mode == ShaderMode::Shaded && material.bump.is_none() {
             // The frames' own points and normals, read straight into the lighting's lanes.
             let (frames, origin) = (&scratch.frames, object.origin);
             let surface = |range: Range<usize>| {
@@ -202,7 +202,7 @@ impl LitShader {
             return flattened;
         }
         self.lighting_inputs(object, fragments, group, scratch);
-        if self.mode == ViewMode::Shaded {
+        if self.mode == ShaderMode::Shaded {
             let (points, normals) = (&scratch.points, &scratch.normals);
             let surface = |range: Range<usize>| {
                 let points = points[range.clone()].iter().copied();
@@ -294,11 +294,11 @@ impl LitShader {
     /// What a view mode other than `Shaded` shows at a fragment.
     fn view_colour(&self, fragment: &Fragment, normal: Vec3, height: f32) -> Vec3 {
         match self.mode {
-            ViewMode::Shaded => unreachable!("shaded fragments are lit as a batch"),
-            ViewMode::Height => Vec3::splat(0.5 + 0.5 * (height * 0.2).tanh()),
-            ViewMode::Normals => normal * 0.5 + Vec3::splat(0.5),
-            ViewMode::Uv => (fragment.uv / 30.0).fract_gl().extend(0.0),
-            ViewMode::Depth => Vec3::splat((-fragment.depth / self.depth_scale).exp2()),
+            ShaderMode::Shaded => unreachable!("shaded fragments are lit as a batch"),
+            ShaderMode::Height => Vec3::splat(0.5 + 0.5 * (height * 0.2).tanh()),
+            ShaderMode::Normals => normal * 0.5 + Vec3::splat(0.5),
+            ShaderMode::Uv => (fragment.uv / 30.0).fract_gl().extend(0.0),
+            ShaderMode::Depth => Vec3::splat((-fragment.depth / self.depth_scale).exp2()),
         }
     }
 
@@ -683,7 +683,7 @@ mod tests {
     use crate::raster::{PreparedScene, RenderTarget, Viewport, frame_objects, render_with};
     use crate::scene::{ImageTexture, preset};
     use crate::surface::Tessellation;
-    use crate::texture::{Filter, Raster, Sampler, Texture};
+    use crate::texture::{Filter, Sampler, TexelGrid, Texture};
 
     /// `LitShader` with every fragment's derivatives computed (the trait's default).
     struct AllDerivatives<'a>(&'a LitShader);
@@ -709,7 +709,7 @@ mod tests {
     /// A 64×64 checkerboard of 4-texel squares: its mip levels differ, so a footprint changes
     /// what a trilinear filter reads.
     fn checkerboard(filter: Filter) -> Texturing {
-        let texels = Raster::from_fn(64, 64, |x, y| {
+        let texels = TexelGrid::from_fn(64, 64, |x, y| {
             let bright = (x / 4 + y / 4) % 2 == 0;
             Texel::new(0.9, 0.2, 0.1, 1.0) * if bright { 1.0 } else { 0.2 }
         });

@@ -11,7 +11,7 @@ use crate::scene::{
     BindingFile, BumpSource, CameraFile, Direction, FieldOfView, Finite, LightFile, Material,
     PatternBinding, Point, Positive, Scene, Texturing,
 };
-use crate::shade::{GradientMethod, ViewMode};
+use crate::shade::{GradientMethod, ShaderMode};
 use crate::texture::ImageCache;
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
@@ -92,7 +92,7 @@ pub struct StillSettings {
     /// How the samples of a pixel are resolved.
     pub resolve: ResolveFilter,
     pub time: f64,
-    pub mode: ViewMode,
+    pub mode: ShaderMode,
 }
 
 impl StillSettings {
@@ -197,7 +197,7 @@ impl Recipe {
         }
         let filter = ResolveFilter::parse(&self.filter)
             .ok_or_else(|| format!("unknown filter '{}'", self.filter))?;
-        let mode = ViewMode::ALL
+        let mode = ShaderMode::ALL
             .into_iter()
             .find(|m| m.name() == self.mode)
             .ok_or_else(|| format!("unknown view mode '{}'", self.mode))?;

@@ -8,8 +8,8 @@ use super::encoding::Encoding;
 use super::error::TextureError;
 use super::load::{ImageInfo, Limits, LoadedImage, load_image};
 use super::mip::MipChain;
-use super::raster::Raster;
 use super::sampler::{Footprint, Sampler};
+use super::texel_grid::TexelGrid;
 
 /// One texel: linear-light RGB with premultiplied alpha, `f32` per channel.
 ///
@@ -47,7 +47,7 @@ impl Texture {
     }
 
     /// A texture from texels already in linear light.
-    pub fn from_raster(texels: Raster<Texel>) -> Self {
+    pub fn from_raster(texels: TexelGrid<Texel>) -> Self {
         Self {
             chain: MipChain::build(texels),
             info: None,

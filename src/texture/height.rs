@@ -9,8 +9,8 @@ use super::encoding::Encoding;
 use super::error::TextureError;
 use super::load::{Limits, load_image};
 use super::mip::MipChain;
-use super::raster::Raster;
 use super::sampler::Footprint;
+use super::texel_grid::TexelGrid;
 use super::wrap::{Wrap, floor};
 
 /// Rec. 709 luma weights, applied to the stored values.
@@ -72,11 +72,11 @@ impl HeightMap {
     }
 
     /// Heights from the luma of linear-encoded texels (transparent areas sink to 0).
-    pub fn from_texels(texels: &Raster<Texel>) -> Self {
+    pub fn from_texels(texels: &TexelGrid<Texel>) -> Self {
         Self::from_heights(texels.map(|t| t.truncate().dot(LUMA)))
     }
 
-    pub fn from_heights(heights: Raster<f32>) -> Self {
+    pub fn from_heights(heights: TexelGrid<f32>) -> Self {
         Self {
             chain: MipChain::build(heights),
         }
@@ -122,7 +122,7 @@ impl HeightMap {
 /// Catmull-Rom on a 4×4 neighbourhood, with the derivatives of its weights. The four rows
 /// are weighted into one column sum (and its slope along t) four lanes at a time, then the
 /// columns are weighted along s: three dot products instead of sixteen scalar taps.
-fn bicubic(level: &Raster<f32>, st: Vec2, wrap_s: Wrap, wrap_t: Wrap) -> HeightSample {
+fn bicubic(level: &TexelGrid<f32>, st: Vec2, wrap_s: Wrap, wrap_t: Wrap) -> HeightSample {
     let (x, fx) = first_tap(wrap_s, st.x, level.width());
     let (y, fy) = first_tap(wrap_t, st.y, level.height());
     let (wy, dy) = (catmull_rom(fy), catmull_rom_slope(fy));
@@ -153,7 +153,7 @@ fn first_tap(wrap: Wrap, s: f32, n: u32) -> (i32, f32) {
 
 /// Texels `x .. x + 4` of row `y`, wrapped; away from the edges one unaligned load.
 #[inline(always)]
-fn row_taps(level: &Raster<f32>, wrap: Wrap, x: i32, y: u32) -> Vec4 {
+fn row_taps(level: &TexelGrid<f32>, wrap: Wrap, x: i32, y: u32) -> Vec4 {
     let row = level.row(y);
     let n = level.width();
     match usize::try_from(x) {
@@ -232,7 +232,12 @@ mod tests {
     }
 
     /// The sixteen taps one at a time, as the weights define the reconstruction.
-    fn bicubic_by_taps(level: &Raster<f32>, st: Vec2, wrap_s: Wrap, wrap_t: Wrap) -> HeightSample {
+    fn bicubic_by_taps(
+        level: &TexelGrid<f32>,
+        st: Vec2,
+        wrap_s: Wrap,
+        wrap_t: Wrap,
+    ) -> HeightSample {
         let (x, fx) = first_tap(wrap_s, st.x, level.width());
         let (y, fy) = first_tap(wrap_t, st.y, level.height());
         let (wx, dx) = (catmull_rom(fx), catmull_rom_slope(fx));
@@ -255,7 +260,7 @@ mod tests {
 
     #[test]
     fn vectorised_taps_agree_with_tap_by_tap_sums_across_every_edge() {
-        let level = Raster::from_fn(7, 5, |x, y| ((x * 13 + y * 29) % 11) as f32 / 10.0);
+        let level = TexelGrid::from_fn(7, 5, |x, y| ((x * 13 + y * 29) % 11) as f32 / 10.0);
         let wraps = [Wrap::Repeat, Wrap::Clamp, Wrap::Mirror];
         let mut checked = 0;
         for k in 0..4000 {
@@ -281,7 +286,7 @@ mod tests {
 
     #[test]
     fn slope_matches_finite_differences_of_height() {
-        let map = HeightMap::from_heights(Raster::from_fn(8, 8, |x, y| {
+        let map = HeightMap::from_heights(TexelGrid::from_fn(8, 8, |x, y| {
             ((x * 7 + y * 3) % 5) as f32 / 4.0
         }));
         let (s, t, e) = (0.41, 0.57, 1e-3);

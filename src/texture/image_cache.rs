@@ -2,10 +2,10 @@
 //! the same bytes, share one decoded copy, and all of them together stay within the memory
 //! budget (each is checked from its header against what is left before it is decoded).
 
-use super::builtin::builtin_bytes;
 use super::encoding::Encoding;
 use super::error::TextureError;
 use super::load::{Limits, decode_image, read_file};
+use super::shipped_images::builtin_bytes;
 use super::{HeightMap, Texture};
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};

@@ -14,7 +14,7 @@ use super::colour::Texel;
 use super::encoding::Encoding;
 use super::error::{Reason, TextureError};
 use super::plain_pnm;
-use super::raster::Raster;
+use super::texel_grid::TexelGrid;
 
 /// Bounds on what a file may make us allocate. All are checked from the header.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -86,7 +86,7 @@ impl std::fmt::Display for ImageInfo {
 #[derive(Debug, Clone)]
 pub struct LoadedImage {
     pub info: ImageInfo,
-    pub texels: Raster<Texel>,
+    pub texels: TexelGrid<Texel>,
 }
 
 /// Validates `path` exactly as the renderer loads it, keeping only the description.
@@ -287,7 +287,7 @@ fn format_name(format: ImageFormat) -> &'static str {
 
 /// Converts to premultiplied linear RGBA (see `Texel`); grey is replicated to RGB.
 /// Every colour file is taken as sRGB: PNG gAMA/iCCP chunks are not applied.
-fn to_linear_texels(image: &DynamicImage, encoding: Encoding) -> Raster<Texel> {
+fn to_linear_texels(image: &DynamicImage, encoding: Encoding) -> TexelGrid<Texel> {
     let (width, height) = (image.width(), image.height());
     let channels = usize::from(image.color().channel_count());
     let texels = match image {
@@ -308,7 +308,7 @@ fn to_linear_texels(image: &DynamicImage, encoding: Encoding) -> Raster<Texel> {
             convert(rgba.as_raw(), 4, |c| encoding.decode(c), |a| a)
         }
     };
-    Raster::new(width, height, texels).expect("decoder output matches its dimensions")
+    TexelGrid::new(width, height, texels).expect("decoder output matches its dimensions")
 }
 
 fn unit_u8(code: u8) -> f32 {

@@ -214,12 +214,12 @@ impl TextureMapping for TriangleMap {
 /// An orthonormal frame: the axis (local y) and the direction of the image's centre
 /// (local z); longitude is measured from z toward x.
 #[derive(Debug, Clone, Copy, PartialEq)]
-struct Frame {
+struct AxisFrame {
     centre: Vec3,
     to_local: Mat3,
 }
 
-impl Frame {
+impl AxisFrame {
     fn new(centre: Vec3, axis: Vec3, front: Vec3) -> Option<Self> {
         let y = axis.try_normalize()?;
         let z = (front - y * y.dot(front)).try_normalize()?;
@@ -259,14 +259,14 @@ fn longitude(local: Vec3, rho: f32) -> (f32, Vec3) {
 /// `Wrap::Repeat` on s; use `Wrap::Clamp` on t.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Spherical {
-    frame: Frame,
+    frame: AxisFrame,
 }
 
 impl Spherical {
     /// Pole along +y, image centre facing +z (toward a default camera).
     pub fn new(centre: Vec3) -> Self {
         Self {
-            frame: Frame {
+            frame: AxisFrame {
                 centre,
                 to_local: Mat3::IDENTITY,
             },
@@ -275,7 +275,7 @@ impl Spherical {
 
     /// `None` if `axis` is zero or parallel to `front`.
     pub fn oriented(centre: Vec3, axis: Vec3, front: Vec3) -> Option<Self> {
-        Frame::new(centre, axis, front).map(|frame| Self { frame })
+        AxisFrame::new(centre, axis, front).map(|frame| Self { frame })
     }
 
     /// Whether this is `Spherical::new(Vec3::ZERO)`: centred on the surface's anchor, pole
@@ -317,7 +317,7 @@ impl TextureMapping for Spherical {
 /// axis, where the Jacobian is held finite).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Cylindrical {
-    frame: Frame,
+    frame: AxisFrame,
     height: f32,
 }
 
@@ -325,7 +325,7 @@ impl Cylindrical {
     /// Axis +y from `base`, image centre facing +z.
     pub fn new(base: Vec3, height: f32) -> Self {
         Self {
-            frame: Frame {
+            frame: AxisFrame {
                 centre: base,
                 to_local: Mat3::IDENTITY,
             },
@@ -335,7 +335,7 @@ impl Cylindrical {
 
     /// `None` if `axis` is zero or parallel to `front`.
     pub fn oriented(base: Vec3, axis: Vec3, front: Vec3, height: f32) -> Option<Self> {
-        Frame::new(base, axis, front).map(|frame| Self { frame, height })
+        AxisFrame::new(base, axis, front).map(|frame| Self { frame, height })
     }
 }
 

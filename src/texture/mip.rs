@@ -2,22 +2,22 @@
 
 use std::ops::{Add, Mul};
 
-use super::raster::Raster;
+use super::texel_grid::TexelGrid;
 
 /// What can be averaged: linear texels (`Vec4`) and heights (`f32`).
-pub trait Blend: Copy + Default + Add<Output = Self> + Mul<f32, Output = Self> {}
-impl<T: Copy + Default + Add<Output = T> + Mul<f32, Output = T>> Blend for T {}
+pub trait Averageable: Copy + Default + Add<Output = Self> + Mul<f32, Output = Self> {}
+impl<T: Copy + Default + Add<Output = T> + Mul<f32, Output = T>> Averageable for T {}
 
 /// Levels from full size (0) to 1×1. Sides halve rounding down, never below 1, so
 /// non-power-of-two and 1×N images work; odd sides use exact fractional box weights,
 /// which keeps every level's average equal to the image's.
 #[derive(Debug, Clone)]
 pub struct MipChain<T> {
-    levels: Vec<Raster<T>>,
+    levels: Vec<TexelGrid<T>>,
 }
 
-impl<T: Blend> MipChain<T> {
-    pub fn build(base: Raster<T>) -> Self {
+impl<T: Averageable> MipChain<T> {
+    pub fn build(base: TexelGrid<T>) -> Self {
         let mut levels = vec![base];
         while let Some(next) = levels.last().and_then(downsample) {
             levels.push(next);
@@ -25,17 +25,17 @@ impl<T: Blend> MipChain<T> {
         Self { levels }
     }
 
-    pub fn levels(&self) -> &[Raster<T>] {
+    pub fn levels(&self) -> &[TexelGrid<T>] {
         &self.levels
     }
 
-    pub fn base(&self) -> &Raster<T> {
+    pub fn base(&self) -> &TexelGrid<T> {
         &self.levels[0]
     }
 
     /// `level` is clamped to the chain.
     #[inline]
-    pub fn level(&self, level: usize) -> &Raster<T> {
+    pub fn level(&self, level: usize) -> &TexelGrid<T> {
         &self.levels[level.min(self.levels.len() - 1)]
     }
 
@@ -51,14 +51,14 @@ impl<T: Blend> MipChain<T> {
 }
 
 /// The next level, or `None` once the raster is 1×1.
-fn downsample<T: Blend>(src: &Raster<T>) -> Option<Raster<T>> {
+fn downsample<T: Averageable>(src: &TexelGrid<T>) -> Option<TexelGrid<T>> {
     if src.width() == 1 && src.height() == 1 {
         return None;
     }
     let (w, h) = (half(src.width()), half(src.height()));
     let columns = box_taps(src.width(), w);
     let rows = box_taps(src.height(), h);
-    Some(Raster::from_fn(w, h, |x, y| {
+    Some(TexelGrid::from_fn(w, h, |x, y| {
         let mut sum = T::default();
         for &(j, wy) in &rows[y as usize] {
             for &(i, wx) in &columns[x as usize] {
@@ -97,13 +97,13 @@ fn box_taps(src: u32, dst: u32) -> Vec<Vec<(u32, f32)>> {
 mod tests {
     use super::*;
 
-    fn mean(raster: &Raster<f32>) -> f32 {
+    fn mean(raster: &TexelGrid<f32>) -> f32 {
         raster.texels().iter().sum::<f32>() / raster.texels().len() as f32
     }
 
     #[test]
     fn odd_sizes_keep_the_average_and_end_at_one_texel() {
-        let base = Raster::from_fn(7, 3, |x, y| (x * 3 + y * y) as f32);
+        let base = TexelGrid::from_fn(7, 3, |x, y| (x * 3 + y * y) as f32);
         let chain = MipChain::build(base.clone());
         let sizes: Vec<_> = chain
             .levels()
@@ -118,11 +118,11 @@ mod tests {
 
     #[test]
     fn one_by_n_and_one_by_one() {
-        let chain = MipChain::build(Raster::from_fn(1, 5, |_, y| y as f32));
+        let chain = MipChain::build(TexelGrid::from_fn(1, 5, |_, y| y as f32));
         assert_eq!(chain.levels().len(), 3);
         assert_eq!(chain.level(99).texels(), &[2.0]);
         assert_eq!(
-            MipChain::build(Raster::from_fn(1, 1, |_, _| 4.0))
+            MipChain::build(TexelGrid::from_fn(1, 1, |_, _| 4.0))
                 .levels()
                 .len(),
             1

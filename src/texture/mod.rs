@@ -14,7 +14,6 @@
 //!    linear premultiplied [`Texel`]; [`HeightMap::sample_gradient`] gives the height
 //!    and ∂h/∂s, ∂h/∂t, and [`HeightSample::surface_gradient`] Blinn's (B_u, B_v).
 
-mod builtin;
 mod colour;
 mod encoding;
 mod error;
@@ -24,12 +23,12 @@ mod load;
 mod mapping;
 mod mip;
 mod plain_pnm;
-mod raster;
 mod sample_batch;
 mod sampler;
+mod shipped_images;
+mod texel_grid;
 mod wrap;
 
-pub use builtin::BUILTIN_IMAGES;
 pub use colour::{Texel, Texture};
 pub use encoding::{Encoding, linear_to_srgb, srgb_to_linear};
 pub use error::{PrintableName, Reason, TextureError};
@@ -40,7 +39,8 @@ pub use mapping::{
     Cylindrical, Mapped, Mapping, Planar, PlanarLayout, Scroll, Spherical, SurfacePoint, SurfaceUv,
     TextureMapping, TriangleMap,
 };
-pub use mip::{Blend, MipChain};
-pub use raster::Raster;
+pub use mip::{Averageable, MipChain};
 pub use sampler::{Filter, Footprint, Sampler};
+pub use shipped_images::BUILTIN_IMAGES;
+pub use texel_grid::TexelGrid;
 pub use wrap::Wrap;

@@ -5,9 +5,9 @@
 
 use glam::Vec2;
 
-use super::mip::{Blend, MipChain};
-use super::raster::Raster;
+use super::mip::{Averageable, MipChain};
 use super::sampler::{Filter, Footprint, Sampler, lerp};
+use super::texel_grid::TexelGrid;
 use super::wrap::{Wrap, floor};
 
 /// Points whose taps are computed together.
@@ -15,7 +15,7 @@ const CHUNK: usize = 64;
 
 /// Whether `whole_to_i32` is exact for every tap of the level (sides below 2^20; the default
 /// image limits allow 16384).
-fn fits_taps<T: Copy>(level: &Raster<T>) -> bool {
+fn fits_taps<T: Copy>(level: &TexelGrid<T>) -> bool {
     level.width().max(level.height()) < 1 << 20
 }
 
@@ -30,7 +30,7 @@ impl Sampler {
     /// Samples `st[k]` into `out[k]` for every k (`out` as long as `st`). `footprints` is read
     /// only when the filter uses it (`Filter::uses_footprint`), and then holds one per point;
     /// otherwise it may be empty.
-    pub fn sample_many<T: Blend>(
+    pub fn sample_many<T: Averageable>(
         &self,
         chain: &MipChain<T>,
         st: &[Vec2],
@@ -76,7 +76,7 @@ impl Sampler {
     /// magnified (a close-up's common case) each sample is the base level's bilinear one, so the
     /// chunk takes the bilinear batch: the same bits, its taps vectorised.
     #[inline(always)]
-    fn trilinear_chunk<T: Blend>(
+    fn trilinear_chunk<T: Averageable>(
         &self,
         chain: &MipChain<T>,
         st: &[Vec2],
@@ -95,7 +95,7 @@ impl Sampler {
 
     /// Bilinear samples of up to `CHUNK` points: taps first, then the gather.
     #[inline(always)]
-    fn bilinear_chunk<T: Blend>(&self, level: &Raster<T>, st: &[Vec2], out: &mut [T]) {
+    fn bilinear_chunk<T: Averageable>(&self, level: &TexelGrid<T>, st: &[Vec2], out: &mut [T]) {
         let (width, height) = (level.width(), level.height());
         let mut across = AxisTaps::default();
         let mut down = AxisTaps::default();

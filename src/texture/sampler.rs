@@ -2,8 +2,8 @@
 
 use glam::Vec2;
 
-use super::mip::{Blend, MipChain};
-use super::raster::Raster;
+use super::mip::{Averageable, MipChain};
+use super::texel_grid::TexelGrid;
 use super::wrap::{Wrap, floor};
 
 /// How texels are combined into one value.
@@ -40,7 +40,7 @@ impl Sampler {
     /// Filters `chain` at texture coordinates `st` (`[0,1)²` spans the image, t = 0 at
     /// the top row). `footprint` only matters for `Trilinear`.
     #[inline]
-    pub fn sample<T: Blend>(&self, chain: &MipChain<T>, st: Vec2, footprint: Footprint) -> T {
+    pub fn sample<T: Averageable>(&self, chain: &MipChain<T>, st: Vec2, footprint: Footprint) -> T {
         match self.filter {
             Filter::Nearest => self.nearest(chain.base(), st),
             Filter::Bilinear => self.bilinear(chain.base(), st),
@@ -49,14 +49,14 @@ impl Sampler {
     }
 
     #[inline(always)]
-    pub fn nearest<T: Blend>(&self, level: &Raster<T>, st: Vec2) -> T {
+    pub fn nearest<T: Averageable>(&self, level: &TexelGrid<T>, st: Vec2) -> T {
         let x = self.wrap_s.texel(st.x, level.width());
         let y = self.wrap_t.texel(st.y, level.height());
         level.at(x, y)
     }
 
     #[inline(always)]
-    pub fn bilinear<T: Blend>(&self, level: &Raster<T>, st: Vec2) -> T {
+    pub fn bilinear<T: Averageable>(&self, level: &TexelGrid<T>, st: Vec2) -> T {
         let (x0, x1, fx) = linear_taps(self.wrap_s, st.x, level.width());
         let (y0, y1, fy) = linear_taps(self.wrap_t, st.y, level.height());
         let top = lerp(level.at(x0, y0), level.at(x1, y0), fx);
@@ -65,7 +65,12 @@ impl Sampler {
     }
 
     #[inline]
-    pub fn trilinear<T: Blend>(&self, chain: &MipChain<T>, st: Vec2, footprint: Footprint) -> T {
+    pub fn trilinear<T: Averageable>(
+        &self,
+        chain: &MipChain<T>,
+        st: Vec2,
+        footprint: Footprint,
+    ) -> T {
         let lod = footprint.level_of_detail(chain);
         let fine = floor(lod);
         let blend = lod - fine;
@@ -88,7 +93,7 @@ pub(crate) fn linear_taps(wrap: Wrap, s: f32, n: u32) -> (u32, u32, f32) {
 }
 
 #[inline(always)]
-pub(crate) fn lerp<T: Blend>(a: T, b: T, t: f32) -> T {
+pub(crate) fn lerp<T: Averageable>(a: T, b: T, t: f32) -> T {
     a * (1.0 - t) + b * t
 }
 
@@ -119,7 +124,7 @@ impl Footprint {
     #[inline]
     pub fn level_of_detail<T>(&self, chain: &MipChain<T>) -> f32
     where
-        T: Blend,
+        T: Averageable,
     {
         let base = chain.base();
         let texels = Vec2::new(base.width() as f32, base.height() as f32);
@@ -158,7 +163,7 @@ mod tests {
     use super::*;
 
     fn ramp() -> MipChain<f32> {
-        MipChain::build(Raster::from_fn(4, 2, |x, y| (x + 10 * y) as f32))
+        MipChain::build(TexelGrid::from_fn(4, 2, |x, y| (x + 10 * y) as f32))
     }
 
     #[test]

@@ -4,7 +4,7 @@
 use super::error_view::render_error_view;
 use crate::quality::Quality;
 use crate::raster::{FrameStats, Framebuffer, PreparedScene, RenderTarget, render_into};
-use crate::shade::ViewMode as ShaderMode;
+use crate::shade::ShaderMode;
 
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum ViewMode {

@@ -27,8 +27,8 @@ mod error;
 mod live_params;
 mod outcome;
 mod reloader;
+mod scene_source;
 mod snapshot;
-mod source;
 mod watched_dirs;
 mod worker;
 
@@ -36,4 +36,4 @@ pub use error::WatchError;
 pub use live_params::carry_live_params;
 pub use outcome::{Reload, ReloadError, ReloadOutcome};
 pub use reloader::{DEBOUNCE, Reloader};
-pub use source::{FileSetSource, SceneFileSource, SceneSource};
+pub use scene_source::{FileSetSource, SceneFileSource, SceneSource};

@@ -1,6 +1,6 @@
 use super::error::WatchError;
 use super::outcome::{ReloadError, ReloadOutcome};
-use super::source::SceneSource;
+use super::scene_source::SceneSource;
 use super::worker::{Message, Worker};
 use crate::scene::Scene;
 use notify_debouncer_mini::{Config, new_debouncer_opt};

@@ -1,7 +1,7 @@
 use super::change_watcher::ChangeWatcher;
 use super::outcome::{Reload, ReloadError, ReloadOutcome};
+use super::scene_source::SceneSource;
 use super::snapshot::Snapshot;
-use super::source::SceneSource;
 use super::watched_dirs::WatchedDirs;
 use crate::scene::Scene;
 use notify_debouncer_mini::{DebounceEventResult, Debouncer};

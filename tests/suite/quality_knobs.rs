@@ -6,7 +6,7 @@ use bumpwork::raster::{Framebuffer, Interpolation, Viewport, render_with};
 use bumpwork::reference::metrics::normal_angle_error;
 use bumpwork::reference::render_reference;
 use bumpwork::scene::{Scene, Texturing, preset};
-use bumpwork::shade::{GradientMethod, NormalForm, ViewMode};
+use bumpwork::shade::{GradientMethod, NormalForm, ShaderMode};
 use bumpwork::texture::Filter;
 
 const VIEW: Viewport = Viewport {
@@ -19,7 +19,7 @@ fn scene(name: &str) -> Scene {
 }
 
 /// The scene rendered at this quality in a view mode.
-fn render(scene: &Scene, quality: &Quality, mode: ViewMode) -> Framebuffer {
+fn render(scene: &Scene, quality: &Quality, mode: ShaderMode) -> Framebuffer {
     let prepared = quality
         .prepare(scene.clone(), &scene.camera, VIEW, 0)
         .unwrap();
@@ -29,7 +29,7 @@ fn render(scene: &Scene, quality: &Quality, mode: ViewMode) -> Framebuffer {
 }
 
 /// The exact reference in a view mode, shaded with this quality's shading knobs.
-fn reference(scene: &Scene, quality: &Quality, mode: ViewMode) -> Framebuffer {
+fn reference(scene: &Scene, quality: &Quality, mode: ShaderMode) -> Framebuffer {
     let prepared = quality
         .prepare(scene.clone(), &scene.camera, VIEW, 0)
         .unwrap();
@@ -57,13 +57,13 @@ fn mean_uv_difference(a: &Framebuffer, b: &Framebuffer) -> f32 {
 #[test]
 fn affine_uvs_drift_from_the_exact_ones_on_a_tilted_plane_and_perspective_ones_do_not() {
     let floor = scene("plane-checks");
-    let exact = reference(&floor, &Quality::interactive(), ViewMode::Uv);
-    let perspective = render(&floor, &Quality::interactive(), ViewMode::Uv);
+    let exact = reference(&floor, &Quality::interactive(), ShaderMode::Uv);
+    let perspective = render(&floor, &Quality::interactive(), ShaderMode::Uv);
     let affine_quality = Quality {
         interpolation: Interpolation::Affine,
         ..Quality::interactive()
     };
-    let affine = render(&floor, &affine_quality, ViewMode::Uv);
+    let affine = render(&floor, &affine_quality, ShaderMode::Uv);
     let (good, bad) = (
         mean_uv_difference(&perspective, &exact),
         mean_uv_difference(&affine, &exact),
@@ -85,13 +85,13 @@ fn bare_sphere() -> Scene {
 }
 
 fn mean_normal_error(scene: &Scene, quality: &Quality, exact: &Framebuffer) -> f64 {
-    normal_angle_error(&render(scene, quality, ViewMode::Normals), exact).mean_degrees
+    normal_angle_error(&render(scene, quality, ShaderMode::Normals), exact).mean_degrees
 }
 
 #[test]
 fn interpolated_vertex_normals_differ_from_the_exact_frame_and_converge_with_density() {
     let sphere = bare_sphere();
-    let exact = reference(&sphere, &Quality::interactive(), ViewMode::Normals);
+    let exact = reference(&sphere, &Quality::interactive(), ShaderMode::Normals);
     let at = |density: u32, normals: NormalSource| Quality {
         tessellation: density,
         normals,
@@ -112,11 +112,15 @@ fn interpolated_vertex_normals_differ_from_the_exact_frame_and_converge_with_den
         assert!(pair[1] < pair[0] / 2.0, "no convergence: {errors:?}");
     }
     // And they are not the exact frame's normals on the same mesh.
-    let frame = render(&sphere, &at(6, NormalSource::ExactFrame), ViewMode::Normals);
+    let frame = render(
+        &sphere,
+        &at(6, NormalSource::ExactFrame),
+        ShaderMode::Normals,
+    );
     let interpolated = render(
         &sphere,
         &at(6, NormalSource::InterpolatedVertex),
-        ViewMode::Normals,
+        ShaderMode::Normals,
     );
     let apart = normal_angle_error(&interpolated, &frame).mean_degrees;
     assert!(
@@ -138,13 +142,13 @@ fn central_differences_agree_with_exact_derivatives_within_the_truncation_bound(
         .unwrap()
         .scale()
         .abs() as f64;
-    let exact = render(&wave, &Quality::interactive(), ViewMode::Normals);
+    let exact = render(&wave, &Quality::interactive(), ShaderMode::Normals);
     let error_at = |step: f32| {
         let quality = Quality {
             gradient: GradientMethod::CentralDifference { step },
             ..Quality::interactive()
         };
-        normal_angle_error(&render(&wave, &quality, ViewMode::Normals), &exact)
+        normal_angle_error(&render(&wave, &quality, ShaderMode::Normals), &exact)
     };
     let k = 2.0 * std::f64::consts::PI / 40.0;
     for step in [1.0f32, 2.0] {
@@ -172,12 +176,12 @@ fn central_differences_agree_with_exact_derivatives_within_the_truncation_bound(
 #[test]
 fn the_seed_lattice_makes_a_smooth_pattern_steppy() {
     let wave = scene("plane-horizontal-wave");
-    let exact = render(&wave, &Quality::interactive(), ViewMode::Normals);
+    let exact = render(&wave, &Quality::interactive(), ShaderMode::Normals);
     let lattice = Quality {
         gradient: GradientMethod::SeedLattice,
         ..Quality::interactive()
     };
-    let error = normal_angle_error(&render(&wave, &lattice, ViewMode::Normals), &exact);
+    let error = normal_angle_error(&render(&wave, &lattice, ShaderMode::Normals), &exact);
     // Truncating v by up to one unit moves the phase by up to 2π/40: the slope changes by up to
     // A·k·(1 − cos k) + A·k·sin k, several tenths of a degree, and by nothing at whole v.
     assert!(error.max_degrees > 0.2, "{error:?}");
@@ -191,9 +195,9 @@ fn the_seed_normal_form_differs_from_blinns_on_a_sphere_and_full_keeps_it_close(
         normal_form,
         ..Quality::interactive()
     };
-    let blinn = render(&sphere, &with_form(NormalForm::Blinn), ViewMode::Normals);
-    let seed = render(&sphere, &with_form(NormalForm::Seed), ViewMode::Normals);
-    let full = render(&sphere, &with_form(NormalForm::Full), ViewMode::Normals);
+    let blinn = render(&sphere, &with_form(NormalForm::Blinn), ShaderMode::Normals);
+    let seed = render(&sphere, &with_form(NormalForm::Seed), ShaderMode::Normals);
+    let full = render(&sphere, &with_form(NormalForm::Full), ShaderMode::Normals);
     let seed_error = normal_angle_error(&seed, &blinn).mean_degrees;
     let full_error = normal_angle_error(&full, &blinn).mean_degrees;
     // Unit tangents on a sphere of radius 280 whose Pu, Pv are ~80 and ~140 long: the seed form
@@ -228,8 +232,8 @@ fn the_filter_override_reaches_every_image_texture_and_changes_the_picture() {
         filter: Some(Filter::Trilinear),
         ..Quality::interactive()
     };
-    let a = render(&textured, &nearest, ViewMode::Shaded);
-    let b = render(&textured, &trilinear, ViewMode::Shaded);
+    let a = render(&textured, &nearest, ShaderMode::Shaded);
+    let b = render(&textured, &trilinear, ShaderMode::Shaded);
     let changed = a
         .color()
         .iter()
@@ -241,7 +245,7 @@ fn the_filter_override_reaches_every_image_texture_and_changes_the_picture() {
 #[test]
 fn adaptive_tessellation_brings_a_coarse_silhouette_within_its_tolerance() {
     let sphere = bare_sphere();
-    let exact = reference(&sphere, &Quality::interactive(), ViewMode::Shaded);
+    let exact = reference(&sphere, &Quality::interactive(), ShaderMode::Shaded);
     let coarse = Quality {
         tessellation: 4,
         ..Quality::interactive()
@@ -252,7 +256,7 @@ fn adaptive_tessellation_brings_a_coarse_silhouette_within_its_tolerance() {
         ..coarse
     };
     let mismatch = |q: &Quality| {
-        let frame = render(&sphere, q, ViewMode::Shaded);
+        let frame = render(&sphere, q, ShaderMode::Shaded);
         bumpwork::reference::metrics::silhouette_mismatch(&frame, &exact)
     };
     let (before, after) = (mismatch(&coarse), mismatch(&adaptive));

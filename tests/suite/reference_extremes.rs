@@ -9,7 +9,7 @@ use crate::reference_support::*;
 use bumpwork::raster::Viewport;
 use bumpwork::reference::metrics::{normal_angle_error, silhouette_mismatch};
 use bumpwork::scene::{Scene, parse_scene, preset};
-use bumpwork::shade::ViewMode;
+use bumpwork::shade::ShaderMode;
 use glam::DVec3;
 use std::path::PathBuf;
 
@@ -25,7 +25,7 @@ fn check_finite(pair: &FramePair, what: &str) {
 fn stable_and_measured(scene: &Scene, viewport: Viewport, what: &str) -> (usize, f64, f64) {
     let shaded = render_both(scene, viewport, DENSITY, |_| {});
     check_finite(&shaded, what);
-    let normals = render_both(scene, viewport, DENSITY, |s| s.mode = ViewMode::Normals);
+    let normals = render_both(scene, viewport, DENSITY, |s| s.mode = ShaderMode::Normals);
     check_finite(&normals, what);
     let angles = normal_angle_error(&normals.raster, &normals.reference);
     eprintln!(

@@ -5,7 +5,7 @@ use crate::reference_support::*;
 use bumpwork::raster::Viewport;
 use bumpwork::reference::metrics::{normal_angle_error, silhouette_mismatch};
 use bumpwork::scene::{Scene, parse_scene};
-use bumpwork::shade::ViewMode;
+use bumpwork::shade::ShaderMode;
 use proptest::prelude::*;
 
 const VIEWPORT: Viewport = Viewport {
@@ -56,7 +56,7 @@ proptest! {
         bump in any::<bool>(),
     ) {
         let scene = random_scene(surface, eye, fov, bump);
-        for mode in [ViewMode::Shaded, ViewMode::Normals] {
+        for mode in [ShaderMode::Shaded, ShaderMode::Normals] {
             let pair = render_both(&scene, VIEWPORT, 16, |s| s.mode = mode);
             assert_all_finite(&pair.raster, "raster");
             assert_all_finite(&pair.reference, "reference");
@@ -74,7 +74,7 @@ proptest! {
         let scene = random_scene(surface, eye, fov, true);
         let error = |density: u32| {
             let shaded = render_both(&scene, VIEWPORT, density, |_| {});
-            let normals = render_both(&scene, VIEWPORT, density, |s| s.mode = ViewMode::Normals);
+            let normals = render_both(&scene, VIEWPORT, density, |s| s.mode = ShaderMode::Normals);
             let angles = normal_angle_error(&normals.raster, &normals.reference);
             (silhouette_mismatch(&shaded.raster, &shaded.reference), angles.mean_degrees)
         };

@@ -5,8 +5,8 @@
 use std::f32::consts::{PI, TAU};
 
 use bumpwork::texture::{
-    Cylindrical, Mapped, Mapping, Planar, PlanarLayout, Raster, Scroll, Spherical, SurfacePoint,
-    SurfaceUv, Texel, Texture, TextureMapping, TriangleMap,
+    Cylindrical, Mapped, Mapping, Planar, PlanarLayout, Scroll, Spherical, SurfacePoint, SurfaceUv,
+    Texel, TexelGrid, Texture, TextureMapping, TriangleMap,
 };
 use glam::{Mat2, Vec2, Vec3};
 
@@ -187,7 +187,7 @@ fn sphere_poles_and_centre_are_finite() {
 
 #[test]
 fn mip_level_is_finite_for_random_points_and_extreme_derivatives() {
-    let texture = Texture::from_raster(Raster::from_fn(64, 32, |x, _| Texel::splat(x as f32)));
+    let texture = Texture::from_raster(TexelGrid::from_fn(64, 32, |x, _| Texel::splat(x as f32)));
     let coarsest = (texture.mip_chain().levels().len() - 1) as f32;
     let sphere = Spherical::new(Vec3::ZERO);
     let extremes = [
@@ -224,7 +224,7 @@ fn mip_level_is_finite_for_random_points_and_extreme_derivatives() {
 
 #[test]
 fn sphere_mip_level_does_not_change_at_the_seam() {
-    let texture = Texture::from_raster(Raster::from_fn(256, 128, |_, _| Texel::ONE));
+    let texture = Texture::from_raster(TexelGrid::from_fn(256, 128, |_, _| Texel::ONE));
     let sphere = Spherical::new(Vec3::ZERO);
     let duv = (Vec2::new(0.01, 0.0), Vec2::new(0.0, 0.01));
     let lod_at = |u: f32| {

@@ -2,7 +2,7 @@
 
 use crate::test_dir::TestDir;
 use bumpwork::texture::{
-    Filter, Footprint, HeightMap, Limits, Raster, Sampler, Texel, Texture, Wrap,
+    Filter, Footprint, HeightMap, Limits, Sampler, Texel, TexelGrid, Texture, Wrap,
 };
 use glam::Vec2;
 
@@ -11,7 +11,7 @@ const FILTERS: [Filter; 3] = [Filter::Nearest, Filter::Bilinear, Filter::Triline
 
 /// A texture whose texels all differ: red = column, green = row, blue = a hash.
 fn distinct(width: u32, height: u32) -> Texture {
-    Texture::from_raster(Raster::from_fn(width, height, |x, y| {
+    Texture::from_raster(TexelGrid::from_fn(width, height, |x, y| {
         Texel::new(x as f32, y as f32, ((x * 7 + y * 13) % 5) as f32, 1.0)
     }))
 }
@@ -149,7 +149,7 @@ fn per_axis_wrap_modes_compose() {
 }
 
 fn checkerboard(side: u32) -> Texture {
-    Texture::from_raster(Raster::from_fn(side, side, |x, y| {
+    Texture::from_raster(TexelGrid::from_fn(side, side, |x, y| {
         Texel::splat(((x + y) % 2) as f32)
     }))
 }
@@ -279,8 +279,8 @@ fn batch_sampling_equals_one_at_a_time() {
     }
 }
 
-fn ramp_heights(width: u32, height: u32) -> Raster<f32> {
-    Raster::from_fn(width, height, |x, y| (3 * x + y) as f32 / 100.0)
+fn ramp_heights(width: u32, height: u32) -> TexelGrid<f32> {
+    TexelGrid::from_fn(width, height, |x, y| (3 * x + y) as f32 / 100.0)
 }
 
 #[test]
@@ -330,7 +330,7 @@ fn height_from_a_ramp_file_is_not_srgb_decoded() {
 
 #[test]
 fn magnified_height_gradient_has_no_steps_between_texels() {
-    let noise = Raster::from_fn(8, 8, |x, y| ((x * 37 + y * 91) % 17) as f32 / 16.0);
+    let noise = TexelGrid::from_fn(8, 8, |x, y| ((x * 37 + y * 91) % 17) as f32 / 16.0);
     let map = HeightMap::from_heights(noise);
     let step = 1e-4;
     let mut previous = map.sample_gradient(
@@ -356,7 +356,7 @@ fn magnified_height_gradient_has_no_steps_between_texels() {
 
 #[test]
 fn colour_images_give_height_by_luma() {
-    let green = Raster::from_fn(2, 2, |_, _| Texel::new(0.0, 1.0, 0.0, 1.0));
+    let green = TexelGrid::from_fn(2, 2, |_, _| Texel::new(0.0, 1.0, 0.0, 1.0));
     let map = HeightMap::from_texels(&green);
     let g = map.sample_gradient(Vec2::splat(0.5), Wrap::Clamp, Wrap::Clamp, Footprint::POINT);
     assert!(
@@ -383,7 +383,7 @@ fn mip_levels_average_in_linear_light() {
 
 #[test]
 fn height_is_interpolated_through_the_texel_centres() {
-    let heights = Raster::from_fn(6, 5, |x, y| ((x * 5 + y * 3) % 7) as f32 / 6.0);
+    let heights = TexelGrid::from_fn(6, 5, |x, y| ((x * 5 + y * 3) % 7) as f32 / 6.0);
     let map = HeightMap::from_heights(heights.clone());
     for (x, y) in [(0, 0), (2, 3), (5, 4)] {
         let st = Vec2::new((x as f32 + 0.5) / 6.0, (y as f32 + 0.5) / 5.0);
@@ -397,7 +397,7 @@ fn height_is_interpolated_through_the_texel_centres() {
 
 #[test]
 fn minified_bumps_flatten_instead_of_aliasing() {
-    let checker = Raster::from_fn(64, 64, |x, y| ((x + y) % 2) as f32);
+    let checker = TexelGrid::from_fn(64, 64, |x, y| ((x + y) % 2) as f32);
     let map = HeightMap::from_heights(checker);
     let st = Vec2::new(0.3, 0.7);
     let sharp = map.sample_gradient(st, Wrap::Repeat, Wrap::Repeat, Footprint::POINT);

@@ -1,6 +1,6 @@
 /// What the shading stage shows: the lit picture, or one of the quantities behind it.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum ViewMode {
+pub enum ShaderMode {
     #[default]
     Shaded,
     /// The bump height B as grey (mid-grey is 0; slope-only patterns have no height and show flat).
@@ -13,27 +13,27 @@ pub enum ViewMode {
     Depth,
 }
 
-impl ViewMode {
-    pub const ALL: [ViewMode; 5] = [
-        ViewMode::Shaded,
-        ViewMode::Height,
-        ViewMode::Normals,
-        ViewMode::Uv,
-        ViewMode::Depth,
+impl ShaderMode {
+    pub const ALL: [ShaderMode; 5] = [
+        ShaderMode::Shaded,
+        ShaderMode::Height,
+        ShaderMode::Normals,
+        ShaderMode::Uv,
+        ShaderMode::Depth,
     ];
 
     pub fn name(self) -> &'static str {
         match self {
-            ViewMode::Shaded => "shaded",
-            ViewMode::Height => "height",
-            ViewMode::Normals => "normals",
-            ViewMode::Uv => "uv",
-            ViewMode::Depth => "depth",
+            ShaderMode::Shaded => "shaded",
+            ShaderMode::Height => "height",
+            ShaderMode::Normals => "normals",
+            ShaderMode::Uv => "uv",
+            ShaderMode::Depth => "depth",
         }
     }
 
-    pub fn next(self) -> ViewMode {
-        let i = ViewMode::ALL.iter().position(|&m| m == self).unwrap_or(0);
-        ViewMode::ALL[(i + 1) % ViewMode::ALL.len()]
+    pub fn next(self) -> ShaderMode {
+        let i = ShaderMode::ALL.iter().position(|&m| m == self).unwrap_or(0);
+        ShaderMode::ALL[(i + 1) % ShaderMode::ALL.len()]
     }
 }

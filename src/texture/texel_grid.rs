@@ -2,13 +2,13 @@
 
 /// Row-major texels; `texels[y * width + x]`, `y = 0` is the image's top row.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Raster<T> {
+pub struct TexelGrid<T> {
     width: u32,
     height: u32,
     texels: Vec<T>,
 }
 
-impl<T: Copy> Raster<T> {
+impl<T: Copy> TexelGrid<T> {
     /// `None` if a side is zero or `texels` does not hold exactly `width * height` texels.
     pub fn new(width: u32, height: u32, texels: Vec<T>) -> Option<Self> {
         let expected = (width as usize).checked_mul(height as usize)?;
@@ -58,8 +58,8 @@ impl<T: Copy> Raster<T> {
         &self.texels[start..start + self.width as usize]
     }
 
-    pub fn map<U: Copy>(&self, f: impl Fn(T) -> U) -> Raster<U> {
-        Raster {
+    pub fn map<U: Copy>(&self, f: impl Fn(T) -> U) -> TexelGrid<U> {
+        TexelGrid {
             width: self.width,
             height: self.height,
             texels: self.texels.iter().map(|&t| f(t)).collect(),
