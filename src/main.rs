@@ -6,7 +6,7 @@ mod commands;
 
 use bumpwork::Error;
 use bumpwork::diagnostic::sanitize_lines;
-use clap::{Parser, Subcommand};
+use clap::{CommandFactory, Parser, Subcommand};
 use std::process::ExitCode;
 
 #[derive(Parser)]
@@ -33,6 +33,10 @@ enum Command {
     Bench(commands::bench::BenchArgs),
     /// Open the terminal workbench on scenes (default: every built-in scene).
     View(commands::view::ViewArgs),
+    /// Print the completion script for a shell (bash, zsh, fish, elvish, powershell).
+    Completions(commands::completions::CompletionsArgs),
+    /// Print the manual page (roff): `bumpwork man > bumpwork.1`.
+    Man,
 }
 
 fn main() -> ExitCode {
@@ -86,6 +90,8 @@ fn run(cli: Cli) -> Result<(), Error> {
         Some(Command::Check(args)) => commands::check::run(args),
         Some(Command::Gallery(args)) => commands::gallery::run(args),
         Some(Command::View(args)) => commands::view::run(args),
+        Some(Command::Completions(args)) => commands::completions::run(args, &mut Cli::command()),
+        Some(Command::Man) => commands::man_page::run(Cli::command()),
         Some(Command::Bench(args)) => commands::bench::run(args),
         None => commands::view::run(Default::default()),
     }

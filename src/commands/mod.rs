@@ -12,8 +12,10 @@ macro_rules! say {
 pub mod argument_error;
 pub mod bench;
 pub mod check;
+pub mod completions;
 pub mod gallery;
 mod interrupt;
+pub mod man_page;
 mod progress;
 pub mod render;
 pub mod view;
@@ -22,9 +24,14 @@ pub mod view;
 pub use bumpwork::still::MAX_SIDE;
 
 pub fn write_line(line: std::fmt::Arguments) -> Result<(), bumpwork::Error> {
+    write_bytes(format!("{line}\n").as_bytes())
+}
+
+/// Writes `bytes` to standard output; a failed write is the command's error, as in `say!`.
+pub fn write_bytes(bytes: &[u8]) -> Result<(), bumpwork::Error> {
     use std::io::Write;
     let mut out = std::io::stdout().lock();
-    writeln!(out, "{line}")
+    out.write_all(bytes)
         .and_then(|()| out.flush())
         .map_err(|e| {
             bumpwork::Error::write(

@@ -209,3 +209,43 @@ fn check_accepts_good_files_and_reports_each_bad_one() {
     assert!(message.contains("bad.png"), "{message}");
     assert!(message.contains("notes.txt: not a pattern"), "{message}");
 }
+
+#[test]
+fn help_fits_100_columns_and_shells_and_man_get_their_files() {
+    for command in [
+        &["--help"][..],
+        &["render", "--help"],
+        &["view", "--help"],
+        &["gallery", "--help"],
+        &["check", "--help"],
+        &["bench", "--help"],
+    ] {
+        let output = bumpwork(command);
+        assert!(output.status.success(), "{command:?}");
+        let help = String::from_utf8(output.stdout).unwrap();
+        let widest = help.lines().map(|l| l.chars().count()).max().unwrap_or(0);
+        assert!(widest <= 100, "{command:?}: a line of {widest} columns");
+    }
+    let version = bumpwork(&["--version"]);
+    assert_eq!(
+        String::from_utf8_lossy(&version.stdout).trim(),
+        format!("bumpwork {}", env!("CARGO_PKG_VERSION"))
+    );
+    for shell in ["bash", "zsh", "fish"] {
+        let script = bumpwork(&["completions", shell]);
+        assert!(script.status.success(), "{shell}");
+        let text = String::from_utf8_lossy(&script.stdout);
+        assert!(
+            text.contains("render") && text.contains("tessellation"),
+            "{shell}"
+        );
+    }
+    let man = bumpwork(&["man"]);
+    let page = String::from_utf8_lossy(&man.stdout);
+    assert!(page.contains(".TH bumpwork 1"), "{page}");
+    assert!(page.contains("render"), "{page}");
+    assert_user_error(
+        &bumpwork(&["completions", "cmd.exe"]),
+        "invalid value 'cmd.exe'",
+    );
+}
