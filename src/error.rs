@@ -1,3 +1,5 @@
+//! The program's one error type: every way a user's input can be wrong, each one message.
+
 use crate::diagnostic::sanitize;
 use std::path::Path;
 

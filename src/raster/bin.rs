@@ -1,3 +1,5 @@
+//! Binning: which triangles overlap each 64×64 tile, in submission order.
+
 use super::scan::PixelRect;
 use super::setup::{ScreenTriangle, Viewport};
 

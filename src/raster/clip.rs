@@ -1,3 +1,5 @@
+//! Clipping triangles in homogeneous clip space against the near plane and the frustum sides.
+
 use glam::{Vec2, Vec4};
 
 /// A vertex in homogeneous clip space with the surface parameters it carries.

@@ -1,3 +1,5 @@
+//! What rasterisation hands to shading: the frame's objects and the visible pixels' fragments.
+
 use super::pipeline::PreparedObject;
 use glam::{Vec2, Vec3};
 

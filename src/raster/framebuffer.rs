@@ -1,3 +1,5 @@
+//! The framebuffer: linear-light colour and view depth per pixel, and how a render blends into it.
+
 use crate::huge_pages::resize_for_overwrite;
 use glam::Vec3;
 use std::sync::OnceLock;

@@ -1,3 +1,6 @@
+//! The frame pipeline: prepared scenes, per-frame objects, screen triangles and the render entry
+//! points.
+
 use super::clip::{ClipVertex, clip_triangle, needs_no_clipping};
 use super::fragment::{FragmentShader, FrameObject};
 use super::framebuffer::{Blend, Framebuffer};

@@ -1,3 +1,5 @@
+//! Scan conversion: the pixel rows a triangle's bounds cover within a clip rectangle.
+
 use super::setup::{SampleShift, ScreenTriangle};
 
 /// An inclusive rectangle of pixels.

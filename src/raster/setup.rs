@@ -1,3 +1,5 @@
+//! Triangle setup: snapped fixed-point vertices, edge functions and the planes of 1/w, u/w, v/w.
+
 use super::clip::ClipVertex;
 use super::pipeline::Interpolation;
 use super::scan::PixelRect;

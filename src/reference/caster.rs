@@ -1,3 +1,5 @@
+//! The reference renderer: one exact ray per pixel through the same shader as the rasterizer.
+
 use super::differentials::uv_derivatives;
 use super::intersect::intersect;
 use super::ray::{Hit, Ray};

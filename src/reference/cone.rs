@@ -1,3 +1,5 @@
+//! Exact ray–cone intersection and the cone's (u,v) at the hit.
+
 use super::paraboloid::local;
 use super::quadratic::quadratic_roots;
 use super::ray::{Hit, Ray, nearest_hit};

@@ -1,3 +1,5 @@
+//! Ray differentials: the exact screen-space derivatives of (u,v) at a hit.
+
 use crate::surface::{Domain, Frame};
 use glam::{DVec3, Vec2};
 

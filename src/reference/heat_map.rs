@@ -1,3 +1,5 @@
+//! The error view's heat map: per-pixel difference to the reference, silhouettes apart.
+
 use super::metrics::pixel_errors;
 use crate::raster::Framebuffer;
 use glam::Vec3;

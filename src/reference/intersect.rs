@@ -1,3 +1,5 @@
+//! Exact intersection of a ray with any surface, and the inverse of its parametrisation.
+
 use super::cone::{cone_uv, intersect_cone};
 use super::paraboloid::{intersect_paraboloid, paraboloid_uv};
 use super::plane::{intersect_plane, plane_uv};

@@ -1,3 +1,5 @@
+//! The two frames the error metrics compare: shaded as configured, and the normals view.
+
 use super::metrics::{FrameError, frame_error};
 use crate::raster::Framebuffer;
 use crate::shade::{LitShader, ShaderMode};

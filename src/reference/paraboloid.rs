@@ -1,3 +1,5 @@
+//! Exact ray–paraboloid intersection and the paraboloid's (u,v) at the hit.
+
 use super::quadratic::quadratic_roots;
 use super::ray::{Hit, Ray, nearest_hit};
 use super::sphere::azimuth_u;

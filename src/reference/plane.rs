@@ -1,3 +1,5 @@
+//! Exact ray–plane intersection and the plane's (u,v) at the hit.
+
 use super::ray::{Hit, Ray, nearest_hit};
 use crate::surface::Plane;
 use glam::{DVec3, Vec2};

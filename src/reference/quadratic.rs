@@ -1,3 +1,5 @@
+//! Quadratic roots without cancellation, for the ray intersections.
+
 /// The real roots of a·t² + b·t + c = 0 (up to two, unsorted), without cancellation: the larger
 /// root in magnitude from the stable formula and the other from the product of the roots (c/a),
 /// so that a nearly vanishing `a` (a ray almost parallel to a cone's side) still gives the

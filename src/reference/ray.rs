@@ -1,3 +1,5 @@
+//! A ray relative to a surface's anchor, and the hit it finds.
+
 use glam::{DVec3, Vec2};
 use std::ops::RangeInclusive;
 

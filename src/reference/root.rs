@@ -1,3 +1,5 @@
+//! Safeguarded Newton root finding, for surfaces without a closed-form intersection.
+
 /// A root of `f` in [lo, hi], where f(lo) and f(hi) differ in sign (or one is zero): Newton steps
 /// on f and its derivative, falling back to bisection whenever a step would leave the bracket or
 /// fails to halve it, so it always converges (to f64 resolution of the bracket).

@@ -1,3 +1,5 @@
+//! Exact ray–sphere intersection and the sphere's (u,v) at the hit, in the seed's units.
+
 use super::quadratic::quadratic_roots;
 use super::ray::{Hit, Ray, nearest_hit};
 use crate::surface::Sphere;

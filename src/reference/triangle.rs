@@ -1,3 +1,5 @@
+//! Exact ray–triangle intersection within the triangle's (u,v) corners.
+
 use super::plane::{flat_hit, project};
 use super::ray::{Hit, Ray, nearest_hit};
 use crate::surface::Triangle;

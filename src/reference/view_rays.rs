@@ -1,3 +1,5 @@
+//! The camera's rays through pixel centres, built exactly as the rasterizer's frustum.
+
 use crate::raster::Viewport;
 use crate::scene::Camera;
 use crate::surface::normalize_or;

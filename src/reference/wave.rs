@@ -1,3 +1,5 @@
+//! Ray–wave intersection: the first root of the corrugated sheet along the ray.
+
 use super::ray::{Hit, Ray};
 use super::root::{bisect_sign_change, safeguarded_root};
 use crate::surface::Wave;

@@ -1,3 +1,5 @@
+//! The camera: a look-at pinhole with its eye in f64, and its view-projection matrix.
+
 use glam::{DVec3, Mat4, Vec3};
 
 /// A look-at pinhole camera with a vertical field of view. The eye is kept in f64; everything

@@ -1,3 +1,5 @@
+//! Blinn–Phong lighting of a fragment by the scene's point and directional lights.
+
 use super::lanes::{LANES, Lanes};
 use crate::scene::{Light, Material};
 use glam::{DVec3, Vec3};

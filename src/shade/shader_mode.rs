@@ -1,3 +1,5 @@
+//! What the shader outputs: the lit picture, or the height, normals, (u,v) or depth behind it.
+
 /// What the shading stage shows: the lit picture, or one of the quantities behind it.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum ShaderMode {

@@ -1,3 +1,5 @@
+//! The orthonormal basis around the axis of a surface of revolution.
+
 use glam::Vec3;
 
 /// An orthonormal basis around a symmetry axis, for the surfaces of revolution.

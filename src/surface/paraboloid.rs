@@ -1,3 +1,5 @@
+//! The paraboloid (the seed's "parabola"): P(u,v), its partial derivatives and normal.
+
 use super::sphere::{SEED_UNITS_PER_RADIAN, azimuth};
 use super::{AxisBasis, Domain, Frame, normalize_or};
 use glam::{DVec3, Vec2};

@@ -1,3 +1,5 @@
+//! The plane rectangle: P(u,v), its partial derivatives and normal.
+
 use super::{Domain, Frame, normalize_or};
 use glam::{DVec3, Vec2, Vec3};
 

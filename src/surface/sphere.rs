@@ -1,3 +1,5 @@
+//! The sphere in the seed's angle units: P(u,v), its partial derivatives and normal.
+
 use super::{Domain, Frame};
 use glam::{DVec3, Vec2, Vec3};
 use std::f32::consts::PI;

@@ -1,3 +1,5 @@
+//! Tessellation: a surface's (u,v) grid cut into an indexed triangle mesh.
+
 use super::Surface;
 use glam::{Vec2, Vec3};
 

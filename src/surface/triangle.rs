@@ -1,3 +1,5 @@
+//! The triangle with the seed's plane parametrisation.
+
 use super::{Domain, Frame, Mesh, normalize_or};
 use glam::{DVec3, Vec2, Vec3};
 

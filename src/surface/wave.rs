@@ -1,3 +1,5 @@
+//! The wave surface (a corrugated sheet): P(u,v), its partial derivatives and normal.
+
 use super::{Domain, Frame, normalize_or};
 use glam::{DVec3, Vec2, Vec3};
 use std::f32::consts::PI;

@@ -1,3 +1,5 @@
+//! The platform's file watcher, passing on only events that can change content.
+
 use notify::event::{AccessKind, AccessMode};
 use notify::{Config, Event, EventHandler, EventKind, RecommendedWatcher, RecursiveMode, Watcher};
 use std::path::Path;

@@ -1,3 +1,5 @@
+//! Why hot reload could not start.
+
 /// The file watcher could not be set up (for example, the system's limit on inotify instances
 /// is reached). The workbench can go on without hot reload.
 #[derive(Debug, thiserror::Error)]

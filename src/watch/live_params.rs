@@ -1,3 +1,5 @@
+//! Keeping the parameter values the user changed live across a reload.
+
 use crate::scene::{BumpSource, Material, PatternBinding, Scene, Texturing};
 
 /// Gives `reloaded` the pattern parameter values the user changed live: those where `live` (the

@@ -1,3 +1,5 @@
+//! What a batch of file events led to: a rebuilt scene, an error, or nothing.
+
 use super::live_params::carry_live_params;
 use crate::scene::Scene;
 

@@ -1,3 +1,5 @@
+//! The reloader: a worker thread that rebuilds the scene when its files change.
+
 use super::error::WatchError;
 use super::outcome::{ReloadError, ReloadOutcome};
 use super::scene_source::SceneSource;

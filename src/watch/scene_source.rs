@@ -1,3 +1,5 @@
+//! What a reloader rebuilds: a scene from files it can name.
+
 use crate::Error;
 use crate::scene::Scene;
 use crate::scene::dependencies::scene_file_dependencies;

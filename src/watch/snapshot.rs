@@ -1,3 +1,5 @@
+//! Content hashes of a scene's files, to tell a real change from a save of the same bytes.
+
 use std::hash::{DefaultHasher, Hasher};
 use std::io::Read;
 use std::path::{Path, PathBuf};

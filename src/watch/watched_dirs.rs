@@ -1,3 +1,5 @@
+//! The directories holding a scene's files, watched instead of the files themselves.
+
 use notify::{RecursiveMode, Watcher};
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};

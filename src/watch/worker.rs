@@ -1,3 +1,5 @@
+//! The reload worker: debounced events in, rebuilt scenes out.
+
 use super::change_watcher::ChangeWatcher;
 use super::outcome::{Reload, ReloadError, ReloadOutcome};
 use super::scene_source::SceneSource;
