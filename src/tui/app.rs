@@ -67,6 +67,8 @@ pub struct FrameReport {
     pub bytes: usize,
     /// PSNR against the reference, when the error view drew the frame.
     pub psnr_db: Option<f64>,
+    /// Passes averaged into the picture on screen (progressive refinement).
+    pub passes: u32,
 }
 
 /// What must be redrawn: the picture (re-render) or only the text around it.

@@ -70,8 +70,16 @@ fn event_loop(app: &mut App, signals: &ShutdownSignals) -> io::Result<()> {
         // the terminal when this loop is stuck in a poll on a hung-up tty. A failed write means
         // the terminal is gone; the hang-up signal ends the loop.
         let _ = screen.draw(app, &mut io::stdout().lock());
-        if event::poll(wait_time(app, last_frame))? {
+        // While the picture refines, input is only looked at between its passes: a key waits
+        // for at most the pass in flight.
+        let wait = match screen.refining(app) {
+            true => Duration::ZERO,
+            false => wait_time(app, last_frame),
+        };
+        if event::poll(wait)? {
             handle_pending_events(app, &mut screen, &mut input)?;
+        } else {
+            let _ = screen.refine(app, &mut io::stdout().lock());
         }
     }
     Ok(())

@@ -50,17 +50,6 @@ impl QualityPreset {
         let samples = self.quality().samples.clamp(1, MAX_TERMINAL_SAMPLES);
         (samples as f64).sqrt().floor() as usize
     }
-
-    /// The name, and the samples taken when the terminal takes fewer than the preset asks.
-    pub fn label(self) -> String {
-        let asked = self.quality().samples;
-        let taken = self.supersampling().pow(2) as u32;
-        if taken < asked {
-            format!("{} ({taken} of {asked} spp)", self.name())
-        } else {
-            self.name().to_string()
-        }
-    }
 }
 
 #[cfg(test)]
@@ -90,12 +79,10 @@ mod tests {
     }
 
     #[test]
-    fn samples_are_capped_and_the_label_says_so() {
+    fn a_frame_takes_at_most_the_terminal_cap_of_samples() {
         let exact = QualityPreset { index: 3 };
         assert_eq!(exact.supersampling(), 2);
-        assert_eq!(exact.label(), "exact (4 of 64 spp)");
         let interactive = QualityPreset::default();
         assert_eq!(interactive.supersampling(), 1);
-        assert_eq!(interactive.label(), "interactive");
     }
 }

@@ -1,14 +1,14 @@
 //! The current view rendered: into a framebuffer at any size (for export), or into terminal cells.
 
 use super::app::App;
-use super::resample::resample_to_srgb;
+use super::resample::{resample_linear, to_srgb8};
 use super::view_mode::{RenderedFrame, ViewMode, render_view_mode};
 use super::wireframe::draw_wireframe;
 use crate::quality::Quality;
 use crate::raster::{Framebuffer, PreparedScene, Viewport};
 use crate::scene::Camera;
 use crate::term::{CellGrid, EncodeOptions, GlyphSet, Picture, encode};
-use glam::Vec3;
+use glam::{Vec2, Vec3};
 
 /// Everything that decides the picture, apart from its size.
 pub struct View<'a> {
@@ -40,9 +40,38 @@ pub fn render_frame(
     height: u32,
     framebuffer: &mut Framebuffer,
 ) -> RenderedFrame {
-    let target = view
+    render_frame_at(view, width, height, Sampling::CENTRE, framebuffer)
+}
+
+/// Where a pass samples each pixel, and over what spacing its texture lookups filter.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Sampling {
+    /// From the pixel's centre, in pixels.
+    pub offset: Vec2,
+    /// In pixels (`RenderTarget::footprint`).
+    pub footprint: f32,
+}
+
+impl Sampling {
+    pub const CENTRE: Sampling = Sampling {
+        offset: Vec2::ZERO,
+        footprint: 1.0,
+    };
+}
+
+/// As `render_frame`, each pixel sampled as `sampling` says.
+fn render_frame_at(
+    view: &View,
+    width: u32,
+    height: u32,
+    sampling: Sampling,
+    framebuffer: &mut Framebuffer,
+) -> RenderedFrame {
+    let mut target = view
         .quality
         .target(&view.camera, Viewport { width, height });
+    target.window.offset = sampling.offset;
+    target.footprint = sampling.footprint;
     let rendered = render_view_mode(
         view.mode,
         view.time,
@@ -61,20 +90,74 @@ pub fn render_frame(
 /// per sub-pixel. `framebuffer` is reused between frames.
 pub fn render_cells(
     view: &View,
-    (cols, rows): (usize, usize),
+    cells: (usize, usize),
     options: EncodeOptions,
     supersampling: usize,
     framebuffer: &mut Framebuffer,
 ) -> (CellGrid, RenderedFrame) {
-    if cols == 0 || rows == 0 {
-        return (CellGrid::new(cols, rows), RenderedFrame::default());
+    if cells.0 == 0 || cells.1 == 0 {
+        return (CellGrid::new(cells.0, cells.1), RenderedFrame::default());
     }
-    let (width, height) = options.glyphs.picture_size(cols, rows);
-    let (render_w, render_h) = square_render_size(options.glyphs, cols, rows, supersampling);
-    let rendered = render_frame(view, render_w as u32, render_h as u32, framebuffer);
-    let pixels = resample_to_srgb(framebuffer, width, height);
-    let picture = Picture::new(&pixels, width, height).expect("resampled to the picture size");
-    (encode(&picture, options), rendered)
+    let pass = render_picture_pass(
+        view,
+        cells,
+        options.glyphs,
+        supersampling,
+        Sampling::CENTRE,
+        framebuffer,
+    );
+    (
+        encode_cells(&pass.linear, pass.size, options),
+        pass.rendered,
+    )
+}
+
+/// One pass of the terminal picture: its sub-pixels in linear light, and their number.
+pub struct PicturePass {
+    pub linear: Vec<Vec3>,
+    /// Sub-pixels across and down (`GlyphSet::picture_size`).
+    pub size: (usize, usize),
+    pub rendered: RenderedFrame,
+}
+
+/// Renders `view` for `cols` × `rows` cells of `glyphs`: `supersampling`² square pixels per
+/// sub-pixel, each sampled as `sampling` says, averaged over each sub-pixel's area.
+pub fn render_picture_pass(
+    view: &View,
+    (cols, rows): (usize, usize),
+    glyphs: GlyphSet,
+    supersampling: usize,
+    sampling: Sampling,
+    framebuffer: &mut Framebuffer,
+) -> PicturePass {
+    let size = glyphs.picture_size(cols, rows);
+    if cols == 0 || rows == 0 {
+        return PicturePass {
+            linear: Vec::new(),
+            size: (0, 0),
+            rendered: RenderedFrame::default(),
+        };
+    }
+    let (render_w, render_h) = square_render_size(glyphs, cols, rows, supersampling);
+    let rendered = render_frame_at(
+        view,
+        render_w as u32,
+        render_h as u32,
+        sampling,
+        framebuffer,
+    );
+    PicturePass {
+        linear: resample_linear(framebuffer, size.0, size.1),
+        size,
+        rendered,
+    }
+}
+
+/// The cells showing `linear`, a picture of `size` sub-pixels.
+pub fn encode_cells(linear: &[Vec3], size: (usize, usize), options: EncodeOptions) -> CellGrid {
+    let pixels = to_srgb8(linear);
+    let picture = Picture::new(&pixels, size.0, size.1).expect("one colour per sub-pixel");
+    encode(&picture, options)
 }
 
 /// The render size in square pixels for cells twice as tall as wide: sub-pixels of quadrant and

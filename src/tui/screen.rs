@@ -4,8 +4,10 @@
 
 use super::app::App;
 use super::help::draw_help;
-use super::render::{View, empty_framebuffer, render_cells};
+use super::refinement::Accumulation;
+use super::render::{Sampling, View, empty_framebuffer, encode_cells, render_picture_pass};
 use super::status::status_line;
+use super::view_mode::ViewMode;
 use crate::raster::Framebuffer;
 use crate::term::{CellGrid, Color, ColorMode, EncodeOptions, FrameWriter};
 use ratatui::buffer::Buffer;
@@ -45,6 +47,8 @@ pub struct Screen {
     writer: FrameWriter,
     picture: CellGrid,
     framebuffer: Framebuffer,
+    /// The passes of the picture on screen, while nothing changes.
+    accumulation: Accumulation,
 }
 
 impl Screen {
@@ -54,6 +58,7 @@ impl Screen {
             writer: FrameWriter::new((0, 0)),
             picture: CellGrid::new(0, 0),
             framebuffer: empty_framebuffer(),
+            accumulation: Accumulation::default(),
         }
     }
 
@@ -79,15 +84,14 @@ impl Screen {
         if !(app.dirty.picture || app.dirty.text) {
             return Ok(0);
         }
-        let start = Instant::now();
         if app.dirty.picture {
+            let start = Instant::now();
             self.render_picture(app);
+            // Before the status line is composed, so the first frame reports its own cost.
+            app.report.render_time = start.elapsed();
         }
         let grid = self.compose(app);
         let result = self.writer.draw(out, &grid);
-        if app.dirty.picture {
-            app.report.render_time = start.elapsed();
-        }
         app.mark_drawn();
         let bytes = result?;
         if bytes > 0 {
@@ -96,20 +100,63 @@ impl Screen {
         Ok(bytes)
     }
 
-    fn render_picture(&mut self, app: &mut App) {
-        let size = (self.layout.cols as usize, self.layout.picture_rows as usize);
+    /// Whether the picture on screen would still gain from another pass: nothing has changed
+    /// since it was started, and its mode is one the passes average (the wireframe and the error
+    /// view are drawn over a single pass).
+    pub fn refining(&self, app: &App) -> bool {
+        !app.dirty.picture
+            && self.accumulation.wants_more()
+            && !matches!(app.view_mode, ViewMode::Wireframe | ViewMode::Error)
+    }
+
+    /// Renders one more pass into the picture and draws the cells it changed; returns the bytes
+    /// written. Does nothing when `refining` is false.
+    pub fn refine(&mut self, app: &mut App, out: &mut impl Write) -> io::Result<usize> {
+        if !self.refining(app) {
+            return Ok(0);
+        }
+        let sampling = Sampling {
+            offset: self.accumulation.next_offset(),
+            footprint: self.accumulation.next_footprint(),
+        };
+        let pass = self.render_pass(app, sampling);
+        if pass.size != self.accumulation.size() {
+            return Ok(0);
+        }
+        self.accumulation.add(&pass.linear);
+        // Drawn when the sample count doubles: six redraws from 2 to 64 passes, so a converging
+        // picture costs a slow link a few frames, not one per pass.
+        let passes = self.accumulation.passes();
+        if !passes.is_power_of_two() && self.accumulation.wants_more() {
+            return Ok(0);
+        }
         let options = EncodeOptions::new(app.colors, app.glyphs);
-        let supersampling = app.quality.supersampling();
-        let (picture, rendered) = render_cells(
+        self.picture = encode_cells(&self.accumulation.mean(), pass.size, options);
+        app.report.passes = self.accumulation.passes();
+        let grid = self.compose(app);
+        self.writer.draw(out, &grid)
+    }
+
+    fn render_picture(&mut self, app: &mut App) {
+        let pass = self.render_pass(app, Sampling::CENTRE);
+        let options = EncodeOptions::new(app.colors, app.glyphs);
+        self.picture = encode_cells(&pass.linear, pass.size, options);
+        app.report.stats = pass.rendered.stats;
+        app.report.psnr_db = pass.rendered.psnr_db;
+        self.accumulation.restart(pass.linear, pass.size);
+        app.report.passes = 1;
+    }
+
+    fn render_pass(&mut self, app: &App, sampling: Sampling) -> super::render::PicturePass {
+        let cells = (self.layout.cols as usize, self.layout.picture_rows as usize);
+        render_picture_pass(
             &View::of(app),
-            size,
-            options,
-            supersampling,
+            cells,
+            app.glyphs,
+            app.quality.supersampling(),
+            sampling,
             &mut self.framebuffer,
-        );
-        self.picture = picture;
-        app.report.stats = rendered.stats;
-        app.report.psnr_db = rendered.psnr_db;
+        )
     }
 
     /// The screen: picture, then the status line and the help drawn over it with ratatui.

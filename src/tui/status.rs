@@ -58,15 +58,12 @@ fn segments(app: &App) -> Vec<Segment> {
             3,
             format!(
                 "{} {} {}",
-                app.quality.label(),
+                app.quality.name(),
                 glyphs_name(app.glyphs),
                 colors_name(app.colors)
             ),
         ),
-        segment(
-            2,
-            format!("{:.1} ms", report.render_time.as_secs_f64() * 1e3),
-        ),
+        segment(2, cost_text(app)),
         segment(
             4,
             format!(
@@ -75,8 +72,11 @@ fn segments(app: &App) -> Vec<Segment> {
                 si(report.stats.fragments)
             ),
         ),
-        segment(4, format!("{} B", si(report.bytes))),
     ];
+    // The bytes of a frame are known once it is written: none yet on the first.
+    if report.bytes > 0 {
+        list.push(segment(4, format!("{} B", si(report.bytes))));
+    }
     if let Some(db) = report.psnr_db {
         list.insert(2, segment(1, psnr_text(db)));
     }
@@ -90,6 +90,14 @@ fn segments(app: &App) -> Vec<Segment> {
         Message::Error(text) => list.insert(0, segment(0, error_text(text))),
     }
     list
+}
+
+/// The last frame's render time, and the samples per sub-pixel the picture holds so far.
+fn cost_text(app: &App) -> String {
+    let ms = app.report.render_time.as_secs_f64() * 1e3;
+    let per_pass = app.quality.supersampling().pow(2) as u32;
+    let samples = app.report.passes.max(1) * per_pass;
+    format!("{ms:.1} ms {samples} spp")
 }
 
 /// The edited object's bump (pattern, strength, parameters with the selected one bracketed) and

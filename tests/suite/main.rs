@@ -60,6 +60,7 @@ mod tmux_support;
 mod tui_cells;
 mod tui_error_view;
 mod tui_pty;
+mod tui_refinement;
 mod tui_screen;
 mod watch_churn;
 mod watch_reload;

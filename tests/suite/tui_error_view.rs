@@ -82,7 +82,7 @@ fn the_heat_map_is_dark_where_the_frame_matches_the_reference() {
 }
 
 #[test]
-fn the_preset_key_cycles_the_crate_presets_and_caps_samples_in_the_status() {
+fn the_preset_key_cycles_the_crate_presets_and_the_status_counts_the_samples() {
     let mut app = app("plane-dimples");
     let screen = Screen::new(120, 10);
     let mut names = Vec::new();
@@ -93,9 +93,7 @@ fn the_preset_key_cycles_the_crate_presets_and_caps_samples_in_the_status() {
     assert_eq!(names, ["high", "exact", "draft", "interactive"]);
     app.apply(Action::NextQuality);
     app.apply(Action::NextQuality);
-    assert!(
-        status(&screen, &app).contains("exact (4 of 64 spp)"),
-        "{}",
-        status(&screen, &app)
-    );
+    // A frame of `exact` takes the terminal's cap of 4 samples; refinement adds the rest.
+    let line = status(&screen, &app);
+    assert!(line.contains("exact") && line.contains(" 4 spp"), "{line}");
 }
