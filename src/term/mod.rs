@@ -66,7 +66,8 @@ pub use ansi_writer::{FrameOptions, FrameWriter, SYNC_BEGIN, SYNC_END, encode_fr
 pub use cell::{Cell, CellGrid};
 pub use color::Color;
 pub use color_mode::{
-    ColorChoice, ColorMode, UnknownColorMode, detect_color_mode, detect_from_process_env,
+    ColorChoice, ColorMode, DetectedColors, UnknownColorMode, detect_color_mode, detect_colors,
+    detect_from_process_env,
 };
 pub use dither::threshold_u8;
 pub use encode::{EncodeOptions, encode};

@@ -19,7 +19,7 @@ use crate::scene::{Material, Scene};
 use crate::term::{ColorMode, GlyphSet};
 use crate::watch::{ReloadOutcome, Reloader};
 use std::path::PathBuf;
-use std::time::Duration;
+use std::time::{Duration, Instant};
 
 pub struct App {
     pub scenes: Vec<String>,
@@ -48,7 +48,12 @@ pub struct App {
     reloader: Option<Reloader>,
     /// Whether files are watched (`--no-watch` turns it off).
     watch: bool,
+    /// The message on show and when it first was, to let an `Info` expire.
+    message_seen: (Message, Instant),
 }
+
+/// How long an `Info` message stays in the status line.
+pub const INFO_LIFETIME: Duration = Duration::from_secs(5);
 
 /// The reload state or the last error, shown in the status line.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -121,6 +126,7 @@ impl App {
             export_job: None,
             dirty: Dirty::ALL,
             reloader,
+            message_seen: (Message::None, Instant::now()),
         })
     }
 
@@ -350,6 +356,19 @@ impl App {
             Err(e) => Message::Error(e.to_string()),
         };
         self.dirty.text = true;
+    }
+
+    /// Clears an `Info` message once it has been on show for `INFO_LIFETIME`; errors stay while
+    /// they hold (a broken file is reported until it is mended).
+    pub fn expire_message(&mut self, now: Instant) {
+        if self.message_seen.0 != self.message {
+            self.message_seen = (self.message.clone(), now);
+        }
+        let age = now.saturating_duration_since(self.message_seen.1);
+        if matches!(self.message, Message::Info(_)) && age >= INFO_LIFETIME {
+            self.message = Message::None;
+            self.dirty.text = true;
+        }
     }
 
     /// Marks everything for redrawing, as after a resize.

@@ -1,10 +1,11 @@
 //! The event loop: draw what changed, wait for input or the next animation frame, repeat; and
 //! give the terminal back however it ends.
 
-use super::app::App;
+use super::app::{App, Message};
 use super::input::{Input, InputState};
 use super::options::WorkbenchOptions;
 use super::screen::Screen;
+use super::status::colors_name;
 use crate::Error;
 use crate::term::{ShutdownSignals, TerminalGuard};
 use crossterm::event;
@@ -34,8 +35,15 @@ pub fn run(options: &WorkbenchOptions) -> Result<(), Error> {
                 .into(),
         ));
     }
-    let colors = options.colors.resolve(|name| std::env::var(name).ok());
-    let mut app = App::new(options, colors)?;
+    let colors = options
+        .colors
+        .resolve_with_reason(|name| std::env::var(name).ok());
+    let mut app = App::new(options, colors.mode)?;
+    app.message = Message::Info(format!(
+        "{} colours ({}; --colors sets them)",
+        colors_name(colors.mode),
+        colors.reason
+    ));
     let signals = ShutdownSignals::register().map_err(terminal_error)?;
     signals.watch_terminal().map_err(terminal_error)?;
     let guard = TerminalGuard::enter(options.mouse).map_err(terminal_error)?;
@@ -57,6 +65,7 @@ fn event_loop(app: &mut App, signals: &ShutdownSignals) -> io::Result<()> {
     while !app.quit && signals.received().is_none() {
         app.reload_if_changed();
         app.poll_export();
+        app.expire_message(Instant::now());
         if app.animates()
             && app.clock.is_running()
             && last_frame.elapsed() >= app.clock.frame_interval()

@@ -29,7 +29,7 @@ mod view_mode;
 mod wireframe;
 
 pub use action::Action;
-pub use app::{App, Dirty, FrameReport, Message};
+pub use app::{App, Dirty, FrameReport, INFO_LIFETIME, Message};
 pub use event_loop::run;
 pub use options::WorkbenchOptions;
 pub use orbit::Orbit;

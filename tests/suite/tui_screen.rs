@@ -300,3 +300,20 @@ fn with_watching_off_an_edited_file_is_not_reloaded() {
     assert_eq!(app.message, Message::None);
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn information_expires_and_errors_stay() {
+    let mut app = app();
+    let start = Instant::now();
+    app.message = Message::Info("reloaded".into());
+    app.expire_message(start);
+    app.expire_message(start + Duration::from_secs(2));
+    assert_eq!(app.message, Message::Info("reloaded".into()));
+    app.expire_message(start + bumpwork::tui::INFO_LIFETIME + Duration::from_millis(1));
+    assert_eq!(app.message, Message::None);
+    assert!(app.dirty.text, "the status line is drawn again without it");
+    app.message = Message::Error("x.pat:1:1: expected an expression".into());
+    app.expire_message(start + Duration::from_secs(10));
+    app.expire_message(start + Duration::from_secs(100));
+    assert!(matches!(app.message, Message::Error(_)));
+}
