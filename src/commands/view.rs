@@ -29,6 +29,10 @@ pub struct ViewArgs {
     /// Size of PNGs the export key writes, WIDTHxHEIGHT.
     #[arg(long, default_value = "1920x1080", value_parser = super::parse_size)]
     export_size: Option<(u32, u32)>,
+    /// A character cell's size in pixels, WIDTHxHEIGHT, for terminals that do not report it
+    /// (circles come out round) [default: as the terminal reports, else 1x2].
+    #[arg(long, value_parser = super::parse_size)]
+    cell_size: Option<(u32, u32)>,
     /// Samples per pixel of PNGs the export key writes.
     #[arg(long, default_value_t = 4,
           value_parser = clap::value_parser!(u32).range(1..=bumpwork::still::MAX_SAMPLES as i64))]
@@ -59,6 +63,7 @@ pub fn run(args: ViewArgs) -> Result<(), Error> {
         },
         watch: !args.no_watch,
         quality: args.quality.unwrap_or_default(),
+        cell_size: args.cell_size,
     };
     bumpwork::tui::run(&options)
 }

@@ -33,6 +33,8 @@ pub struct App {
     pub quality: QualityPreset,
     pub glyphs: GlyphSet,
     pub colors: ColorMode,
+    /// `--cell-size`: a cell's pixels, for terminals that do not report them.
+    pub cell_size: Option<(u32, u32)>,
     pub clock: Clock,
     pub help: bool,
     pub quit: bool,
@@ -115,6 +117,7 @@ impl App {
             quality,
             glyphs: options.glyphs,
             colors,
+            cell_size: options.cell_size,
             clock: Clock::new(options.fps),
             help: false,
             quit: false,

@@ -4,6 +4,7 @@
 use super::app::{App, Message};
 use super::input::{Input, InputState};
 use super::options::WorkbenchOptions;
+use super::render::DEFAULT_CELL_ASPECT;
 use super::screen::Screen;
 use super::status::colors_name;
 use crate::Error;
@@ -60,6 +61,7 @@ pub fn run(options: &WorkbenchOptions) -> Result<(), Error> {
 fn event_loop(app: &mut App, signals: &ShutdownSignals) -> io::Result<()> {
     let (cols, rows) = crossterm::terminal::size()?;
     let mut screen = Screen::new(cols, rows);
+    screen.set_cell_aspect(cell_aspect(app.cell_size), app);
     let mut input = InputState::default();
     let mut last_frame = Instant::now();
     while !app.quit && signals.received().is_none() {
@@ -116,7 +118,11 @@ fn handle_pending_events(
     loop {
         match input.translate(event::read()?) {
             Input::Action(action) => app.apply(action),
-            Input::Resize(cols, rows) => screen.resize(cols, rows, app),
+            Input::Resize(cols, rows) => {
+                screen.resize(cols, rows, app);
+                // A new font size or zoom changes the cells' shape too.
+                screen.set_cell_aspect(cell_aspect(app.cell_size), app);
+            }
             Input::Redraw => screen.invalidate(app),
             Input::Nothing => {}
         }
@@ -124,6 +130,22 @@ fn handle_pending_events(
             return Ok(());
         }
     }
+}
+
+/// Cell height / width: from `--cell-size`, else from the pixel size the terminal reports for
+/// its window (TIOCGWINSZ), else the usual 2. A reported shape past 1:1 to 4:1 is not believed.
+fn cell_aspect(fixed: Option<(u32, u32)>) -> f32 {
+    if let Some((width, height)) = fixed {
+        return height as f32 / width as f32;
+    }
+    let reported = crossterm::terminal::window_size().ok().and_then(|size| {
+        let cell_w = f32::from(size.width) / f32::from(size.columns.max(1));
+        let cell_h = f32::from(size.height) / f32::from(size.rows.max(1));
+        (cell_w > 0.0 && cell_h > 0.0).then(|| cell_h / cell_w)
+    });
+    reported
+        .filter(|aspect| (1.0..=4.0).contains(aspect))
+        .unwrap_or(DEFAULT_CELL_ASPECT)
 }
 
 fn terminal_error(error: io::Error) -> Error {

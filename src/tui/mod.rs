@@ -35,6 +35,9 @@ pub use options::WorkbenchOptions;
 pub use orbit::Orbit;
 pub use quality::{MAX_TERMINAL_SAMPLES, QualityPreset};
 pub use refinement::{Accumulation, MAX_PASSES};
-pub use render::{PicturePass, Sampling, View, render_cells, render_frame, render_picture_pass};
+pub use render::{
+    CellShape, DEFAULT_CELL_ASPECT, PicturePass, Sampling, View, render_cells, render_frame,
+    render_picture_pass,
+};
 pub use screen::{Layout, Screen};
 pub use view_mode::{RenderedFrame, ViewMode};

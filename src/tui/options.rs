@@ -20,6 +20,8 @@ pub struct WorkbenchOptions {
     pub watch: bool,
     /// The quality preset to start with (`Q` cycles them).
     pub quality: QualityPreset,
+    /// A cell's size in pixels, width × height, for terminals that do not report it.
+    pub cell_size: Option<(u32, u32)>,
 }
 
 impl Default for WorkbenchOptions {
@@ -37,6 +39,7 @@ impl Default for WorkbenchOptions {
             export_samples: 4,
             watch: true,
             quality: QualityPreset::default(),
+            cell_size: None,
         }
     }
 }

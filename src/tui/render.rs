@@ -98,10 +98,14 @@ pub fn render_cells(
     if cells.0 == 0 || cells.1 == 0 {
         return (CellGrid::new(cells.0, cells.1), RenderedFrame::default());
     }
+    let shape = CellShape {
+        glyphs: options.glyphs,
+        aspect: DEFAULT_CELL_ASPECT,
+    };
     let pass = render_picture_pass(
         view,
         cells,
-        options.glyphs,
+        shape,
         supersampling,
         Sampling::CENTRE,
         framebuffer,
@@ -120,17 +124,30 @@ pub struct PicturePass {
     pub rendered: RenderedFrame,
 }
 
-/// Renders `view` for `cols` × `rows` cells of `glyphs`: `supersampling`² square pixels per
-/// sub-pixel, each sampled as `sampling` says, averaged over each sub-pixel's area.
+/// Cells twice as tall as wide: most terminal fonts, and what is assumed when the terminal
+/// reports no pixel size.
+pub const DEFAULT_CELL_ASPECT: f32 = 2.0;
+
+/// How cells are split and how tall one is for its width.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CellShape {
+    pub glyphs: GlyphSet,
+    /// Cell height / cell width, as the terminal draws them.
+    pub aspect: f32,
+}
+
+/// Renders `view` for `cols` × `rows` cells of `shape`: `supersampling` square pixels across each
+/// sub-pixel (as many down as the cell's aspect gives), each sampled as `sampling` says, averaged
+/// over each sub-pixel's area.
 pub fn render_picture_pass(
     view: &View,
     (cols, rows): (usize, usize),
-    glyphs: GlyphSet,
+    shape: CellShape,
     supersampling: usize,
     sampling: Sampling,
     framebuffer: &mut Framebuffer,
 ) -> PicturePass {
-    let size = glyphs.picture_size(cols, rows);
+    let size = shape.glyphs.picture_size(cols, rows);
     if cols == 0 || rows == 0 {
         return PicturePass {
             linear: Vec::new(),
@@ -138,7 +155,7 @@ pub fn render_picture_pass(
             rendered: RenderedFrame::default(),
         };
     }
-    let (render_w, render_h) = square_render_size(glyphs, cols, rows, supersampling);
+    let (render_w, render_h) = square_render_size(shape, cols, rows, supersampling);
     let rendered = render_frame_at(
         view,
         render_w as u32,
@@ -160,19 +177,19 @@ pub fn encode_cells(linear: &[Vec3], size: (usize, usize), options: EncodeOption
     encode(&picture, options)
 }
 
-/// The render size in square pixels for cells twice as tall as wide: sub-pixels of quadrant and
-/// sextant cells are not square, so the frame is rendered square and averaged to their shape.
+/// The render size in square pixels: sub-pixels are square only in some cells of some fonts,
+/// so the frame is rendered square, `across` pixels a cell wide and as many down as the cell's
+/// aspect gives, and averaged to the sub-pixels' shape (which keeps circles round).
 fn square_render_size(
-    glyphs: GlyphSet,
+    shape: CellShape,
     cols: usize,
     rows: usize,
     supersampling: usize,
 ) -> (usize, usize) {
-    let (across, _) = glyphs.cell_pixels();
-    (
-        cols * across * supersampling,
-        rows * 2 * across * supersampling,
-    )
+    let (across, _) = shape.glyphs.cell_pixels();
+    let per_cell_down = shape.aspect * (across * supersampling) as f32;
+    let down = (rows as f32 * per_cell_down).round().max(1.0) as usize;
+    (cols * across * supersampling, down)
 }
 
 /// A framebuffer to reuse between frames.
@@ -186,8 +203,22 @@ mod tests {
 
     #[test]
     fn render_sizes_keep_pixels_square() {
-        assert_eq!(square_render_size(GlyphSet::HalfBlock, 10, 5, 1), (10, 10));
-        assert_eq!(square_render_size(GlyphSet::Quadrant, 10, 5, 1), (20, 20));
-        assert_eq!(square_render_size(GlyphSet::Sextant, 10, 5, 2), (40, 40));
+        let shape = |glyphs, aspect| CellShape { glyphs, aspect };
+        let usual = |glyphs| shape(glyphs, DEFAULT_CELL_ASPECT);
+        assert_eq!(
+            square_render_size(usual(GlyphSet::HalfBlock), 10, 5, 1),
+            (10, 10)
+        );
+        assert_eq!(
+            square_render_size(usual(GlyphSet::Quadrant), 10, 5, 1),
+            (20, 20)
+        );
+        assert_eq!(
+            square_render_size(usual(GlyphSet::Sextant), 10, 5, 2),
+            (40, 40)
+        );
+        // kitty's default font: cells of 10 × 22 pixels.
+        let kitty = shape(GlyphSet::HalfBlock, 2.2);
+        assert_eq!(square_render_size(kitty, 160, 50, 1), (160, 110));
     }
 }

@@ -5,7 +5,10 @@
 use super::app::App;
 use super::help::draw_help;
 use super::refinement::Accumulation;
-use super::render::{Sampling, View, empty_framebuffer, encode_cells, render_picture_pass};
+use super::render::{
+    CellShape, DEFAULT_CELL_ASPECT, Sampling, View, empty_framebuffer, encode_cells,
+    render_picture_pass,
+};
 use super::status::status_line;
 use super::view_mode::ViewMode;
 use crate::raster::Framebuffer;
@@ -49,6 +52,8 @@ pub struct Screen {
     framebuffer: Framebuffer,
     /// The passes of the picture on screen, while nothing changes.
     accumulation: Accumulation,
+    /// Cell height / width as the terminal draws them.
+    cell_aspect: f32,
 }
 
 impl Screen {
@@ -59,6 +64,15 @@ impl Screen {
             picture: CellGrid::new(0, 0),
             framebuffer: empty_framebuffer(),
             accumulation: Accumulation::default(),
+            cell_aspect: DEFAULT_CELL_ASPECT,
+        }
+    }
+
+    /// How tall the terminal's cells are for their width; a change redraws the picture.
+    pub fn set_cell_aspect(&mut self, aspect: f32, app: &mut App) {
+        if aspect != self.cell_aspect {
+            self.cell_aspect = aspect;
+            app.invalidate();
         }
     }
 
@@ -149,10 +163,14 @@ impl Screen {
 
     fn render_pass(&mut self, app: &App, sampling: Sampling) -> super::render::PicturePass {
         let cells = (self.layout.cols as usize, self.layout.picture_rows as usize);
+        let shape = CellShape {
+            glyphs: app.glyphs,
+            aspect: self.cell_aspect,
+        };
         render_picture_pass(
             &View::of(app),
             cells,
-            app.glyphs,
+            shape,
             app.quality.supersampling(),
             sampling,
             &mut self.framebuffer,

@@ -4,12 +4,16 @@
 
 use bumpwork::term::{ColorChoice, ColorMode, GlyphSet};
 use bumpwork::tui::{
-    Accumulation, Action, App, MAX_PASSES, Sampling, Screen, View, WorkbenchOptions, render_frame,
-    render_picture_pass,
+    Accumulation, Action, App, CellShape, DEFAULT_CELL_ASPECT, MAX_PASSES, Sampling, Screen, View,
+    WorkbenchOptions, render_frame, render_picture_pass,
 };
 use glam::Vec3;
 
 const CELLS: (usize, usize) = (80, 24);
+const HALF_BLOCKS: CellShape = CellShape {
+    glyphs: GlyphSet::HalfBlock,
+    aspect: DEFAULT_CELL_ASPECT,
+};
 
 fn app(scene: &str) -> App {
     let options = WorkbenchOptions {
@@ -56,7 +60,7 @@ fn the_error_falls_as_passes_accrue_and_the_settled_picture_is_within_the_bound(
         let mut framebuffer = bumpwork::raster::Framebuffer::new(0, 0, Vec3::ZERO);
         let view = View::of(&app);
         let pass = |sampling: Sampling, framebuffer: &mut _| {
-            render_picture_pass(&view, CELLS, GlyphSet::HalfBlock, 1, sampling, framebuffer)
+            render_picture_pass(&view, CELLS, HALF_BLOCKS, 1, sampling, framebuffer)
         };
         let first = pass(Sampling::CENTRE, &mut framebuffer);
         let reference = area_averaged(&app, first.size);
