@@ -37,6 +37,8 @@ pub struct App {
     pub cell_size: Option<(u32, u32)>,
     pub clock: Clock,
     pub help: bool,
+    /// Lines of the help scrolled past, when it is taller than the screen.
+    pub help_scroll: u16,
     pub quit: bool,
     pub message: Message,
     pub report: FrameReport,
@@ -120,6 +122,7 @@ impl App {
             cell_size: options.cell_size,
             clock: Clock::new(options.fps),
             help: false,
+            help_scroll: 0,
             quit: false,
             message: Message::None,
             report: FrameReport::default(),
@@ -161,6 +164,13 @@ impl App {
             Action::ToggleHelp => self.help = !self.help,
             Action::Back if self.help => self.help = false,
             Action::Back => self.quit = true,
+            // While the help is open, up and down scroll it instead of orbiting behind it.
+            Action::Orbit(_, dy) if self.help => {
+                self.help_scroll = match dy > 0.0 {
+                    true => self.help_scroll.saturating_sub(1),
+                    false => (self.help_scroll + 1).min(super::keymap::help_lines().count() as u16),
+                };
+            }
             Action::NextScene => self.switch_scene(1),
             Action::PreviousScene => self.switch_scene(-1),
             Action::Export => self.export(),

@@ -196,7 +196,7 @@ impl Screen {
         }
         if app.help {
             let picture = Rect::new(0, 0, cols, self.layout.picture_rows);
-            draw_help(picture, style, &mut buffer);
+            draw_help(picture, style, app.help_scroll, &mut buffer);
         }
         to_cells(&buffer)
     }

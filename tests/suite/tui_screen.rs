@@ -317,3 +317,34 @@ fn information_expires_and_errors_stay() {
     app.expire_message(start + Duration::from_secs(100));
     assert!(matches!(app.message, Message::Error(_)));
 }
+
+/// The whole screen as text, a line a row.
+fn screen_text(screen: &Screen, app: &App) -> String {
+    let grid = screen.compose(app);
+    (0..screen.layout().rows as usize)
+        .map(|row| grid.row(row).iter().map(|c| c.glyph).collect::<String>() + "\n")
+        .collect()
+}
+
+#[test]
+fn at_80_by_24_every_key_of_the_help_can_be_scrolled_to() {
+    let mut app = app();
+    let screen = Screen::new(80, 24);
+    app.apply(Action::ToggleHelp);
+    let descriptions: Vec<&str> = bumpwork::tui::keymap::help_lines()
+        .map(|b| b.description)
+        .collect();
+    let mut seen: std::collections::HashSet<&str> = std::collections::HashSet::new();
+    for _ in 0..=descriptions.len() {
+        let text = screen_text(&screen, &app);
+        seen.extend(descriptions.iter().copied().filter(|d| text.contains(d)));
+        // Down scrolls the help; the view behind it does not move.
+        let camera = app.camera();
+        app.apply(Action::Orbit(0.0, -10.0));
+        assert_eq!(app.camera(), camera, "the view orbited behind the help");
+    }
+    let missing: Vec<_> = descriptions.iter().filter(|d| !seen.contains(*d)).collect();
+    assert!(missing.is_empty(), "never shown at 80x24: {missing:?}");
+    app.apply(Action::Back);
+    assert!(!app.help);
+}
