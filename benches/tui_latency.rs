@@ -1,6 +1,8 @@
 //! Key press to finished frame in the workbench at 200×60 cells (key map → state → render → encode
 //! → diff write into memory), median and p95; bytes per frame for a full redraw, an orbit step and
 //! an idle frame; and chafa's bytes for the same picture at the same size, measured in the same run.
+//! Then the picture's quality per colour mode: the first frame and the settled (refined) picture
+//! against the 64-sample area average, the time to settle, and chafa's picture of that average.
 //! Run: `cargo bench --bench tui_latency`.
 
 use bumpwork::measure::Timing;
@@ -82,6 +84,7 @@ fn main() {
     );
     println!("idle          {:<32} {idle_bytes:>8} B", ms(&idle));
     compare_with_chafa(&app);
+    picture_quality();
 }
 
 /// The picture alone (no status line), ours as a full frame and chafa's, from the same pixels.
@@ -133,5 +136,162 @@ fn compare_with_chafa(app: &App) {
             String::from_utf8_lossy(&o.stderr).trim()
         ),
         Err(e) => println!("chafa not run ({e}); install it to compare"),
+    }
+}
+
+/// Cells of the picture-quality comparison: the 160 × 50 picture rows plus the status
+/// line.
+const QUALITY_COLS: u16 = 160;
+const QUALITY_ROWS: u16 = 51;
+/// Samples per sub-pixel side of the reference: 8 × 8, box-averaged in linear light.
+const REFERENCE_GRID: usize = 8;
+
+/// The sub-pixels a terminal shows after `bytes`, read back through a terminal emulator (vt100):
+/// half blocks (`▀` foreground on top, background below, and the other three glyphs).
+fn shown_sub_pixels(bytes: &[u8], cols: usize, rows: usize) -> Vec<[u8; 3]> {
+    let side = |n: usize| std::num::NonZero::new(n as u16).expect("a screen of at least one cell");
+    let mut parser = vt100::Parser::new(side(rows + 1), side(cols), 0);
+    parser.process(bytes);
+    let screen = parser.screen();
+    let rgb = |colour: vt100::Color, default: [u8; 3]| match colour {
+        vt100::Color::Rgb(r, g, b) => [r, g, b],
+        vt100::Color::Idx(i) => bumpwork::term::palette::xterm256_rgb(i),
+        vt100::Color::Default => default,
+    };
+    let mut pixels = vec![[0; 3]; cols * rows * 2];
+    for row in 0..rows {
+        for col in 0..cols {
+            let Some(cell) = screen.cell(row as u16, col as u16) else {
+                continue;
+            };
+            let (fg, bg) = (rgb(cell.fgcolor(), [229; 3]), rgb(cell.bgcolor(), [0; 3]));
+            let (top, bottom) = match cell.contents().chars().next() {
+                Some('▀') => (fg, bg),
+                Some('▄') => (bg, fg),
+                Some('█') => (fg, fg),
+                _ => (bg, bg),
+            };
+            pixels[(2 * row) * cols + col] = top;
+            pixels[(2 * row + 1) * cols + col] = bottom;
+        }
+    }
+    pixels
+}
+
+fn psnr(a: &[[u8; 3]], b: &[[u8; 3]]) -> f64 {
+    let squared: f64 = a
+        .iter()
+        .zip(b)
+        .flat_map(|(p, q)| (0..3).map(move |i| (f64::from(p[i]) - f64::from(q[i])).powi(2)))
+        .sum();
+    let mse = squared / (a.len() * 3) as f64;
+    10.0 * (255.0f64.powi(2) / mse.max(1e-9)).log10()
+}
+
+/// The view's sub-pixels averaged from `REFERENCE_GRID`² samples each, as 8-bit sRGB.
+fn reference_picture(app: &App, width: usize, height: usize) -> Vec<[u8; 3]> {
+    let mut framebuffer = Framebuffer::new(0, 0, Vec3::ZERO);
+    let (w, h) = (width * REFERENCE_GRID, height * REFERENCE_GRID);
+    render_frame(&View::of(app), w as u32, h as u32, &mut framebuffer);
+    let colour = framebuffer.color();
+    let per = (REFERENCE_GRID * REFERENCE_GRID) as f32;
+    (0..width * height)
+        .map(|i| {
+            let (x, y) = (i % width, i / width);
+            let sum: Vec3 = (0..REFERENCE_GRID * REFERENCE_GRID)
+                .map(|k| {
+                    let (dx, dy) = (k % REFERENCE_GRID, k / REFERENCE_GRID);
+                    colour[(y * REFERENCE_GRID + dy) * w + x * REFERENCE_GRID + dx]
+                })
+                .sum();
+            (sum / per)
+                .to_array()
+                .map(bumpwork::raster::linear_to_srgb8)
+        })
+        .collect()
+}
+
+/// chafa's picture of the reference still in `colours` (its `--colors` name), read back.
+fn chafa_sub_pixels(
+    reference: &[[u8; 3]],
+    size: (usize, usize),
+    colours: &str,
+) -> Option<Vec<[u8; 3]>> {
+    let (width, height) = size;
+    let (cols, rows) = (width, height / 2);
+    let mut framebuffer = Framebuffer::new(width as u32, height as u32, Vec3::ZERO);
+    for (pixel, rgb) in framebuffer.color_mut().iter_mut().zip(reference) {
+        *pixel =
+            Vec3::from_array(rgb.map(|v| bumpwork::texture::srgb_to_linear(f32::from(v) / 255.0)));
+    }
+    let path = std::env::temp_dir().join(format!("bumpwork-quality-{}.png", std::process::id()));
+    bumpwork::export::write_png(&framebuffer, &path).ok()?;
+    let output = Command::new("chafa")
+        .args(["--symbols", "half", "--colors", colours, "-f", "symbols"])
+        .args([
+            "--animate",
+            "off",
+            "--stretch",
+            "--size",
+            &format!("{cols}x{rows}"),
+        ])
+        .arg(&path)
+        .output();
+    let _ = std::fs::remove_file(&path);
+    let output = output.ok().filter(|o| o.status.success())?;
+    // chafa ends lines with LF alone; a terminal's line discipline adds the carriage return.
+    let lines = String::from_utf8_lossy(&output.stdout).replace('\n', "\r\n");
+    Some(shown_sub_pixels(lines.as_bytes(), cols, rows))
+}
+
+/// From a change to the settled picture: the first frame's and the settled picture's PSNR against
+/// the 64-sample area average, the time to settle, the bytes written on the way, and chafa's
+/// PSNR given the reference itself, per colour mode.
+fn picture_quality() {
+    let (cols, rows) = (QUALITY_COLS as usize, QUALITY_ROWS as usize - 1);
+    let size = GlyphSet::HalfBlock.picture_size(cols, rows);
+    println!(
+        "\npicture quality, {SCENE}, {cols}x{rows} cells of half blocks, against the {}-sample area average:",
+        REFERENCE_GRID * REFERENCE_GRID
+    );
+    let mut app = app();
+    let reference = reference_picture(&app, size.0, size.1);
+    for (mode, chafa_name) in [
+        (ColorMode::TrueColor, "full"),
+        (ColorMode::Ansi256, "256"),
+        (ColorMode::Ansi16, "16"),
+    ] {
+        app.colors = mode;
+        let mut settle_times = Vec::new();
+        let mut result = (0.0, 0.0, 0);
+        for _ in 0..5 {
+            let mut screen = Screen::new(QUALITY_COLS, QUALITY_ROWS);
+            let mut bytes = Vec::new();
+            app.invalidate();
+            let start = Instant::now();
+            screen.draw(&mut app, &mut bytes).unwrap();
+            let first = psnr(&shown_sub_pixels(&bytes, cols, rows), &reference);
+            while screen.refining(&app) {
+                screen.refine(&mut app, &mut bytes).unwrap();
+            }
+            settle_times.push(start.elapsed());
+            let settled = psnr(&shown_sub_pixels(&bytes, cols, rows), &reference);
+            result = (first, settled, bytes.len());
+        }
+        settle_times.sort();
+        let chafa = match chafa_sub_pixels(&reference, size, chafa_name) {
+            Some(pixels) => format!("{:.1} dB", psnr(&pixels, &reference)),
+            None => "not run (apt-get install chafa)".into(),
+        };
+        println!(
+            "{:<10} first frame {:.1} dB, settled {:.1} dB in {:.0} ms (median of 5; {:.0}–{:.0}), {} B written; chafa --colors {chafa_name}: {chafa}",
+            format!("{mode:?}"),
+            result.0,
+            result.1,
+            settle_times[2].as_secs_f64() * 1e3,
+            settle_times[0].as_secs_f64() * 1e3,
+            settle_times[4].as_secs_f64() * 1e3,
+            result.2,
+        );
     }
 }

@@ -138,10 +138,11 @@ impl Screen {
             return Ok(0);
         }
         self.accumulation.add(&pass.linear);
-        // Drawn when the sample count doubles: six redraws from 2 to 64 passes, so a converging
-        // picture costs a slow link a few frames, not one per pass.
+        // Drawn when the sample count has grown fourfold: at 4, 16 and 64 passes, so a
+        // converging picture costs a slow link three frames more, not one per pass.
         let passes = self.accumulation.passes();
-        if !passes.is_power_of_two() && self.accumulation.wants_more() {
+        let quadrupled = passes.is_power_of_two() && passes.trailing_zeros().is_multiple_of(2);
+        if !quadrupled && self.accumulation.wants_more() {
             return Ok(0);
         }
         let options = EncodeOptions::new(app.colors, app.glyphs);
