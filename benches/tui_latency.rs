@@ -22,8 +22,12 @@ const SCENE: &str = "sphere-on-plane-dimples";
 const RUNS: usize = 41;
 
 fn app() -> App {
+    app_of(SCENE)
+}
+
+fn app_of(scene: &str) -> App {
     let options = WorkbenchOptions {
-        scenes: vec![SCENE.into()],
+        scenes: vec![scene.into()],
         colors: ColorChoice::Fixed(ColorMode::TrueColor),
         ..WorkbenchOptions::default()
     };
@@ -248,13 +252,19 @@ fn chafa_sub_pixels(
 /// the 64-sample area average, the time to settle, the bytes written on the way, and chafa's
 /// PSNR given the reference itself, per colour mode.
 fn picture_quality() {
+    for scene in [SCENE, "textured-sphere"] {
+        picture_quality_of(scene);
+    }
+}
+
+fn picture_quality_of(scene: &str) {
     let (cols, rows) = (QUALITY_COLS as usize, QUALITY_ROWS as usize - 1);
     let size = GlyphSet::HalfBlock.picture_size(cols, rows);
     println!(
-        "\npicture quality, {SCENE}, {cols}x{rows} cells of half blocks, against the {}-sample area average:",
+        "\npicture quality, {scene}, {cols}x{rows} cells of half blocks, against the {}-sample area average:",
         REFERENCE_GRID * REFERENCE_GRID
     );
-    let mut app = app();
+    let mut app = app_of(scene);
     let reference = reference_picture(&app, size.0, size.1);
     for (mode, chafa_name) in [
         (ColorMode::TrueColor, "full"),
