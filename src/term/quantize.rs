@@ -62,24 +62,35 @@ const fn bracket_table(levels: &[u8]) -> [(u8, u8); 256] {
 const CUBE_BRACKETS: [(u8, u8); 256] = bracket_table(&CUBE_LEVELS);
 const GREY_BRACKETS: [(u8, u8); 256] = bracket_table(&GREY_LADDER);
 
-/// The index into the levels behind `brackets` that `v` takes at `threshold`.
-fn pick(brackets: &[(u8, u8); 256], v: u8, threshold: u8) -> usize {
-    let (i, t) = brackets[v as usize];
-    i as usize + (threshold < t) as usize
+fn quantize_xterm256(rgb: [u8; 3], threshold: u8) -> u8 {
+    choose(best_xterm256_mix(rgb), threshold)
 }
 
-fn quantize_xterm256(rgb: [u8; 3], threshold: u8) -> u8 {
-    // Decide the family (cube or grey ramp) on the undithered colour, so a flat area dithers within one
-    // family and keeps its average.
-    let grey = weighted_grey(rgb);
-    let nearest_cube = rgb.map(|v| CUBE_LEVELS[pick(&CUBE_BRACKETS, v, 128)]);
-    let nearest_grey = GREY_LADDER[pick(&GREY_BRACKETS, grey, 128)];
-    if distance2(rgb, [nearest_grey; 3]) < distance2(rgb, nearest_cube) {
-        grey_ladder_index(pick(&GREY_BRACKETS, grey, threshold))
-    } else {
-        let [r, g, b] = rgb.map(|v| pick(&CUBE_BRACKETS, v, threshold));
-        cube_index(r, g, b)
+/// The nearest of the palette entries around `rgb` (the eight corners of its cube cell and the
+/// two grey steps around its grey), the partner whose mix with it best reproduces `rgb`, and the
+/// mix fraction. One mix of two entries, as for the 16 colours: dithering each channel on its own
+/// mixes up to eight cube entries into colour noise, and choosing the grey ramp or the cube per
+/// pixel blotches a dull colour (a cat's fur) where the choice flips; a mix may join the two.
+fn best_xterm256_mix(rgb: [u8; 3]) -> (u8, u8, u8) {
+    let cell = rgb.map(|v| CUBE_BRACKETS[v as usize].0 as usize);
+    let grey_step = GREY_BRACKETS[weighted_grey(rgb) as usize].0 as usize;
+    let corners = (0..8).map(|k| {
+        let [r, g, b] = [
+            cell[0] + (k & 1),
+            cell[1] + (k >> 1 & 1),
+            cell[2] + (k >> 2 & 1),
+        ];
+        (
+            cube_index(r, g, b),
+            [CUBE_LEVELS[r], CUBE_LEVELS[g], CUBE_LEVELS[b]],
+        )
+    });
+    let greys = (grey_step..grey_step + 2).map(|k| (grey_ladder_index(k), [GREY_LADDER[k]; 3]));
+    let mut candidates = [(0u8, [0u8; 3]); 10];
+    for (slot, candidate) in candidates.iter_mut().zip(corners.chain(greys)) {
+        *slot = candidate;
     }
+    best_mix(rgb, &candidates, XTERM256_MIX_VARIANCE_PENALTY)
 }
 
 fn weighted_grey(rgb: [u8; 3]) -> u8 {
@@ -94,6 +105,10 @@ fn weighted_grey(rgb: [u8; 3]) -> u8 {
 /// error is its residual plus its whole variance; half keeps the dither where partners are close.
 /// `cargo bench --bench tui_latency` measures the 16-colour picture against the area average.)
 const MIX_VARIANCE_PENALTY: f32 = 0.5;
+
+/// The same for the 256 colours. A colour within a fifth of a grey step of an entry then shows as
+/// that entry, flat: less grain, and nearer the picture it stands for (`tui_latency` measures it).
+const XTERM256_MIX_VARIANCE_PENALTY: f32 = 0.5;
 
 fn quantize_ansi16(rgb: [u8; 3], threshold: u8) -> u8 {
     choose(best_ansi16_mix(rgb), threshold)
@@ -146,12 +161,25 @@ impl Quantizer {
 
 /// The nearest ANSI colour, the partner whose mix with it best reproduces `rgb`, and the mix fraction.
 fn best_ansi16_mix(rgb: [u8; 3]) -> (u8, u8, u8) {
-    let near = nearest_ansi16(rgb);
-    let p1 = ANSI16[near as usize].map(|v| v as f32);
+    let mut candidates = [(0u8, [0u8; 3]); 16];
+    for (i, slot) in candidates.iter_mut().enumerate() {
+        *slot = (i as u8, ANSI16[i]);
+    }
+    best_mix(rgb, &candidates, MIX_VARIANCE_PENALTY)
+}
+
+/// Of `candidates` (palette index, colour): the nearest to `rgb`, the partner whose mix with it
+/// best reproduces `rgb` once the mix's visible spread is counted, and the mix fraction (0..=255).
+fn best_mix(rgb: [u8; 3], candidates: &[(u8, [u8; 3])], penalty: f32) -> (u8, u8, u8) {
+    let &(near, near_rgb) = candidates
+        .iter()
+        .min_by_key(|(_, c)| distance2(rgb, *c))
+        .expect("candidates");
+    let p1 = near_rgb.map(|v| v as f32);
     let c = rgb.map(|v| v as f32);
     let e = [c[0] - p1[0], c[1] - p1[1], c[2] - p1[2]];
     let mut best = (near, 0.0f32, dot_w(e, e));
-    for (far, p2) in ANSI16.iter().enumerate() {
+    for &(far, p2) in candidates {
         let d = [
             p2[0] as f32 - p1[0],
             p2[1] as f32 - p1[1],
@@ -163,9 +191,9 @@ fn best_ansi16_mix(rgb: [u8; 3]) -> (u8, u8, u8) {
         }
         let t = (dot_w(e, d) / dd).clamp(0.0, 1.0);
         let r = [e[0] - t * d[0], e[1] - t * d[1], e[2] - t * d[2]];
-        let cost = dot_w(r, r) + MIX_VARIANCE_PENALTY * t * (1.0 - t) * dd;
+        let cost = dot_w(r, r) + penalty * t * (1.0 - t) * dd;
         if cost < best.2 {
-            best = (far as u8, t, cost);
+            best = (far, t, cost);
         }
     }
     (near, best.0, (best.1 * 255.0).round() as u8)
@@ -173,12 +201,6 @@ fn best_ansi16_mix(rgb: [u8; 3]) -> (u8, u8, u8) {
 
 fn dot_w(a: [f32; 3], b: [f32; 3]) -> f32 {
     (0..3).map(|i| WEIGHTS[i] as f32 * a[i] * b[i]).sum()
-}
-
-fn nearest_ansi16(rgb: [u8; 3]) -> u8 {
-    (0..16u8)
-        .min_by_key(|&i| distance2(rgb, ANSI16[i as usize]))
-        .unwrap_or(0)
 }
 
 /// Whether a pixel is lit in monochrome mode: its luma (Rec. 709 weights on the sRGB values) against the

