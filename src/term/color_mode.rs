@@ -121,7 +121,8 @@ const DIRECT_COLOUR_VARIABLES: &[&str] = &[
 /// a `TERM` of a known 24-bit terminal or ending in `-direct`/`-truecolor` → 24-bit;
 /// `TERM_PROGRAM` (iTerm.app, WezTerm, vscode… 24-bit; Apple_Terminal 256); LC_TERMINAL=iTerm2,
 /// VTE_VERSION ≥ 3600, or a variable only 24-bit terminals set (KITTY_WINDOW_ID, WT_SESSION,
-/// KONSOLE_VERSION…) → 24-bit; a `TERM` with `256color` → 256; anything else → 16.
+/// KONSOLE_VERSION…) → 24-bit; a terminfo entry for `TERM` that sets `RGB` or `Tc` → 24-bit; a
+/// `TERM` with `256color` → 256; anything else → 16.
 pub fn detect_colors(var: impl Fn(&str) -> Option<String>) -> DetectedColors {
     let set = |name: &str| var(name).filter(|v| !v.is_empty());
     let found = |mode, reason: String| DetectedColors { mode, reason };
@@ -163,6 +164,12 @@ pub fn detect_colors(var: impl Fn(&str) -> Option<String>) -> DetectedColors {
         .find(|name| set(name).is_some())
     {
         return found(ColorMode::TrueColor, format!("{name} is set"));
+    }
+    if let Some(flag) = super::terminfo::direct_colour_flag(&term, &var) {
+        return found(
+            ColorMode::TrueColor,
+            format!("the terminfo entry of {} sets {flag}", shown_term()),
+        );
     }
     if term.contains("256color") {
         return found(ColorMode::Ansi256, shown_term());

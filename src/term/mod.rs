@@ -61,6 +61,7 @@ mod sanitize;
 mod sgr;
 mod signals;
 mod split;
+mod terminfo;
 
 pub use ansi_writer::{FrameOptions, FrameWriter, SYNC_BEGIN, SYNC_END, encode_frame};
 pub use cell::{Cell, CellGrid};
