@@ -132,15 +132,7 @@ impl TerminalGuard {
     pub fn enter(mouse_capture: bool) -> io::Result<TerminalGuard> {
         install_panic_hook();
         let guard = TerminalGuard { _private: () };
-        enable_raw_mode()?;
-        mark_active(TerminalModes::RAW);
-        let mut screen = TerminalModes::ALTERNATE_SCREEN | TerminalModes::HIDDEN_CURSOR;
-        if mouse_capture {
-            screen = screen | TerminalModes::MOUSE_CAPTURE;
-        }
-        // Marked before writing: a half-written enter sequence is still worth undoing.
-        mark_active(screen);
-        write_enter_sequence(&mut io::stdout(), screen)?;
+        take_terminal(mouse_capture)?;
         Ok(guard)
     }
 
@@ -154,6 +146,32 @@ impl Drop for TerminalGuard {
     fn drop(&mut self) {
         restore_terminal();
     }
+}
+
+/// Ctrl-Z: gives the terminal back as on quitting, stops the process (SIGSTOP, as the shell's job
+/// control expects), and when continued (`fg`) takes the terminal again with the same modes. The
+/// caller draws everything again: the shell has drawn over the screen meanwhile.
+pub fn suspend_and_resume(mouse_capture: bool) -> io::Result<()> {
+    restore_terminal();
+    // SAFETY: raising a signal at our own process; SIGSTOP cannot be caught, so this returns
+    // only once the process is continued.
+    unsafe {
+        libc::raise(libc::SIGSTOP);
+    }
+    take_terminal(mouse_capture)
+}
+
+/// Sets the workbench's modes, each marked active before it is set: a half-written enter
+/// sequence is still worth undoing.
+fn take_terminal(mouse_capture: bool) -> io::Result<()> {
+    enable_raw_mode()?;
+    mark_active(TerminalModes::RAW);
+    let mut screen = TerminalModes::ALTERNATE_SCREEN | TerminalModes::HIDDEN_CURSOR;
+    if mouse_capture {
+        screen = screen | TerminalModes::MOUSE_CAPTURE;
+    }
+    mark_active(screen);
+    write_enter_sequence(&mut io::stdout(), screen)
 }
 
 /// Chains a hook that restores the terminal before the previous hook prints the panic, so the message

@@ -75,7 +75,7 @@ pub use encode::{EncodeOptions, encode};
 pub use glyphs::{GlyphSet, complement};
 pub use guard::{
     TerminalGuard, TerminalModes, install_panic_hook, restore_terminal, restore_terminal_to,
-    write_enter_sequence, write_restore_sequence,
+    suspend_and_resume, write_enter_sequence, write_restore_sequence,
 };
 pub use picture::{Picture, PictureSizeError};
 pub use quantize::{Palette, Quantizer, monochrome_lit, quantize};

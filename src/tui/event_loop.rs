@@ -12,6 +12,8 @@ use crate::term::{ShutdownSignals, TerminalGuard};
 use crossterm::event;
 use std::io;
 use std::path::Path;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
 /// Longest wait for input, so shutdown signals are noticed promptly.
@@ -48,7 +50,7 @@ pub fn run(options: &WorkbenchOptions) -> Result<(), Error> {
     let signals = ShutdownSignals::register().map_err(terminal_error)?;
     signals.watch_terminal().map_err(terminal_error)?;
     let guard = TerminalGuard::enter(options.mouse).map_err(terminal_error)?;
-    let result = event_loop(&mut app, &signals);
+    let result = event_loop(&mut app, &signals, options.mouse);
     drop(guard);
     if let Some(signal) = signals.received() {
         // Cancels an export under way and waits for it, so its temporary file is removed.
@@ -58,7 +60,11 @@ pub fn run(options: &WorkbenchOptions) -> Result<(), Error> {
     result.map_err(terminal_error)
 }
 
-fn event_loop(app: &mut App, signals: &ShutdownSignals) -> io::Result<()> {
+fn event_loop(app: &mut App, signals: &ShutdownSignals, mouse: bool) -> io::Result<()> {
+    // SIGTSTP (the shell's `kill -TSTP`, a terminal's suspend key outside raw mode) suspends as
+    // Ctrl-Z does, instead of stopping the process with the terminal raw.
+    let suspend_asked = Arc::new(AtomicBool::new(false));
+    let _tstp = signal_hook::flag::register(signal_hook::consts::SIGTSTP, suspend_asked.clone())?;
     let (cols, rows) = crossterm::terminal::size()?;
     let mut screen = Screen::new(cols, rows);
     screen.set_cell_aspect(cell_aspect(app.cell_size), app);
@@ -87,10 +93,18 @@ fn event_loop(app: &mut App, signals: &ShutdownSignals) -> io::Result<()> {
             true => Duration::ZERO,
             false => wait_time(app, last_frame),
         };
+        let mut suspend = suspend_asked.swap(false, Ordering::SeqCst);
         if event::poll(wait)? {
-            handle_pending_events(app, &mut screen, &mut input)?;
+            suspend |= handle_pending_events(app, &mut screen, &mut input)?;
         } else {
             let _ = screen.refine(app, &mut io::stdout().lock());
+        }
+        if suspend && signals.received().is_none() {
+            crate::term::suspend_and_resume(mouse)?;
+            // The shell drew over the screen, and the window may have changed meanwhile.
+            let (cols, rows) = crossterm::terminal::size()?;
+            screen.resize(cols, rows, app);
+            screen.set_cell_aspect(cell_aspect(app.cell_size), app);
         }
     }
     Ok(())
@@ -109,14 +123,17 @@ fn wait_time(app: &App, last_frame: Instant) -> Duration {
     }
 }
 
-/// Applies every event already waiting, so a burst of key repeats costs one frame, not many.
+/// Applies every event already waiting, so a burst of key repeats costs one frame, not many;
+/// returns whether one asked to suspend.
 fn handle_pending_events(
     app: &mut App,
     screen: &mut Screen,
     input: &mut InputState,
-) -> io::Result<()> {
+) -> io::Result<bool> {
+    let mut suspend = false;
     loop {
         match input.translate(event::read()?) {
+            Input::Suspend => suspend = true,
             Input::Action(action) => app.apply(action),
             Input::Resize(cols, rows) => {
                 screen.resize(cols, rows, app);
@@ -126,8 +143,8 @@ fn handle_pending_events(
             Input::Redraw => screen.invalidate(app),
             Input::Nothing => {}
         }
-        if app.quit || !event::poll(Duration::ZERO)? {
-            return Ok(());
+        if app.quit || suspend || !event::poll(Duration::ZERO)? {
+            return Ok(suspend);
         }
     }
 }

@@ -2,7 +2,9 @@
 
 use super::action::Action;
 use super::keymap::action_for;
-use crossterm::event::{Event, MouseButton, MouseEvent, MouseEventKind};
+use crossterm::event::{
+    Event, KeyCode, KeyEvent, KeyEventKind, KeyModifiers, MouseButton, MouseEvent, MouseEventKind,
+};
 
 /// Degrees of orbit per cell dragged: cells are twice as tall as wide, so rows turn twice as far.
 const DRAG_DEGREES_PER_COLUMN: f64 = 2.0;
@@ -14,9 +16,18 @@ const WHEEL_ZOOM: f64 = 1.1;
 pub enum Input {
     Action(Action),
     Resize(u16, u16),
-    /// The terminal may have drawn over us (focus regained): draw everything again.
+    /// The terminal may have drawn over us (focus regained, Ctrl-L): draw everything again.
     Redraw,
+    /// Ctrl-Z: give the terminal back and stop until continued.
+    Suspend,
     Nothing,
+}
+
+/// Whether `key` is a press of Ctrl and `letter` (raw mode delivers these as keys, not signals).
+fn is_ctrl(key: &KeyEvent, letter: char) -> bool {
+    key.kind != KeyEventKind::Release
+        && key.modifiers.contains(KeyModifiers::CONTROL)
+        && matches!(key.code, KeyCode::Char(c) if c.eq_ignore_ascii_case(&letter))
 }
 
 /// Remembers where a mouse drag was, to turn the next position into an orbit step.
@@ -28,6 +39,8 @@ pub struct InputState {
 impl InputState {
     pub fn translate(&mut self, event: Event) -> Input {
         match event {
+            Event::Key(key) if is_ctrl(&key, 'z') => Input::Suspend,
+            Event::Key(key) if is_ctrl(&key, 'l') => Input::Redraw,
             Event::Key(key) => action_for(&key).map_or(Input::Nothing, Input::Action),
             Event::Resize(cols, rows) => Input::Resize(cols, rows),
             Event::Mouse(mouse) => self.mouse(mouse),

@@ -129,3 +129,57 @@ fn a_signal_during_an_export_leaves_no_file() {
         assert!(left.is_empty(), "{name} left {left:?}");
     }
 }
+
+/// The process state letter Linux reports (`T` when stopped).
+fn process_state(pid: u32) -> char {
+    let stat = std::fs::read_to_string(format!("/proc/{pid}/stat")).unwrap_or_default();
+    // The state follows the command name, which is in parentheses.
+    stat.rsplit_once(") ")
+        .and_then(|(_, rest)| rest.chars().next())
+        .unwrap_or('?')
+}
+
+fn wait_until(what: &str, condition: impl Fn() -> bool) {
+    let deadline = std::time::Instant::now() + std::time::Duration::from_secs(10);
+    while !condition() {
+        assert!(
+            std::time::Instant::now() < deadline,
+            "timed out waiting for {what}"
+        );
+        std::thread::sleep(std::time::Duration::from_millis(10));
+    }
+}
+
+/// Ctrl-Z and SIGTSTP give the terminal back and stop the workbench; continued, it takes the
+/// terminal again and draws everything.
+#[test]
+fn ctrl_z_suspends_with_the_terminal_restored_and_continuing_redraws() {
+    for suspend in ["Ctrl-Z", "SIGTSTP"] {
+        let mut command = CommandBuilder::new(env!("CARGO_BIN_EXE_bumpwork"));
+        command.args(["view", "plane-dimples"]);
+        command.env("TERM", "xterm-256color");
+        let mut session = Session::spawn(command, COLS, ROWS);
+        session.wait_for("the first frame", status_contains("plane-dimples"));
+        let pid = session.child.process_id().unwrap();
+        match suspend {
+            "Ctrl-Z" => session.send("\x1a"),
+            // SAFETY: kill only sends a signal to the process we started.
+            _ => assert_eq!(unsafe { libc::kill(pid as i32, libc::SIGTSTP) }, 0),
+        }
+        wait_until("the process to stop", || process_state(pid) == 'T');
+        session.wait_for("the main screen with a cursor", |screen| {
+            !screen.alternate_screen() && !screen.hide_cursor()
+        });
+        // SAFETY: as above.
+        assert_eq!(unsafe { libc::kill(pid as i32, libc::SIGCONT) }, 0);
+        session.wait_for("the picture again", |screen| {
+            screen.alternate_screen() && status_contains("plane-dimples")(screen)
+        });
+        session.send("q");
+        assert_eq!(
+            session.exit_within(std::time::Duration::from_secs(5)),
+            Some(0),
+            "{suspend}"
+        );
+    }
+}
