@@ -28,6 +28,8 @@ enum Command {
     Gallery(commands::gallery::GalleryArgs),
     /// Check pattern files, scene files and images without rendering.
     Check(commands::check::CheckArgs),
+    /// List the shipped patterns (kind, parameters, what each is), or print one's file.
+    Patterns(commands::patterns::PatternsArgs),
     /// Time every quality preset and knob on standard scenes and measure their error against
     /// the exact reference.
     Bench(commands::bench::BenchArgs),
@@ -88,6 +90,7 @@ fn run(cli: Cli) -> Result<(), Error> {
     match cli.command {
         Some(Command::Render(args)) => commands::render::run(args),
         Some(Command::Check(args)) => commands::check::run(args),
+        Some(Command::Patterns(args)) => commands::patterns::run(args),
         Some(Command::Gallery(args)) => commands::gallery::run(args),
         Some(Command::View(args)) => commands::view::run(args),
         Some(Command::Completions(args)) => commands::completions::run(args, &mut Cli::command()),

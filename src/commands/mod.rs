@@ -16,6 +16,7 @@ pub mod completions;
 pub mod gallery;
 mod interrupt;
 pub mod man_page;
+pub mod patterns;
 mod progress;
 pub mod render;
 pub mod view;

@@ -249,3 +249,37 @@ fn help_fits_100_columns_and_shells_and_man_get_their_files() {
         "invalid value 'cmd.exe'",
     );
 }
+
+#[test]
+fn patterns_lists_every_shipped_pattern_and_prints_one() {
+    let output = bumpwork(&["patterns"]);
+    assert!(output.status.success());
+    let list = String::from_utf8(output.stdout).unwrap();
+    for (name, source) in bumpwork::pattern::BUILTINS {
+        let pattern = bumpwork::pattern::Pattern::compile(source, name).unwrap();
+        let line = list
+            .lines()
+            .find(|l| l.starts_with(&format!("{name} (")))
+            .unwrap_or_else(|| panic!("{name} missing from:\n{list}"));
+        let kind = match pattern.output() {
+            bumpwork::pattern::OutputKind::Color => "(colour)",
+            bumpwork::pattern::OutputKind::Slope => "(slope)",
+            bumpwork::pattern::OutputKind::Height => "(height)",
+        };
+        assert!(line.contains(kind), "{line}");
+        for param in pattern.params() {
+            assert!(
+                list.contains(&format!("{}={}", param.name, param.default)),
+                "{name}"
+            );
+        }
+    }
+    let file = bumpwork(&["patterns", "dimples"]);
+    assert!(file.status.success());
+    let shipped = std::fs::read(Path::new(env!("CARGO_MANIFEST_DIR")).join("patterns/dimples.pat"));
+    assert_eq!(file.stdout, shipped.unwrap());
+    assert_user_error(
+        &bumpwork(&["patterns", "dimpels"]),
+        "no shipped pattern is called 'dimpels'",
+    );
+}
