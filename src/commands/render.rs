@@ -69,9 +69,9 @@ pub struct RenderArgs {
     /// What the still shows [default: shaded].
     #[arg(long, value_parser = clap::builder::PossibleValuesParser::new(mode_names()))]
     mode: Option<String>,
-    /// File format.
-    #[arg(long, value_enum, default_value_t = StillFormat::Png)]
-    format: StillFormat,
+    /// File format, where the output's extension does not say (.png, .ppm, .pov) [default: png].
+    #[arg(long, value_enum)]
+    format: Option<StillFormat>,
     /// Print the built-in scene names and exit.
     #[arg(long)]
     list: bool,
@@ -88,7 +88,8 @@ pub fn run(args: RenderArgs) -> Result<(), Error> {
         return Ok(());
     }
     let output = args.output.clone().expect("clap requires -o unless --list");
-    check_outputs(&args, &output)?;
+    let format = output_format(&output, args.format)?;
+    check_outputs(&args, &output, format)?;
     let start = match &args.from {
         Some(still) => from_still(still, args.read_outside)?,
         None => from_source(args.scene.as_deref().expect("clap requires a scene"))?,
@@ -107,20 +108,59 @@ pub fn run(args: RenderArgs) -> Result<(), Error> {
             scene_text: &start.scene_text,
             recipe: &recipe,
         };
-        render_one(&request, &path, args.format, &interrupt)?;
+        render_one(&request, &path, format, &interrupt)?;
     }
     Ok(())
 }
 
+/// The format the output's extension names, checked against `--format`; `--format` (else PNG)
+/// where the extension names none.
+fn output_format(output: &Path, asked: Option<StillFormat>) -> Result<StillFormat, Error> {
+    let extension = output
+        .extension()
+        .map(|e| e.to_string_lossy().to_ascii_lowercase());
+    let named = match extension.as_deref() {
+        Some("png") => Some(StillFormat::Png),
+        Some("ppm") => Some(StillFormat::Ppm),
+        Some("pov") => Some(StillFormat::Pov),
+        Some("jpg" | "jpeg") => {
+            return Err(Error::InvalidArgument(
+                "stills are not written as JPEG: it would lose the picture's precision and its \
+                 recipe; name a .png (or .ppm) file"
+                    .into(),
+            ));
+        }
+        _ => None,
+    };
+    match (named, asked) {
+        (Some(named), Some(asked)) if named != asked => Err(Error::InvalidArgument(format!(
+            "-o {} names a {} file but --format says {}; drop one of them",
+            super::sanitized(&output.display().to_string()),
+            format_name(named),
+            format_name(asked)
+        ))),
+        (Some(format), _) | (None, Some(format)) => Ok(format),
+        (None, None) => Ok(StillFormat::Png),
+    }
+}
+
+fn format_name(format: StillFormat) -> &'static str {
+    match format {
+        StillFormat::Png => "png",
+        StillFormat::Ppm => "ppm",
+        StillFormat::Pov => "pov",
+    }
+}
+
 /// Every file the render would write can be written, before any work is done.
-fn check_outputs(args: &RenderArgs, output: &Path) -> Result<(), Error> {
+fn check_outputs(args: &RenderArgs, output: &Path, format: StillFormat) -> Result<(), Error> {
     if output.as_os_str() == STANDARD_OUTPUT {
         if args.time_range.is_some() {
             return Err(Error::InvalidArgument(
                 "-o - writes one still; a --time-range sequence needs a file name to number".into(),
             ));
         }
-        if args.format == StillFormat::Pov {
+        if format == StillFormat::Pov {
             return Err(Error::InvalidArgument(
                 "-o - cannot take a POV-Ray scene: its image maps are written beside it".into(),
             ));

@@ -283,3 +283,41 @@ fn patterns_lists_every_shipped_pattern_and_prints_one() {
         "no shipped pattern is called 'dimpels'",
     );
 }
+
+#[test]
+fn the_output_format_follows_the_extension_and_a_mismatch_is_refused() {
+    let dir = temp_dir("format-by-extension");
+    let render = |name: &str, format: Option<&str>| {
+        let path = dir.join(name);
+        let mut args = vec![
+            "render",
+            "plane-dimples",
+            "--size",
+            "8x6",
+            "-o",
+            path.to_str().unwrap(),
+        ];
+        args.extend(format.iter().flat_map(|f| ["--format", f]));
+        let output = bumpwork(&args);
+        (output, std::fs::read(&path).ok())
+    };
+    let (output, ppm) = render("a.ppm", None);
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert!(ppm.unwrap().starts_with(b"P6"), "a .ppm name gives a PPM");
+    let (_, png) = render("b.still", None);
+    assert!(
+        png.unwrap().starts_with(b"\x89PNG"),
+        "no extension to go by: PNG"
+    );
+    let (_, ppm) = render("c.still", Some("ppm"));
+    assert!(
+        ppm.unwrap().starts_with(b"P6"),
+        "--format where the extension says nothing"
+    );
+    let (output, written) = render("d.png", Some("ppm"));
+    assert_user_error(&output, "names a png file but --format says ppm");
+    assert!(written.is_none());
+    let (output, written) = render("e.jpg", None);
+    assert_user_error(&output, "not written as JPEG");
+    assert!(written.is_none());
+}
