@@ -8,6 +8,7 @@ use bumpwork::export::{
     ContactSheet, SheetLayout, SheetPicture, StillFormat, StillRequest, check_destination,
     read_png_rgb8, write_still,
 };
+use bumpwork::overrides::{Override, apply_to_quality, apply_where_known};
 use bumpwork::quality::Quality;
 use bumpwork::shade::ShaderMode;
 use bumpwork::still::{MAX_SAMPLES, Recipe, ResolveFilter, StillSettings};
@@ -36,6 +37,10 @@ pub struct GalleryArgs {
     /// Only these built-in scenes, comma-separated [default: all].
     #[arg(long, value_delimiter = ',')]
     scenes: Vec<String>,
+    /// A setting, KEY=VALUE (repeatable), as for `render --set`; a scene setting applies to the
+    /// scenes that have it, and one no scene has is an error.
+    #[arg(long = "set", value_name = "KEY=VALUE", value_parser = Override::parse)]
+    set: Vec<Override>,
 }
 
 /// The gallery's directory, made if missing; anything else of that name is refused.
@@ -52,6 +57,7 @@ fn make_directory(directory: &Path) -> Result<(), Error> {
 
 pub fn run(args: GalleryArgs) -> Result<(), Error> {
     let names = scene_names(&args.scenes)?;
+    check_settings(&names, &args.set)?;
     let layout = SheetLayout {
         thumbnail: args.thumbnail,
         columns: args.columns,
@@ -90,6 +96,29 @@ pub fn run(args: GalleryArgs) -> Result<(), Error> {
     Ok(())
 }
 
+/// Every `--set` is valid for the gallery: its quality knobs, and each scene setting taken by at
+/// least one of the scenes.
+fn check_settings(names: &[String], settings: &[Override]) -> Result<(), Error> {
+    apply_to_quality(settings, Quality::interactive()).map_err(Error::InvalidArgument)?;
+    let mut taken = vec![false; settings.len()];
+    for name in names {
+        let mut scene = bumpwork::scene::load_source(name)?;
+        let here = apply_where_known(settings, &mut scene).map_err(Error::InvalidArgument)?;
+        taken.iter_mut().zip(here).for_each(|(t, h)| *t |= h);
+    }
+    match settings
+        .iter()
+        .zip(&taken)
+        .find(|(o, taken)| o.is_binding() && !**taken)
+    {
+        Some((o, _)) => Err(Error::InvalidArgument(format!(
+            "--set {}: no scene of the gallery has that parameter",
+            o.shown()
+        ))),
+        None => Ok(()),
+    }
+}
+
 fn scene_names(asked: &[String]) -> Result<Vec<String>, Error> {
     if asked.is_empty() {
         return Ok(bumpwork::scene::PRESET_NAMES
@@ -116,14 +145,16 @@ fn render_scene(
     progress: &mut dyn FnMut(f64),
     interrupt: &Interrupt,
 ) -> Result<(), Error> {
-    let scene = bumpwork::scene::load_source(name)?;
+    let mut scene = bumpwork::scene::load_source(name)?;
+    apply_where_known(&args.set, &mut scene).map_err(Error::InvalidArgument)?;
     let camera = scene.camera.clone();
+    let quality = Quality {
+        samples: args.samples,
+        ..Quality::interactive()
+    };
     let settings = StillSettings {
         size: args.size,
-        quality: Quality {
-            samples: args.samples,
-            ..Quality::interactive()
-        },
+        quality: apply_to_quality(&args.set, quality).map_err(Error::InvalidArgument)?,
         resolve: ResolveFilter::default(),
         time: 0.0,
         mode: ShaderMode::Shaded,

@@ -8,6 +8,7 @@ use bumpwork::export::metadata::{RECIPE, SCENE, read_png_text, text_of};
 use bumpwork::export::{
     STANDARD_OUTPUT, StillFormat, StillRequest, check_destination, write_still,
 };
+use bumpwork::overrides::{Override, apply_to_quality, apply_to_scene};
 use bumpwork::quality::Quality;
 use bumpwork::scene::Scene;
 use bumpwork::shade::ShaderMode;
@@ -72,6 +73,12 @@ pub struct RenderArgs {
     /// File format, where the output's extension does not say (.png, .ppm, .pov) [default: png].
     #[arg(long, value_enum)]
     format: Option<StillFormat>,
+    /// A setting, KEY=VALUE (repeatable): quality.KNOB (tessellation, samples, normal-form,
+    /// gradient… as a still's recipe names them), [OBJECT.]bump.PARAM, [OBJECT.]texture.PARAM,
+    /// [OBJECT.]bump.strength (the bump's factor), [OBJECT.]bump.params.PARAM (OBJECT counts
+    /// from 1; without it, every object that has PARAM).
+    #[arg(long = "set", value_name = "KEY=VALUE", value_parser = Override::parse)]
+    set: Vec<Override>,
     /// Print the built-in scene names and exit.
     #[arg(long)]
     list: bool,
@@ -94,9 +101,13 @@ pub fn run(args: RenderArgs) -> Result<(), Error> {
         Some(still) => from_still(still, args.read_outside)?,
         None => from_source(args.scene.as_deref().expect("clap requires a scene"))?,
     };
-    let settings = override_settings(start.settings, &args);
-    let camera = start.scene.camera.clone();
-    let prepared = settings.prepare(start.scene, &camera)?;
+    let mut settings = override_settings(start.settings, &args);
+    settings.quality =
+        apply_to_quality(&args.set, settings.quality).map_err(Error::InvalidArgument)?;
+    let mut scene = start.scene;
+    apply_to_scene(&args.set, &mut scene).map_err(Error::InvalidArgument)?;
+    let camera = scene.camera.clone();
+    let prepared = settings.prepare(scene, &camera)?;
     let interrupt = Interrupt::watch();
     for (time, path) in frames(&args, settings.time, &output)? {
         let settings = StillSettings { time, ..settings };

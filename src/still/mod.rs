@@ -13,7 +13,7 @@ pub use bands::{
 };
 pub use recipe::{
     FileHash, MAX_DENSITY, MAX_SIDE, MAX_TIME_SECONDS, ObjectState, Recipe, RecipeCamera,
-    StillSettings,
+    StillSettings, check_quality,
 };
 pub use samples::{MAX_SAMPLES, RefiningOrder, ResolveFilter, Supersampling};
 pub use stream::{RowSink, StillStop, stream_still};

@@ -308,7 +308,7 @@ impl Recipe {
 }
 
 /// The ranges the command line enforces, for a quality read from a file.
-fn check_quality(quality: &Quality) -> Result<(), String> {
+pub fn check_quality(quality: &Quality) -> Result<(), String> {
     if !(1..=MAX_SAMPLES).contains(&quality.samples) {
         return Err(format!(
             "samples {} is outside 1..={MAX_SAMPLES}",

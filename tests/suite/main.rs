@@ -42,6 +42,7 @@ mod reference_properties;
 mod reference_round_trip;
 mod reference_support;
 mod scene_files;
+mod settings;
 mod source_layout;
 mod ssh_session;
 mod still_bands;

@@ -1,0 +1,256 @@
+//! `--set KEY=VALUE`: one setting of a scene or of the quality, from the command line.
+//!
+//! Keys: `quality.KNOB` for every knob of [`Quality`] (as a still's recipe names them:
+//! `tessellation`, `samples`, `normal-form`, `gradient`, …), and `[OBJECT.]bump.PARAM`,
+//! `[OBJECT.]texture.PARAM`, `[OBJECT.]bump.strength` (the bump's own factor) and
+//! `[OBJECT.]bump.params.PARAM` (a pattern parameter, also one called `strength`) for the
+//! objects' bindings (OBJECT counts from 1; without it, every object whose binding has PARAM).
+
+use crate::quality::Quality;
+use crate::scene::{BumpSource, PatternBinding, Scene, Texturing};
+
+/// One `--set`, parsed.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Override {
+    target: Target,
+    value: String,
+    /// As given, for messages.
+    text: String,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+enum Target {
+    Quality(String),
+    Binding {
+        object: Option<usize>,
+        slot: Slot,
+        name: Name,
+    },
+}
+
+/// What of a binding is set.
+#[derive(Clone, Debug, PartialEq)]
+enum Name {
+    /// The bump's own factor (a scene file's `strength`).
+    Strength,
+    /// A parameter of the binding's pattern (`params.NAME`; plain `NAME` where it is not
+    /// `strength`).
+    Param(String),
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Slot {
+    Bump,
+    Texture,
+}
+
+impl Override {
+    /// `KEY=VALUE`, or a message saying what keys there are (a command-line value parser).
+    pub fn parse(text: &str) -> Result<Override, String> {
+        let shown = crate::diagnostic::sanitize(text);
+        let (key, value) = text
+            .split_once('=')
+            .ok_or_else(|| format!("expected KEY=VALUE, found '{shown}'"))?;
+        let mut parts: Vec<&str> = key.trim().split('.').collect();
+        let object = match parts.first().map(|p| p.parse::<usize>()) {
+            Some(Ok(0)) => return Err(format!("'{shown}': an object is counted from 1")),
+            Some(Ok(n)) => {
+                parts.remove(0);
+                Some(n)
+            }
+            _ => None,
+        };
+        let target = match parts.as_slice() {
+            ["quality", knob] if object.is_none() => Some(Target::Quality(knob.to_string())),
+            [slot, "strength"] => binding(object, slot, Name::Strength),
+            [slot, "params", name] | [slot, name] => {
+                binding(object, slot, Name::Param(name.to_string()))
+            }
+            _ => None,
+        }
+        .ok_or_else(|| {
+            format!(
+                "unknown setting '{shown}'; the keys are quality.KNOB, [OBJECT.]bump.PARAM, \
+                 [OBJECT.]texture.PARAM, [OBJECT.]bump.strength and [OBJECT.]bump.params.PARAM"
+            )
+        })?;
+        Ok(Override {
+            target,
+            value: value.trim().to_string(),
+            text: text.to_string(),
+        })
+    }
+
+    /// The setting as given, safe to show.
+    pub fn shown(&self) -> String {
+        crate::diagnostic::sanitize(&self.text).into_owned()
+    }
+
+    /// Whether it sets a binding of the scene (not the quality).
+    pub fn is_binding(&self) -> bool {
+        matches!(self.target, Target::Binding { .. })
+    }
+}
+
+fn binding(object: Option<usize>, slot: &str, name: Name) -> Option<Target> {
+    let slot = match (slot, &name) {
+        ("bump", _) => Slot::Bump,
+        ("texture", Name::Param(_)) => Slot::Texture,
+        _ => return None,
+    };
+    let empty = matches!(&name, Name::Param(n) if n.is_empty());
+    (!empty).then_some(Target::Binding { object, slot, name })
+}
+
+/// `quality` with every `quality.KNOB` override applied, checked as a recipe's quality is.
+pub fn apply_to_quality(overrides: &[Override], quality: Quality) -> Result<Quality, String> {
+    let mut quality = quality;
+    for o in overrides {
+        let Target::Quality(knob) = &o.target else {
+            continue;
+        };
+        let mut table = toml::Table::try_from(quality).expect("a quality is a TOML table");
+        match o.value.as_str() {
+            "none" => table.remove(knob),
+            value => table.insert(knob.clone(), toml_value(value)),
+        };
+        quality = toml::Value::Table(table)
+            .try_into::<Quality>()
+            .map_err(|e| {
+                let message = crate::scene::user_words::in_user_words(e.message());
+                format!("--set {}: {message}", o.shown())
+            })?;
+        crate::still::check_quality(&quality).map_err(|e| format!("--set {}: {e}", o.shown()))?;
+    }
+    Ok(quality)
+}
+
+/// The value as TOML reads it (a number, a boolean, an inline table), else as text: so
+/// `normal-form=full` needs no quotes.
+fn toml_value(value: &str) -> toml::Value {
+    toml::from_str::<toml::Table>(&format!("v = {value}"))
+        .ok()
+        .and_then(|mut t| t.remove("v"))
+        .unwrap_or_else(|| toml::Value::String(value.to_string()))
+}
+
+/// `scene` with every binding override applied. An override no object takes is an error naming
+/// the parameters there are.
+pub fn apply_to_scene(overrides: &[Override], scene: &mut Scene) -> Result<(), String> {
+    for o in overrides {
+        if let Applied::NoPlace(known) = apply_binding(o, scene)? {
+            return Err(no_such_parameter(o, &known));
+        }
+    }
+    Ok(())
+}
+
+/// As `apply_to_scene` for one scene of many (the gallery): an override the scene has no place
+/// for is left out; returns which overrides it took.
+pub fn apply_where_known(overrides: &[Override], scene: &mut Scene) -> Result<Vec<bool>, String> {
+    overrides
+        .iter()
+        .map(|o| Ok(apply_binding(o, scene)? == Applied::Taken))
+        .collect()
+}
+
+/// The error for an override that no scene took, `known` the parameters there were.
+pub fn no_such_parameter(o: &Override, known: &[String]) -> String {
+    let what = match known.is_empty() {
+        true => "no object has a pattern there".to_string(),
+        false => format!("the parameters there are {}", known.join(", ")),
+    };
+    format!("--set {}: no such parameter; {what}", o.shown())
+}
+
+/// What a binding override found in a scene.
+#[derive(Debug, PartialEq)]
+enum Applied {
+    /// It is a quality override.
+    NotABinding,
+    Taken,
+    /// No object took it; the parameters there were.
+    NoPlace(Vec<String>),
+}
+
+/// Applies `o` if it is a binding override; an error for a value out of range or an object past
+/// the scene's.
+fn apply_binding(o: &Override, scene: &mut Scene) -> Result<Applied, String> {
+    let Target::Binding { object, slot, name } = &o.target else {
+        return Ok(Applied::NotABinding);
+    };
+    if object.is_some_and(|n| n > scene.objects.len()) {
+        return Err(format!(
+            "--set {}: the scene has {} objects",
+            o.shown(),
+            scene.objects.len()
+        ));
+    }
+    let value: f32 = o
+        .value
+        .parse()
+        .ok()
+        .filter(|v: &f32| v.is_finite())
+        .ok_or_else(|| format!("--set {}: expected a number", o.shown()))?;
+    let mut taken = false;
+    let mut known = Vec::new();
+    for (index, material) in scene
+        .objects
+        .iter_mut()
+        .map(|o| &mut o.material)
+        .enumerate()
+    {
+        if object.is_some_and(|n| n != index + 1) {
+            continue;
+        }
+        let name = match name {
+            Name::Strength => {
+                if let Some(bump) = &mut material.bump {
+                    bump.strength = value;
+                    taken = true;
+                }
+                continue;
+            }
+            Name::Param(name) => name,
+        };
+        let binding = match slot {
+            Slot::Bump => material.bump.as_mut().and_then(|b| match &mut b.source {
+                BumpSource::Pattern(p) => Some(p),
+                BumpSource::Image(_) => None,
+            }),
+            Slot::Texture => material.texture.as_mut().and_then(|t| match t {
+                Texturing::Pattern(p) => Some(p),
+                Texturing::Image(_) => None,
+            }),
+        };
+        if let Some(binding) = binding {
+            taken |=
+                set_param(binding, name, value).map_err(|e| format!("--set {}: {e}", o.shown()))?;
+            known.extend(binding.pattern.params().iter().map(|p| p.name.clone()));
+        }
+    }
+    known.sort();
+    known.dedup();
+    Ok(if taken {
+        Applied::Taken
+    } else {
+        Applied::NoPlace(known)
+    })
+}
+
+/// Sets parameter `name` of `binding` to `value` within its range; `Ok(false)` if it has none
+/// of that name.
+fn set_param(binding: &mut PatternBinding, name: &str, value: f32) -> Result<bool, String> {
+    let Some(index) = binding.pattern.params().iter().position(|p| p.name == name) else {
+        return Ok(false);
+    };
+    let param = &binding.pattern.params()[index];
+    if !(param.min..=param.max).contains(&value) {
+        return Err(format!(
+            "{value} is outside {}'s range {}..{}",
+            param.name, param.min, param.max
+        ));
+    }
+    binding.params[index] = value;
+    Ok(true)
+}

@@ -1,0 +1,135 @@
+//! `--set KEY=VALUE` on render and gallery: each key does what the same setting does elsewhere,
+//! the recipe keeps it, and every bad key or value is one line naming what is valid.
+
+use crate::cli_support::{assert_user_error, bumpwork, decode_png, stderr, temp_dir};
+
+fn render(dir: &crate::cli_support::TestDir, name: &str, extra: &[&str]) -> Vec<u8> {
+    let path = dir.join(name);
+    let mut args = vec![
+        "render",
+        "plane-dimples",
+        "--size",
+        "48x32",
+        "-o",
+        path.to_str().unwrap(),
+    ];
+    args.extend(extra);
+    let output = bumpwork(&args);
+    assert!(output.status.success(), "{extra:?}: {}", stderr(&output));
+    decode_png(&path).2
+}
+
+#[test]
+fn settings_do_what_the_same_setting_does_elsewhere_and_the_recipe_keeps_them() {
+    let dir = temp_dir("settings-effect");
+    let plain = render(&dir, "plain.png", &[]);
+    // The scene's own value changes nothing; another changes the picture.
+    assert_eq!(
+        render(&dir, "same.png", &["--set", "bump.strength=1"]),
+        plain
+    );
+    let flat = render(&dir, "flat.png", &["--set", "bump.strength=0"]);
+    assert_ne!(flat, plain);
+    let deeper = render(&dir, "deeper.png", &["--set", "1.bump.params.strength=3"]);
+    assert_ne!(deeper, plain);
+    // A quality knob set by key is the same as its own option.
+    assert_eq!(
+        render(&dir, "knob.png", &["--set", "quality.samples=4"]),
+        render(&dir, "option.png", &["--samples", "4"])
+    );
+    // render --from makes the still made with settings again.
+    let again = dir.join("again.png");
+    let output = bumpwork(&[
+        "render",
+        "--from",
+        dir.join("deeper.png").to_str().unwrap(),
+        "-o",
+        again.to_str().unwrap(),
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert_eq!(decode_png(&again).2, deeper);
+}
+
+#[test]
+fn every_bad_setting_is_one_line_naming_what_is_valid() {
+    let dir = temp_dir("settings-errors");
+    let out = dir.join("x.png");
+    for (setting, expected) in [
+        ("quality.smaples=4", "expected one of `tessellation`"),
+        (
+            "quality.normal-form=wild",
+            "expected one of `blinn`, `seed`, `full`",
+        ),
+        ("quality.samples=0", "samples 0 is outside 1..=1024"),
+        ("quality.samples=many", "expected a whole number"),
+        (
+            "bump.nope=1",
+            "no such parameter; the parameters there are strength",
+        ),
+        (
+            "bump.params.strength=99",
+            "99 is outside strength's range 0..4",
+        ),
+        ("bump.strength=deep", "expected a number"),
+        ("3.bump.strength=1", "the scene has 1 objects"),
+        ("0.bump.strength=1", "an object is counted from 1"),
+        ("lights.1=2", "unknown setting"),
+        ("samples", "expected KEY=VALUE"),
+    ] {
+        let output = bumpwork(&[
+            "render",
+            "plane-dimples",
+            "-o",
+            out.to_str().unwrap(),
+            "--set",
+            setting,
+        ]);
+        assert_user_error(&output, expected);
+        let message = stderr(&output);
+        assert!(
+            message
+                .lines()
+                .next()
+                .unwrap()
+                .starts_with("bumpwork: error:"),
+            "{message}"
+        );
+        assert!(!out.exists(), "{setting} wrote a still");
+    }
+}
+
+#[test]
+fn gallery_settings_apply_where_the_scene_has_them() {
+    let dir = temp_dir("settings-gallery");
+    let gallery = dir.join("g");
+    let args = |setting: &str| {
+        bumpwork(&[
+            "gallery",
+            "-o",
+            gallery.to_str().unwrap(),
+            "--size",
+            "16x12",
+            "--samples",
+            "1",
+            "--scenes",
+            "plane-dimples,textured-sphere",
+            "--set",
+            setting,
+        ])
+    };
+    let output = args("bump.params.strength=2");
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert!(gallery.join("textured-sphere.png").exists());
+    let wrong = dir.join("never");
+    let output = bumpwork(&[
+        "gallery",
+        "-o",
+        wrong.to_str().unwrap(),
+        "--scenes",
+        "plane-dimples",
+        "--set",
+        "bump.nope=1",
+    ]);
+    assert_user_error(&output, "no scene of the gallery has that parameter");
+    assert!(!wrong.exists(), "checked before anything is made");
+}
