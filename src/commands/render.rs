@@ -4,6 +4,7 @@
 use super::interrupt::Interrupt;
 use super::progress::RenderProgress;
 use bumpwork::Error;
+use bumpwork::diagnostic::sanitize_lines;
 use bumpwork::export::metadata::{RECIPE, SCENE, read_png_text, text_of};
 use bumpwork::export::{
     STANDARD_OUTPUT, StillFormat, StillRequest, check_destination, write_still,
@@ -15,6 +16,7 @@ use bumpwork::shade::ShaderMode;
 use bumpwork::still::{
     MAX_DENSITY, MAX_SAMPLES, MAX_TIME_SECONDS, Recipe, ResolveFilter, StillSettings,
 };
+use bumpwork::watch::ReloadOutcome;
 use std::path::{Path, PathBuf};
 
 #[derive(clap::Args)]
@@ -79,6 +81,10 @@ pub struct RenderArgs {
     /// from 1; without it, every object that has PARAM).
     #[arg(long = "set", value_name = "KEY=VALUE", value_parser = Override::parse)]
     set: Vec<Override>,
+    /// Render again whenever the scene file, or a pattern or image it reads, changes (Ctrl-C
+    /// stops); a change that does not load is reported and the last still kept.
+    #[arg(long, conflicts_with_all = ["from", "time_range"])]
+    watch: bool,
     /// Print the built-in scene names and exit.
     #[arg(long)]
     list: bool,
@@ -97,19 +103,34 @@ pub fn run(args: RenderArgs) -> Result<(), Error> {
     let output = args.output.clone().expect("clap requires -o unless --list");
     let format = output_format(&output, args.format)?;
     check_outputs(&args, &output, format)?;
+    let interrupt = Interrupt::watch();
+    if args.watch {
+        return watch_and_render(&args, &output, format, &interrupt);
+    }
     let start = match &args.from {
         Some(still) => from_still(still, args.read_outside)?,
         None => from_source(args.scene.as_deref().expect("clap requires a scene"))?,
     };
-    let mut settings = override_settings(start.settings, &args);
+    render_start(&args, &start, &output, format, &interrupt)
+}
+
+/// Renders `start` with the command line's options and settings to `output` (each frame of a
+/// sequence).
+fn render_start(
+    args: &RenderArgs,
+    start: &Start,
+    output: &Path,
+    format: StillFormat,
+    interrupt: &Interrupt,
+) -> Result<(), Error> {
+    let mut settings = override_settings(start.settings, args);
     settings.quality =
         apply_to_quality(&args.set, settings.quality).map_err(Error::InvalidArgument)?;
-    let mut scene = start.scene;
+    let mut scene = start.scene.clone();
     apply_to_scene(&args.set, &mut scene).map_err(Error::InvalidArgument)?;
     let camera = scene.camera.clone();
     let prepared = settings.prepare(scene, &camera)?;
-    let interrupt = Interrupt::watch();
-    for (time, path) in frames(&args, settings.time, &output)? {
+    for (time, path) in frames(args, settings.time, output)? {
         let settings = StillSettings { time, ..settings };
         let recipe = Recipe::capture(&start.source, &prepared.scene, &camera, &settings);
         let request = StillRequest {
@@ -119,7 +140,59 @@ pub fn run(args: RenderArgs) -> Result<(), Error> {
             scene_text: &start.scene_text,
             recipe: &recipe,
         };
-        render_one(&request, &path, format, &interrupt)?;
+        render_one(&request, &path, format, interrupt)?;
+    }
+    Ok(())
+}
+
+/// How often `--watch` looks for a reload.
+const WATCH_POLL: std::time::Duration = std::time::Duration::from_millis(50);
+
+/// `--watch`: renders, then renders again on every change of the files the scene reads, until
+/// Ctrl-C (a quiet end while waiting; during a render it is an interruption as ever).
+fn watch_and_render(
+    args: &RenderArgs,
+    output: &Path,
+    format: StillFormat,
+    interrupt: &Interrupt,
+) -> Result<(), Error> {
+    let name = args.scene.as_deref().expect("clap requires a scene");
+    let (scene, reloader) = bumpwork::watch::open_watched(name, true)?;
+    let Some(reloader) = reloader else {
+        return Err(Error::InvalidArgument(format!(
+            "--watch follows a scene or pattern file; the built-in scene '{}' never changes",
+            super::sanitized(name)
+        )));
+    };
+    let mut start = Start {
+        source: name.to_string(),
+        scene_text: bumpwork::scene::source_text(name)?,
+        settings: default_settings(),
+        scene,
+    };
+    render_start(args, &start, output, format, interrupt)?;
+    let shown = super::sanitized(&output.display().to_string());
+    eprintln!(
+        "bumpwork: rendered {shown}; watching {} for changes (Ctrl-C stops)",
+        super::sanitized(name)
+    );
+    while interrupt.received().is_none() {
+        match reloader.poll() {
+            Some(ReloadOutcome::Reloaded(reload)) => {
+                start.scene = reload.scene;
+                start.scene_text = bumpwork::scene::source_text(name)?;
+                match render_start(args, &start, output, format, interrupt) {
+                    Ok(()) => eprintln!("bumpwork: rendered {shown} again"),
+                    Err(Error::Interrupted(signal)) => return Err(Error::Interrupted(signal)),
+                    Err(e) => eprintln!("bumpwork: error: {}", sanitize_lines(&e.to_string())),
+                }
+            }
+            Some(ReloadOutcome::Failed(error)) => {
+                eprintln!("bumpwork: error: {}", sanitize_lines(&error.message));
+                eprintln!("bumpwork: {shown} is kept until the next change loads");
+            }
+            Some(ReloadOutcome::Unchanged) | None => std::thread::sleep(WATCH_POLL),
+        }
     }
     Ok(())
 }
@@ -213,15 +286,20 @@ fn from_source(name: &str) -> Result<Start, Error> {
     Ok(Start {
         source: name.to_string(),
         scene_text: bumpwork::scene::source_text(name)?,
-        settings: StillSettings {
-            size: (800, 600),
-            quality: Quality::default(),
-            resolve: ResolveFilter::default(),
-            time: 0.0,
-            mode: ShaderMode::Shaded,
-        },
+        settings: default_settings(),
         scene,
     })
+}
+
+/// A render's settings before any option: 800 × 600, the default quality, shaded, time 0.
+fn default_settings() -> StillSettings {
+    StillSettings {
+        size: (800, 600),
+        quality: Quality::default(),
+        resolve: ResolveFilter::default(),
+        time: 0.0,
+        mode: ShaderMode::Shaded,
+    }
 }
 
 fn from_still(still: &Path, read_outside: bool) -> Result<Start, Error> {

@@ -6,7 +6,6 @@ use super::clock::Clock;
 use super::export::ExportJob;
 use super::light::move_lights;
 use super::material_controls as controls;
-use super::open_scene::open_source;
 use super::options::WorkbenchOptions;
 use super::orbit::Orbit;
 use super::quality::QualityPreset;
@@ -17,6 +16,7 @@ use crate::raster::{FrameStats, Framebuffer, PreparedScene, Viewport};
 use crate::scene::Camera;
 use crate::scene::{Material, Scene};
 use crate::term::{ColorMode, GlyphSet};
+use crate::watch::open_watched;
 use crate::watch::{ReloadOutcome, Reloader};
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
@@ -104,7 +104,7 @@ impl App {
         for name in &options.scenes[1..] {
             crate::scene::load_source(name)?;
         }
-        let (scene, reloader) = open_source(&options.scenes[0], options.watch)?;
+        let (scene, reloader) = open_watched(&options.scenes[0], options.watch)?;
         let quality = options.quality;
         let orbit = Orbit::from_camera(&scene.camera);
         Ok(App {
@@ -272,7 +272,7 @@ impl App {
     pub fn switch_scene(&mut self, step: i32) {
         let count = self.scenes.len() as i32;
         let index = (self.scene_index as i32 + step).rem_euclid(count) as usize;
-        let opened = open_source(&self.scenes[index], self.watch)
+        let opened = open_watched(&self.scenes[index], self.watch)
             .and_then(|(scene, reloader)| Ok((prepare(scene, self.quality)?, reloader)));
         match opened {
             Ok((prepared, reloader)) => {

@@ -16,7 +16,6 @@ mod input;
 pub mod keymap;
 mod light;
 mod material_controls;
-mod open_scene;
 mod options;
 mod orbit;
 mod quality;

@@ -25,6 +25,7 @@
 mod change_watcher;
 mod error;
 mod live_params;
+mod open_watched;
 mod outcome;
 mod reloader;
 mod scene_source;
@@ -34,6 +35,7 @@ mod worker;
 
 pub use error::WatchError;
 pub use live_params::carry_live_params;
+pub use open_watched::open_watched;
 pub use outcome::{Reload, ReloadError, ReloadOutcome};
 pub use reloader::{DEBOUNCE, Reloader};
 pub use scene_source::{FileSetSource, SceneFileSource, SceneSource};

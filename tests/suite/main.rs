@@ -41,6 +41,7 @@ mod reference_extremes;
 mod reference_properties;
 mod reference_round_trip;
 mod reference_support;
+mod render_watch;
 mod scene_files;
 mod settings;
 mod source_layout;

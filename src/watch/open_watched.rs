@@ -1,15 +1,16 @@
-//! Where a workbench scene comes from: a built-in name, a scene file, or a pattern file shown on
-//! the sphere-on-plane scene; files come with a hot reloader watching them.
+//! A scene opened by name with its files watched: a built-in name, a scene file, or a pattern file
+//! shown on the sphere-on-plane scene; files come with a hot reloader watching them (the
+//! workbench and `render --watch`).
 
+use super::{FileSetSource, Reloader, SceneFileSource};
 use crate::Error;
 use crate::scene::{Scene, load_source};
-use crate::watch::{FileSetSource, Reloader, SceneFileSource};
 use std::path::PathBuf;
 
 /// Loads the scene `name` names and, for files, starts watching them (the scene file and every
 /// pattern and image it names, or the pattern file). If watching cannot start, the scene still
 /// opens, without hot reload. With `watch` off nothing is watched.
-pub fn open_source(name: &str, watch: bool) -> Result<(Scene, Option<Reloader>), Error> {
+pub fn open_watched(name: &str, watch: bool) -> Result<(Scene, Option<Reloader>), Error> {
     if let Some(error) = crate::scene::unknown_scene(name) {
         return Err(error);
     }
