@@ -23,7 +23,7 @@ struct Cli {
 #[derive(Subcommand)]
 enum Command {
     /// Render a built-in scene or a scene file to a PNG still.
-    Render(commands::render::RenderArgs),
+    Render(Box<commands::render::RenderArgs>),
     /// Render every built-in scene to a still and a contact sheet of them all.
     Gallery(commands::gallery::GalleryArgs),
     /// Check pattern files, scene files and images without rendering.
@@ -88,7 +88,7 @@ fn restore_default_sigpipe() {
 fn run(cli: Cli) -> Result<(), Error> {
     bumpwork::memory_budget::check_budget_var().map_err(Error::InvalidArgument)?;
     match cli.command {
-        Some(Command::Render(args)) => commands::render::run(args),
+        Some(Command::Render(args)) => commands::render::run(*args),
         Some(Command::Check(args)) => commands::check::run(args),
         Some(Command::Patterns(args)) => commands::patterns::run(args),
         Some(Command::Gallery(args)) => commands::gallery::run(args),

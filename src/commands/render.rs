@@ -11,6 +11,7 @@ use bumpwork::export::{
 };
 use bumpwork::overrides::{Override, apply_to_quality, apply_to_scene};
 use bumpwork::quality::Quality;
+use bumpwork::scene::Camera;
 use bumpwork::scene::Scene;
 use bumpwork::shade::ShaderMode;
 use bumpwork::still::{
@@ -81,6 +82,15 @@ pub struct RenderArgs {
     /// from 1; without it, every object that has PARAM).
     #[arg(long = "set", value_name = "KEY=VALUE", value_parser = Override::parse)]
     set: Vec<Override>,
+    /// Where the camera is, X,Y,Z [default: the scene's].
+    #[arg(long, value_name = "X,Y,Z", value_parser = parse_point, allow_hyphen_values = true)]
+    eye: Option<[f64; 3]>,
+    /// What the camera looks at, X,Y,Z [default: the scene's].
+    #[arg(long, value_name = "X,Y,Z", value_parser = parse_point, allow_hyphen_values = true)]
+    target: Option<[f64; 3]>,
+    /// The camera's vertical field of view in degrees [default: the scene's].
+    #[arg(long, value_name = "DEGREES")]
+    fov: Option<f64>,
     /// Render again whenever the scene file, or a pattern or image it reads, changes (Ctrl-C
     /// stops); a change that does not load is reported and the last still kept.
     #[arg(long, conflicts_with_all = ["from", "time_range"])]
@@ -128,6 +138,7 @@ fn render_start(
         apply_to_quality(&args.set, settings.quality).map_err(Error::InvalidArgument)?;
     let mut scene = start.scene.clone();
     apply_to_scene(&args.set, &mut scene).map_err(Error::InvalidArgument)?;
+    scene.camera = camera_from_options(args, &scene.camera)?;
     let camera = scene.camera.clone();
     let prepared = settings.prepare(scene, &camera)?;
     for (time, path) in frames(args, settings.time, output)? {
@@ -143,6 +154,40 @@ fn render_start(
         render_one(&request, &path, format, interrupt)?;
     }
     Ok(())
+}
+
+/// The scene's camera with `--eye`, `--target` and `--fov` applied, checked as a scene file's.
+fn camera_from_options(args: &RenderArgs, camera: &Camera) -> Result<Camera, Error> {
+    if args.eye.is_none() && args.target.is_none() && args.fov.is_none() {
+        return Ok(camera.clone());
+    }
+    bumpwork::scene::camera_looking(
+        args.eye.unwrap_or(camera.eye.to_array()),
+        args.target.unwrap_or(camera.target.to_array()),
+        camera.up.as_dvec3().to_array(),
+        args.fov.unwrap_or(f64::from(camera.vfov_degrees)),
+    )
+    .map_err(|e| Error::InvalidArgument(format!("--eye, --target, --fov: {e}")))
+}
+
+/// `X,Y,Z`: three numbers (a command-line value parser).
+fn parse_point(text: &str) -> Result<[f64; 3], String> {
+    let numbers: Vec<f64> = text
+        .split(',')
+        .map(|part| part.trim().parse::<f64>())
+        .collect::<Result<_, _>>()
+        .map_err(|_| {
+            format!(
+                "expected three numbers X,Y,Z, found '{}'",
+                super::sanitized(text)
+            )
+        })?;
+    numbers.try_into().map_err(|_| {
+        format!(
+            "expected three numbers X,Y,Z, found '{}'",
+            super::sanitized(text)
+        )
+    })
 }
 
 /// How often `--watch` looks for a reload.

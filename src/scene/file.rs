@@ -312,6 +312,25 @@ impl SceneFile {
     }
 }
 
+/// A camera from an eye, a target, an up direction and a vertical field of view (degrees), each
+/// checked as a scene file's `[camera]` checks it; near and far follow from the eye's distance.
+pub fn camera_looking(
+    eye: [f64; 3],
+    target: [f64; 3],
+    up: [f64; 3],
+    fov_degrees: f64,
+) -> Result<Camera, String> {
+    CameraFile {
+        eye: Point::try_from(eye.to_vec()).map_err(|e| format!("the eye: {e}"))?,
+        target: Point::try_from(target.to_vec()).map_err(|e| format!("the target: {e}"))?,
+        up: Direction::try_from(up.to_vec()).map_err(|e| format!("up: {e}"))?,
+        fov: FieldOfView::try_from(fov_degrees).map_err(|e| format!("the field of view: {e}"))?,
+        near: None,
+        far: None,
+    }
+    .to_camera()
+}
+
 impl CameraFile {
     pub(crate) fn to_camera(&self) -> Result<Camera, String> {
         let distance = (self.target.0 - self.eye.0).length() as f32;

@@ -14,7 +14,7 @@ pub use binding_file::{BindingFile, FilterFile, MappingKind, WrapFile};
 pub use by_name::{load_source, source_text};
 pub use file::{
     CameraFile, Direction, FieldOfView, Finite, LightFile, MAX_SCENE_FILE_BYTES, Point, Positive,
-    SceneFile, load_scene_file, parse_scene, parse_scene_in,
+    SceneFile, camera_looking, load_scene_file, parse_scene, parse_scene_in,
 };
 pub use material::{
     Bump, BumpSource, ImageHeight, ImageTexture, Material, PatternBinding, Placement, Texturing,

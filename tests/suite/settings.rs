@@ -133,3 +133,48 @@ fn gallery_settings_apply_where_the_scene_has_them() {
     assert_user_error(&output, "no scene of the gallery has that parameter");
     assert!(!wrong.exists(), "checked before anything is made");
 }
+
+#[test]
+fn the_camera_can_be_set_from_the_command_line_and_is_checked_as_a_scene_files() {
+    let dir = temp_dir("settings-camera");
+    let plain = render(&dir, "plain.png", &[]);
+    let scene = bumpwork::scene::preset("plane-dimples").unwrap();
+    let [x, y, z] = scene.camera.eye.to_array();
+    let own = format!("{x},{y},{z}");
+    assert_eq!(
+        render(&dir, "own.png", &["--eye", &own]),
+        plain,
+        "the scene's own eye"
+    );
+    let moved = render(&dir, "moved.png", &["--eye", "0,-300,300", "--fov", "60"]);
+    assert_ne!(moved, plain);
+    // The recipe records the camera used.
+    let again = dir.join("again.png");
+    let output = bumpwork(&[
+        "render",
+        "--from",
+        dir.join("moved.png").to_str().unwrap(),
+        "-o",
+        again.to_str().unwrap(),
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert_eq!(decode_png(&again).2, moved);
+    let out = dir.join("bad.png");
+    for (args, expected) in [
+        (&["--eye", "1,2"][..], "expected three numbers X,Y,Z"),
+        (
+            &["--eye", "0,0,0", "--target", "0,0,0"],
+            "eye and target are the same point",
+        ),
+        (&["--fov", "200"], "an angle in degrees between 0 and 180"),
+        (
+            &["--eye=-5,0,1e13"],
+            "expected a point: three finite numbers",
+        ),
+    ] {
+        let mut all = vec!["render", "plane-dimples", "-o", out.to_str().unwrap()];
+        all.extend(args);
+        assert_user_error(&bumpwork(&all), expected);
+        assert!(!out.exists());
+    }
+}
