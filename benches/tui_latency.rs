@@ -91,6 +91,26 @@ fn main() {
     picture_quality();
 }
 
+/// chafa's half-block picture of the image at `path`, stretched to `cells`, in `colours` (its
+/// `--colors` name).
+fn run_chafa(
+    path: &std::path::Path,
+    (cols, rows): (usize, usize),
+    colours: &str,
+) -> std::io::Result<std::process::Output> {
+    Command::new("chafa")
+        .args(["--symbols", "half", "--colors", colours, "-f", "symbols"])
+        .args([
+            "--animate",
+            "off",
+            "--stretch",
+            "--size",
+            &format!("{cols}x{rows}"),
+        ])
+        .arg(path)
+        .output()
+}
+
 /// The picture alone (no status line), ours as a full frame and chafa's, from the same pixels.
 fn compare_with_chafa(app: &App) {
     let (cols, rows) = (COLS as usize, ROWS as usize - 1);
@@ -113,17 +133,7 @@ fn compare_with_chafa(app: &App) {
     let path = std::env::temp_dir().join(format!("bumpwork-tui-bench-{}.png", std::process::id()));
     bumpwork::export::write_png(&framebuffer, &path).expect("temp PNG");
     let start = Instant::now();
-    let chafa = Command::new("chafa")
-        .args(["--symbols", "half", "--colors", "full", "-f", "symbols"])
-        .args([
-            "--animate",
-            "off",
-            "--stretch",
-            "--size",
-            &format!("{cols}x{rows}"),
-        ])
-        .arg(&path)
-        .output();
+    let chafa = run_chafa(&path, (cols, rows), "full");
     let elapsed = start.elapsed();
     let _ = std::fs::remove_file(&path);
     println!("\nsame {width}x{height} picture, {cols}x{rows} cells, full frame:");
@@ -230,17 +240,7 @@ fn chafa_sub_pixels(
     }
     let path = std::env::temp_dir().join(format!("bumpwork-quality-{}.png", std::process::id()));
     bumpwork::export::write_png(&framebuffer, &path).ok()?;
-    let output = Command::new("chafa")
-        .args(["--symbols", "half", "--colors", colours, "-f", "symbols"])
-        .args([
-            "--animate",
-            "off",
-            "--stretch",
-            "--size",
-            &format!("{cols}x{rows}"),
-        ])
-        .arg(&path)
-        .output();
+    let output = run_chafa(&path, (cols, rows), colours);
     let _ = std::fs::remove_file(&path);
     let output = output.ok().filter(|o| o.status.success())?;
     // chafa ends lines with LF alone; a terminal's line discipline adds the carriage return.

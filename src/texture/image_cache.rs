@@ -4,7 +4,7 @@
 
 use super::encoding::Encoding;
 use super::error::TextureError;
-use super::load::{Limits, decode_image, read_file};
+use super::load::{Limits, LoadedImage, decode_image, read_file};
 use super::shipped_images::builtin_bytes;
 use super::{HeightMap, Texture};
 use std::collections::HashMap;
@@ -39,14 +39,13 @@ impl ImageCache {
         base: &Path,
     ) -> Result<Arc<Texture>, TextureError> {
         let (bytes, path) = self.bytes(name_or_path, base)?;
-        if let Some(texture) = self.textures.get(&bytes) {
-            return Ok(texture.clone());
-        }
-        let image = decode_image(&bytes, &path, &Limits::within(self.left), Encoding::Srgb)?;
-        let texture = Arc::new(Texture::from_image(image));
-        self.left = self.left.saturating_sub(texture.bytes());
-        self.textures.insert(bytes, texture.clone());
-        Ok(texture)
+        let decoded = Decoding {
+            bytes,
+            path: &path,
+            encoding: Encoding::Srgb,
+            left: &mut self.left,
+        };
+        decoded.shared(&mut self.textures, Texture::from_image, Texture::bytes)
     }
 
     /// A height map (grey values as stored, not sRGB-decoded): a built-in name, or a file path
@@ -57,14 +56,14 @@ impl ImageCache {
         base: &Path,
     ) -> Result<Arc<HeightMap>, TextureError> {
         let (bytes, path) = self.bytes(name_or_path, base)?;
-        if let Some(map) = self.height_maps.get(&bytes) {
-            return Ok(map.clone());
-        }
-        let image = decode_image(&bytes, &path, &Limits::within(self.left), Encoding::Linear)?;
-        let map = Arc::new(HeightMap::from_texels(&image.texels));
-        self.left = self.left.saturating_sub(map.bytes());
-        self.height_maps.insert(bytes, map.clone());
-        Ok(map)
+        let decoded = Decoding {
+            bytes,
+            path: &path,
+            encoding: Encoding::Linear,
+            left: &mut self.left,
+        };
+        let from_image = |image: LoadedImage| HeightMap::from_texels(&image.texels);
+        decoded.shared(&mut self.height_maps, from_image, HeightMap::bytes)
     }
 
     /// The bytes `name_or_path` names, and the path messages call it by. Files whose bytes
@@ -103,5 +102,39 @@ impl ImageCache {
             .find(|key| **key == bytes)
             .cloned()
             .unwrap_or(bytes)
+    }
+}
+
+/// One file's bytes on their way to a decoded image of one kind.
+struct Decoding<'a> {
+    bytes: Arc<[u8]>,
+    path: &'a Path,
+    encoding: Encoding,
+    /// The budget not yet taken, lowered by what is decoded.
+    left: &'a mut u64,
+}
+
+impl Decoding<'_> {
+    /// The image these bytes already decoded to in `decoded`, else decoded now (checked from its
+    /// header against the budget left), made into a `T` and kept there.
+    fn shared<T>(
+        self,
+        decoded: &mut HashMap<Arc<[u8]>, Arc<T>>,
+        make: impl FnOnce(LoadedImage) -> T,
+        size: impl Fn(&T) -> u64,
+    ) -> Result<Arc<T>, TextureError> {
+        if let Some(image) = decoded.get(&self.bytes) {
+            return Ok(image.clone());
+        }
+        let limits = Limits::within(*self.left);
+        let image = Arc::new(make(decode_image(
+            &self.bytes,
+            self.path,
+            &limits,
+            self.encoding,
+        )?));
+        *self.left = self.left.saturating_sub(size(&image));
+        decoded.insert(self.bytes, image.clone());
+        Ok(image)
     }
 }

@@ -103,3 +103,16 @@ pub fn make_fifo(path: &Path) {
     // SAFETY: mkfifo reads the NUL-terminated path it is given.
     assert_eq!(unsafe { libc::mkfifo(name.as_ptr(), 0o600) }, 0);
 }
+
+/// Polls `condition` until it holds; panics naming `what` after `limit` (a generous bound: being
+/// stuck is the failure, not being slow).
+pub fn wait_until(what: &str, limit: std::time::Duration, condition: impl Fn() -> bool) {
+    let deadline = std::time::Instant::now() + limit;
+    while !condition() {
+        assert!(
+            std::time::Instant::now() < deadline,
+            "timed out waiting for {what}"
+        );
+        std::thread::sleep(std::time::Duration::from_millis(10));
+    }
+}

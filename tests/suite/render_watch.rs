@@ -1,17 +1,9 @@
 //! `render --watch`: the still follows every save of the files it reads, a save that does not load
 //! keeps the last still, and Ctrl-C ends the watch quietly.
 
-use crate::cli_support::{assert_user_error, bumpwork, temp_dir};
+use crate::cli_support::{assert_user_error, bumpwork, temp_dir, wait_until};
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
-
-fn wait_until(what: &str, condition: impl Fn() -> bool) {
-    let deadline = Instant::now() + Duration::from_secs(20);
-    while !condition() {
-        assert!(Instant::now() < deadline, "timed out waiting for {what}");
-        std::thread::sleep(Duration::from_millis(20));
-    }
-}
 
 #[test]
 fn the_still_follows_each_save_and_a_broken_save_keeps_the_last() {
@@ -33,10 +25,12 @@ fn the_still_follows_each_save_and_a_broken_save_keeps_the_last() {
         .spawn()
         .unwrap();
     let read = || std::fs::read(&still).ok();
-    wait_until("the first still", || read().is_some());
+    wait_until("the first still", Duration::from_secs(20), || {
+        read().is_some()
+    });
     let first = read().unwrap();
     std::fs::write(&pattern, "height = 3 * sin(u / 3)\n").unwrap();
-    wait_until("the still made again", || {
+    wait_until("the still made again", Duration::from_secs(20), || {
         read().is_some_and(|b| b != first)
     });
     let second = read().unwrap();

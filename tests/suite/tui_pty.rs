@@ -7,8 +7,10 @@
 
 #![cfg(unix)]
 
+use crate::cli_support::wait_until;
 use crate::pty_support::{Session, status_contains};
 use portable_pty::CommandBuilder;
+use std::time::Duration;
 
 const COLS: u16 = 100;
 const ROWS: u16 = 30;
@@ -139,17 +141,6 @@ fn process_state(pid: u32) -> char {
         .unwrap_or('?')
 }
 
-fn wait_until(what: &str, condition: impl Fn() -> bool) {
-    let deadline = std::time::Instant::now() + std::time::Duration::from_secs(10);
-    while !condition() {
-        assert!(
-            std::time::Instant::now() < deadline,
-            "timed out waiting for {what}"
-        );
-        std::thread::sleep(std::time::Duration::from_millis(10));
-    }
-}
-
 /// Ctrl-Z and SIGTSTP give the terminal back and stop the workbench; continued, it takes the
 /// terminal again and draws everything.
 #[test]
@@ -166,7 +157,9 @@ fn ctrl_z_suspends_with_the_terminal_restored_and_continuing_redraws() {
             // SAFETY: kill only sends a signal to the process we started.
             _ => assert_eq!(unsafe { libc::kill(pid as i32, libc::SIGTSTP) }, 0),
         }
-        wait_until("the process to stop", || process_state(pid) == 'T');
+        wait_until("the process to stop", Duration::from_secs(10), || {
+            process_state(pid) == 'T'
+        });
         session.wait_for("the main screen with a cursor", |screen| {
             !screen.alternate_screen() && !screen.hide_cursor()
         });
