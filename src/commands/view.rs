@@ -33,6 +33,11 @@ pub struct ViewArgs {
     /// (circles come out round) [default: as the terminal reports, else 1x2].
     #[arg(long, value_parser = super::parse_size)]
     cell_size: Option<(u32, u32)>,
+    /// A scene setting, KEY=VALUE (repeatable), as for `render --set`: [OBJECT.]bump.PARAM,
+    /// [OBJECT.]texture.PARAM, [OBJECT.]bump.strength, [OBJECT.]bump.params.PARAM; kept over
+    /// reloads.
+    #[arg(long = "set", value_name = "KEY=VALUE", value_parser = bumpwork::overrides::Override::parse)]
+    set: Vec<bumpwork::overrides::Override>,
     /// Samples per pixel of PNGs the export key writes.
     #[arg(long, default_value_t = 4,
           value_parser = clap::value_parser!(u32).range(1..=bumpwork::still::MAX_SAMPLES as i64))]
@@ -64,6 +69,7 @@ pub fn run(args: ViewArgs) -> Result<(), Error> {
         watch: !args.no_watch,
         quality: args.quality.unwrap_or_default(),
         cell_size: args.cell_size,
+        settings: args.set,
     };
     bumpwork::tui::run(&options)
 }

@@ -12,6 +12,7 @@ use super::quality::QualityPreset;
 use super::view_mode::ViewMode;
 use crate::Error;
 use crate::memory_budget::OverBudget;
+use crate::overrides::{Override, apply_where_known};
 use crate::raster::{FrameStats, Framebuffer, PreparedScene, Viewport};
 use crate::scene::Camera;
 use crate::scene::{Material, Scene};
@@ -35,6 +36,8 @@ pub struct App {
     pub colors: ColorMode,
     /// `--cell-size`: a cell's pixels, for terminals that do not report them.
     pub cell_size: Option<(u32, u32)>,
+    /// `--set` scene settings, applied at every load.
+    settings: Vec<Override>,
     pub clock: Clock,
     pub help: bool,
     /// Lines of the help scrolled past, when it is taller than the screen.
@@ -101,10 +104,9 @@ impl App {
         if options.scenes.is_empty() {
             return Err(Error::InvalidArgument("no scene to show".into()));
         }
-        for name in &options.scenes[1..] {
-            crate::scene::load_source(name)?;
-        }
-        let (scene, reloader) = open_watched(&options.scenes[0], options.watch)?;
+        check_settings(&options.scenes, &options.settings)?;
+        let (mut scene, reloader) = open_watched(&options.scenes[0], options.watch)?;
+        apply_settings(&options.settings, &mut scene);
         let quality = options.quality;
         let orbit = Orbit::from_camera(&scene.camera);
         Ok(App {
@@ -120,6 +122,7 @@ impl App {
             glyphs: options.glyphs,
             colors,
             cell_size: options.cell_size,
+            settings: options.settings.clone(),
             clock: Clock::new(options.fps),
             help: false,
             help_scroll: 0,
@@ -272,8 +275,11 @@ impl App {
     pub fn switch_scene(&mut self, step: i32) {
         let count = self.scenes.len() as i32;
         let index = (self.scene_index as i32 + step).rem_euclid(count) as usize;
-        let opened = open_watched(&self.scenes[index], self.watch)
-            .and_then(|(scene, reloader)| Ok((prepare(scene, self.quality)?, reloader)));
+        let opened =
+            open_watched(&self.scenes[index], self.watch).and_then(|(mut scene, reloader)| {
+                apply_settings(&self.settings, &mut scene);
+                Ok((prepare(scene, self.quality)?, reloader))
+            });
         match opened {
             Ok((prepared, reloader)) => {
                 self.reloader = reloader;
@@ -301,6 +307,8 @@ impl App {
             self.dirty.text = true;
             match outcome {
                 ReloadOutcome::Reloaded(reload) => {
+                    let mut reload = reload;
+                    apply_settings(&self.settings, &mut reload.scene);
                     let scene = reload.keep_live_params(&self.prepared.scene);
                     match prepare(scene, self.quality) {
                         Ok(prepared) => {
@@ -416,6 +424,36 @@ fn prepare(scene: Scene, quality: QualityPreset) -> Result<PreparedScene, OverBu
 
 /// Pixels of the largest picture a terminal is expected to show: 500×150 cells in sextants.
 const PLANNED_OUTPUT_PIXELS: u64 = 1000 * 450;
+
+/// Every scene opens, and every `--set` is one the workbench takes: scene settings each taken by
+/// at least one of the scenes (quality is the workbench's presets: `--quality`, `Q`).
+fn check_settings(scenes: &[String], settings: &[Override]) -> Result<(), Error> {
+    if let Some(quality) = settings.iter().find(|o| !o.is_binding()) {
+        return Err(Error::InvalidArgument(format!(
+            "--set {}: the workbench's quality is one of its presets (--quality, the Q key); \
+             quality settings are for render and gallery",
+            quality.shown()
+        )));
+    }
+    let mut taken = vec![false; settings.len()];
+    for name in scenes {
+        let mut scene = crate::scene::load_source(name)?;
+        let here = apply_where_known(settings, &mut scene).map_err(Error::InvalidArgument)?;
+        taken.iter_mut().zip(here).for_each(|(t, h)| *t |= h);
+    }
+    match settings.iter().zip(&taken).find(|(_, taken)| !**taken) {
+        Some((o, _)) => Err(Error::InvalidArgument(format!(
+            "--set {}: no scene shown has that parameter",
+            o.shown()
+        ))),
+        None => Ok(()),
+    }
+}
+
+/// The scene settings `scene` has places for (checked at start: the values are valid).
+fn apply_settings(settings: &[Override], scene: &mut Scene) {
+    let _ = apply_where_known(settings, scene);
+}
 
 /// The first object with a bump map, else the first: what the material keys start on.
 fn first_bumped_object(scene: &Scene) -> usize {

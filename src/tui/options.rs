@@ -1,6 +1,7 @@
 //! How the workbench was asked to start.
 
 use super::quality::QualityPreset;
+use crate::overrides::Override;
 use crate::term::{ColorChoice, GlyphSet};
 
 #[derive(Clone, Debug)]
@@ -22,6 +23,8 @@ pub struct WorkbenchOptions {
     pub quality: QualityPreset,
     /// A cell's size in pixels, width × height, for terminals that do not report it.
     pub cell_size: Option<(u32, u32)>,
+    /// `--set` scene settings, applied to every scene shown that has them, at every load.
+    pub settings: Vec<Override>,
 }
 
 impl Default for WorkbenchOptions {
@@ -40,6 +43,7 @@ impl Default for WorkbenchOptions {
             watch: true,
             quality: QualityPreset::default(),
             cell_size: None,
+            settings: Vec::new(),
         }
     }
 }

@@ -348,3 +348,36 @@ fn at_80_by_24_every_key_of_the_help_can_be_scrolled_to() {
     app.apply(Action::Back);
     assert!(!app.help);
 }
+
+#[test]
+fn scene_settings_from_the_command_line_apply_to_the_scenes_that_have_them() {
+    let with = |settings: &[&str]| {
+        let options = WorkbenchOptions {
+            scenes: vec!["plane-dimples".into(), "textured-sphere".into()],
+            colors: ColorChoice::Fixed(ColorMode::TrueColor),
+            settings: settings
+                .iter()
+                .map(|s| bumpwork::overrides::Override::parse(s).unwrap())
+                .collect(),
+            ..WorkbenchOptions::default()
+        };
+        App::new(&options, ColorMode::TrueColor)
+    };
+    let app = with(&["bump.params.strength=3", "bump.strength=0.5"]).unwrap();
+    let bump = app.scene().objects[0].material.bump.as_ref().unwrap();
+    assert_eq!(bump.strength, 0.5);
+    let bumpwork::scene::BumpSource::Pattern(binding) = &bump.source else {
+        panic!("plane-dimples has a pattern bump");
+    };
+    assert_eq!(binding.params, vec![3.0]);
+    let refused = |settings: &[&str], expected: &str| match with(settings) {
+        Err(e) => assert!(e.to_string().contains(expected), "{e}"),
+        Ok(_) => panic!("{settings:?} was taken"),
+    };
+    refused(
+        &["quality.samples=4"],
+        "the workbench's quality is one of its presets",
+    );
+    refused(&["bump.nope=1"], "no scene shown has that parameter");
+    refused(&["bump.params.strength=9"], "outside strength's range");
+}
