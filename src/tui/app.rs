@@ -40,6 +40,9 @@ pub struct App {
     settings: Vec<Override>,
     pub clock: Clock,
     pub help: bool,
+    /// The whole message of the last failed reload (line, caret), shown over the picture until
+    /// the file loads again or Esc dismisses it.
+    pub diagnostic: Option<String>,
     /// Lines of the help scrolled past, when it is taller than the screen.
     pub help_scroll: u16,
     pub quit: bool,
@@ -125,6 +128,7 @@ impl App {
             settings: options.settings.clone(),
             clock: Clock::new(options.fps),
             help: false,
+            diagnostic: None,
             help_scroll: 0,
             quit: false,
             message: Message::None,
@@ -166,6 +170,7 @@ impl App {
             Action::Quit => self.quit = true,
             Action::ToggleHelp => self.help = !self.help,
             Action::Back if self.help => self.help = false,
+            Action::Back if self.diagnostic.is_some() => self.diagnostic = None,
             Action::Back => self.quit = true,
             // While the help is open, up and down scroll it instead of orbiting behind it.
             Action::Orbit(_, dy) if self.help => {
@@ -316,13 +321,15 @@ impl App {
                             let last = self.prepared.objects.len().saturating_sub(1);
                             self.object = self.object.min(last);
                             self.message = Message::Info("reloaded".into());
+                            self.diagnostic = None;
                             self.dirty.picture = true;
                         }
                         Err(e) => self.message = Message::Error(e.to_string()),
                     }
                 }
                 ReloadOutcome::Failed(error) => {
-                    self.message = Message::Error(error.first_line().to_string())
+                    self.message = Message::Error(error.first_line().to_string());
+                    self.diagnostic = Some(error.message);
                 }
                 ReloadOutcome::Unchanged => {}
             }

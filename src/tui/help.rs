@@ -1,4 +1,5 @@
-//! The help overlay: every key of the key map, drawn with ratatui over the picture.
+//! The overlays drawn with ratatui over the picture: the help (every key of the key map) and a
+//! failed reload's whole diagnostic.
 
 use super::keymap::help_lines;
 use ratatui::buffer::Buffer;
@@ -46,6 +47,34 @@ pub fn draw_help(area: Rect, style: Style, scroll: u16, buffer: &mut Buffer) {
             Block::default()
                 .borders(Borders::ALL)
                 .title(title)
+                .style(style),
+        )
+        .render(popup, buffer);
+}
+
+/// Draws `message` (a diagnostic: the `file:line:column` line, the source line, the caret) in a
+/// box at the top of `area`, clipped to it.
+pub fn draw_diagnostic(area: Rect, style: Style, message: &str, buffer: &mut Buffer) {
+    let lines: Vec<Line> = message
+        .lines()
+        .map(|line| {
+            Line::from(Span::styled(
+                crate::term::sanitize(line).into_owned(),
+                style,
+            ))
+        })
+        .collect();
+    let width = lines.iter().map(|l| l.width()).max().unwrap_or(0) as u16 + 4;
+    let height = lines.len() as u16 + 2;
+    let mut popup = centered(area, width, height);
+    popup.y = area.y;
+    Clear.render(popup, buffer);
+    Paragraph::new(lines)
+        .style(style)
+        .block(
+            Block::default()
+                .borders(Borders::ALL)
+                .title(" the file does not load (Esc hides this) ")
                 .style(style),
         )
         .render(popup, buffer);

@@ -175,7 +175,12 @@ pub const BINDINGS: &[Binding] = &[
     ),
     bind("e", "export view to PNG", &[Char('e')], Action::Export),
     bind("? F1", "this help", &[Char('?'), F(1)], Action::ToggleHelp),
-    bind("Esc", "close help, else quit", &[Esc], Action::Back),
+    bind(
+        "Esc",
+        "close help or diagnostic, else quit",
+        &[Esc],
+        Action::Back,
+    ),
     bind("q C-c", "quit", &[Char('q')], Action::Quit),
 ];
 

@@ -3,7 +3,7 @@
 //! with only the changed cells.
 
 use super::app::App;
-use super::help::draw_help;
+use super::help::{draw_diagnostic, draw_help};
 use super::refinement::Accumulation;
 use super::render::{
     CellShape, DEFAULT_CELL_ASPECT, Sampling, View, empty_framebuffer, encode_cells,
@@ -195,8 +195,11 @@ impl Screen {
                 style,
             );
         }
+        let picture = Rect::new(0, 0, cols, self.layout.picture_rows);
+        if let Some(message) = &app.diagnostic {
+            draw_diagnostic(picture, style, message, &mut buffer);
+        }
         if app.help {
-            let picture = Rect::new(0, 0, cols, self.layout.picture_rows);
             draw_help(picture, style, app.help_scroll, &mut buffer);
         }
         to_cells(&buffer)

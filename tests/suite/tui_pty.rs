@@ -176,3 +176,41 @@ fn ctrl_z_suspends_with_the_terminal_restored_and_continuing_redraws() {
         );
     }
 }
+
+/// A save that does not load shows its whole diagnostic over the picture (the source line and
+/// the caret, not only the status line's first line); Esc hides it, and a good save removes it.
+#[test]
+fn a_failed_reload_shows_the_whole_diagnostic_until_dismissed_or_fixed() {
+    let dir = tempfile::tempdir().unwrap();
+    let pattern = dir.path().join("live.pat");
+    std::fs::write(&pattern, "height = 0.1 * sin(20 * u)\n").unwrap();
+    let mut command = CommandBuilder::new(env!("CARGO_BIN_EXE_bumpwork"));
+    command.args(["view", "live.pat"]);
+    command.cwd(dir.path());
+    command.env("TERM", "xterm-256color");
+    let mut session = Session::spawn(command, COLS, ROWS);
+    session.wait_for("the first frame", status_contains("live.pat"));
+    let overlay = |screen: &vt100::Screen| {
+        let text = screen.contents();
+        text.contains("does not load") && text.contains("1 | height = 0.1 * * u")
+    };
+    let broken = "height = 0.1 * * u\n";
+    std::fs::write(&pattern, broken).unwrap();
+    session.wait_for("the diagnostic overlay", overlay);
+    session.send("\x1b");
+    session.wait_for("the overlay dismissed", |screen| !overlay(screen));
+    assert!(
+        session.status_line().contains("expected"),
+        "the status line keeps the error"
+    );
+    std::fs::write(&pattern, "height = 0.2 * sin(20 * u)\n").unwrap();
+    session.wait_for("the good save", status_contains("reloaded"));
+    std::fs::write(&pattern, broken).unwrap();
+    session.wait_for("the overlay again", overlay);
+    std::fs::write(&pattern, "height = 0.3 * sin(20 * u)\n").unwrap();
+    session.wait_for("the overlay gone with the fix", |screen| {
+        !overlay(screen) && status_contains("reloaded")(screen)
+    });
+    session.send("q");
+    assert_eq!(session.exit_within(Duration::from_secs(5)), Some(0));
+}
