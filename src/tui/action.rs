@@ -18,6 +18,11 @@ pub enum Action {
     ResetCamera,
     /// Degrees of azimuth and elevation.
     MoveLight(f64, f64),
+    /// The lights back where the scene file puts them.
+    ResetLights,
+    /// Every material value changed with the keys back to the file's (patterns, parameters,
+    /// strengths).
+    DropLiveValues,
     NextViewMode,
     PreviousViewMode,
     NextQuality,

@@ -198,6 +198,11 @@ impl App {
                 let center = self.orbit.target;
                 move_lights(&mut self.prepared.scene.lights, center, azimuth, elevation);
             }
+            Action::ResetLights => match self.scene_as_saved() {
+                Ok(saved) => self.prepared.scene.lights = saved.lights,
+                Err(e) => self.message = Message::Error(e.to_string()),
+            },
+            Action::DropLiveValues => self.drop_live_values(),
             Action::NextViewMode => self.view_mode = self.view_mode.cycled(1),
             Action::PreviousViewMode => self.view_mode = self.view_mode.cycled(-1),
             Action::NextQuality => self.reprepare(self.quality.next()),
@@ -314,13 +319,13 @@ impl App {
                 ReloadOutcome::Reloaded(reload) => {
                     let mut reload = reload;
                     apply_settings(&self.settings, &mut reload.scene);
-                    let scene = reload.keep_live_params(&self.prepared.scene);
+                    let (scene, kept) = reload.keep_live_params_telling(&self.prepared.scene);
                     match prepare(scene, self.quality) {
                         Ok(prepared) => {
                             self.prepared = prepared;
                             let last = self.prepared.objects.len().saturating_sub(1);
                             self.object = self.object.min(last);
-                            self.message = Message::Info("reloaded".into());
+                            self.message = Message::Info(reloaded_message(&kept));
                             self.diagnostic = None;
                             self.dirty.picture = true;
                         }
@@ -333,6 +338,31 @@ impl App {
                 }
                 ReloadOutcome::Unchanged => {}
             }
+        }
+    }
+
+    /// The current scene as its source gives it, with the `--set` settings.
+    fn scene_as_saved(&self) -> Result<Scene, Error> {
+        let mut scene = crate::scene::load_source(&self.scenes[self.scene_index])?;
+        apply_settings(&self.settings, &mut scene);
+        Ok(scene)
+    }
+
+    /// The scene's materials as its source gives them; the lights and the camera stay.
+    fn drop_live_values(&mut self) {
+        let fresh = self.scene_as_saved().and_then(|mut scene| {
+            scene.lights = self.prepared.scene.lights.clone();
+            Ok(prepare(scene, self.quality)?)
+        });
+        match fresh {
+            Ok(prepared) => {
+                self.prepared = prepared;
+                self.object = self
+                    .object
+                    .min(self.prepared.objects.len().saturating_sub(1));
+                self.message = Message::Info("the file's values again".into());
+            }
+            Err(e) => self.message = Message::Error(e.to_string()),
         }
     }
 
@@ -431,6 +461,21 @@ fn prepare(scene: Scene, quality: QualityPreset) -> Result<PreparedScene, OverBu
 
 /// Pixels of the largest picture a terminal is expected to show: 500×150 cells in sextants.
 const PLANNED_OUTPUT_PIXELS: u64 = 1000 * 450;
+
+/// "reloaded", and the live values that stayed over the file's new ones.
+fn reloaded_message(kept: &[crate::watch::KeptValue]) -> String {
+    if kept.is_empty() {
+        return "reloaded".into();
+    }
+    let values: Vec<String> = kept
+        .iter()
+        .map(|k| format!("{}={:.3} (the file says {:.3})", k.param, k.live, k.file))
+        .collect();
+    format!(
+        "reloaded; kept the live {}; x takes the file's values",
+        values.join(", ")
+    )
+}
 
 /// Every scene opens, and every `--set` is one the workbench takes: scene settings each taken by
 /// at least one of the scenes (quality is the workbench's presets: `--quality`, `Q`).

@@ -87,6 +87,7 @@ pub const BINDINGS: &[Binding] = &[
         Action::MoveLight(0.0, LIGHT_STEP),
     ),
     bind("", "", &[Char('f')], Action::MoveLight(0.0, -LIGHT_STEP)),
+    bind("R", "reset lights", &[Char('R')], Action::ResetLights),
     bind(
         "v V",
         "next / previous view mode",
@@ -172,6 +173,12 @@ pub const BINDINGS: &[Binding] = &[
         "colours: true / 256 / 16 / none",
         &[Char('c')],
         Action::NextColors,
+    ),
+    bind(
+        "x",
+        "drop live values: the file's again",
+        &[Char('x')],
+        Action::DropLiveValues,
     ),
     bind("e", "export view to PNG", &[Char('e')], Action::Export),
     bind("? F1", "this help", &[Char('?'), F(1)], Action::ToggleHelp),

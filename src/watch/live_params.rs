@@ -8,8 +8,10 @@ use crate::scene::{BumpSource, Material, PatternBinding, Scene, Texturing};
 /// A binding is the same when it sits on the same object (by index), in the same slot (texture
 /// or bump) and names the same pattern; a parameter is the same when its name is. Values are
 /// clamped to the new range. Parameters the user did not touch take the new file's value, so
-/// editing a default in the pattern file shows up.
-pub fn carry_live_params(as_loaded: &Scene, live: &Scene, reloaded: &mut Scene) {
+/// editing a default in the pattern file shows up. Returns the live values kept where the file's
+/// own value changed, which the user should hear of.
+pub fn carry_live_params(as_loaded: &Scene, live: &Scene, reloaded: &mut Scene) -> Vec<KeptValue> {
+    let mut kept = Vec::new();
     for (index, object) in reloaded.objects.iter_mut().enumerate() {
         let (Some(before), Some(shown)) = (as_loaded.objects.get(index), live.objects.get(index))
         else {
@@ -21,13 +23,28 @@ pub fn carry_live_params(as_loaded: &Scene, live: &Scene, reloaded: &mut Scene) 
             .zip(pattern_bindings_mut(&mut object.material));
         for ((before, shown), new) in slots {
             if let (Some(before), Some(shown), Some(new)) = (before, shown, new) {
-                carry_binding(before, shown, new);
+                carry_binding(before, shown, new, &mut kept);
             }
         }
     }
+    kept
 }
 
-fn carry_binding(before: &PatternBinding, shown: &PatternBinding, new: &mut PatternBinding) {
+/// A value changed with the keys and kept over a reload whose file gave the parameter another.
+#[derive(Clone, Debug, PartialEq)]
+pub struct KeptValue {
+    pub param: String,
+    pub live: f32,
+    /// What the file now says.
+    pub file: f32,
+}
+
+fn carry_binding(
+    before: &PatternBinding,
+    shown: &PatternBinding,
+    new: &mut PatternBinding,
+    kept: &mut Vec<KeptValue>,
+) {
     if before.name != new.name || shown.name != new.name {
         return;
     }
@@ -44,7 +61,15 @@ fn carry_binding(before: &PatternBinding, shown: &PatternBinding, new: &mut Patt
             continue;
         };
         if value != loaded && value.is_finite() {
+            let file = new.params[slot];
             new.params[slot] = value.clamp(param.min, param.max);
+            if file != loaded {
+                kept.push(KeptValue {
+                    param: param.name.clone(),
+                    live: new.params[slot],
+                    file,
+                });
+            }
         }
     }
 }
@@ -120,8 +145,25 @@ mod tests {
         let live = scene_with("p.pat", OLD, vec![1.0, 7.0]);
         let new_source = "param c = 3 in 0..10\nparam b = 4 in 0..5\nparam a = 6 in 0..10\nheight = a * b * c * u";
         let mut reloaded = scene_with("p.pat", new_source, vec![3.0, 4.0, 6.0]);
-        carry_live_params(&as_loaded, &live, &mut reloaded);
+        let kept = carry_live_params(&as_loaded, &live, &mut reloaded);
         assert_eq!(bump_params(&reloaded), vec![3.0, 5.0, 6.0]);
+        // b's value in the file changed (2 to 4) under the live 7: the user hears of it.
+        let told = KeptValue {
+            param: "b".into(),
+            live: 5.0,
+            file: 4.0,
+        };
+        assert_eq!(kept, vec![told]);
+    }
+
+    #[test]
+    fn a_kept_value_whose_file_value_did_not_change_is_not_reported() {
+        let as_loaded = scene_with("p.pat", OLD, vec![1.0, 2.0]);
+        let live = scene_with("p.pat", OLD, vec![5.0, 2.0]);
+        let mut reloaded = scene_with("p.pat", OLD, vec![1.0, 2.0]);
+        let kept = carry_live_params(&as_loaded, &live, &mut reloaded);
+        assert_eq!(bump_params(&reloaded), vec![5.0, 2.0]);
+        assert!(kept.is_empty(), "{kept:?}");
     }
 
     #[test]

@@ -34,7 +34,7 @@ mod watched_dirs;
 mod worker;
 
 pub use error::WatchError;
-pub use live_params::carry_live_params;
+pub use live_params::{KeptValue, carry_live_params};
 pub use open_watched::open_watched;
 pub use outcome::{Reload, ReloadError, ReloadOutcome};
 pub use reloader::{DEBOUNCE, Reloader};

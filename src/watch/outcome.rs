@@ -1,6 +1,6 @@
 //! What a batch of file events led to: a rebuilt scene, an error, or nothing.
 
-use super::live_params::carry_live_params;
+use super::live_params::{KeptValue, carry_live_params};
 use crate::scene::Scene;
 
 /// What one debounced batch of file events led to.
@@ -27,11 +27,17 @@ impl Reload {
     /// The new scene, carrying over the parameter values the user changed in `live` (the
     /// previous scene as shown) wherever the parameter still exists. See [`carry_live_params`].
     pub fn keep_live_params(self, live: &Scene) -> Scene {
+        self.keep_live_params_telling(live).0
+    }
+
+    /// As `keep_live_params`, with the live values kept where the file's value changed.
+    pub fn keep_live_params_telling(self, live: &Scene) -> (Scene, Vec<KeptValue>) {
         let mut scene = self.scene;
-        if let Some(previous) = &self.previous {
-            carry_live_params(previous, live, &mut scene);
-        }
-        scene
+        let kept = match &self.previous {
+            Some(previous) => carry_live_params(previous, live, &mut scene),
+            None => Vec::new(),
+        };
+        (scene, kept)
     }
 }
 

@@ -381,3 +381,22 @@ fn scene_settings_from_the_command_line_apply_to_the_scenes_that_have_them() {
     refused(&["bump.nope=1"], "no scene shown has that parameter");
     refused(&["bump.params.strength=9"], "outside strength's range");
 }
+
+#[test]
+fn keys_take_the_lights_and_the_materials_back_to_the_file() {
+    let mut app = app();
+    let lights = app.scene().lights.clone();
+    let material = app.scene().objects[0].material.clone();
+    app.apply(Action::MoveLight(45.0, 10.0));
+    app.apply(Action::ScaleBump(2.0));
+    app.apply(Action::AdjustParam(5.0));
+    assert_ne!(app.scene().lights, lights);
+    assert_ne!(app.scene().objects[0].material, material);
+    let camera = app.camera();
+    app.apply(Action::DropLiveValues);
+    assert_eq!(app.scene().objects[0].material, material);
+    assert_ne!(app.scene().lights, lights, "the lights have their own key");
+    app.apply(Action::ResetLights);
+    assert_eq!(app.scene().lights, lights);
+    assert_eq!(app.camera(), camera, "the camera has its own key");
+}
