@@ -64,7 +64,10 @@ fn event_loop(app: &mut App, signals: &ShutdownSignals, mouse: bool) -> io::Resu
     // SIGTSTP (the shell's `kill -TSTP`, a terminal's suspend key outside raw mode) suspends as
     // Ctrl-Z does, instead of stopping the process with the terminal raw.
     let suspend_asked = Arc::new(AtomicBool::new(false));
-    let _tstp = signal_hook::flag::register(signal_hook::consts::SIGTSTP, suspend_asked.clone())?;
+    let _tstp = Registered(signal_hook::flag::register(
+        signal_hook::consts::SIGTSTP,
+        suspend_asked.clone(),
+    )?);
     let (cols, rows) = crossterm::terminal::size()?;
     let mut screen = Screen::new(cols, rows);
     screen.set_cell_aspect(cell_aspect(app.cell_size), app);
@@ -100,13 +103,28 @@ fn event_loop(app: &mut App, signals: &ShutdownSignals, mouse: bool) -> io::Resu
             let _ = screen.refine(app, &mut io::stdout().lock());
         }
         if suspend && signals.received().is_none() {
-            crate::term::suspend_and_resume(mouse)?;
-            // The shell drew over the screen, and the window may have changed meanwhile.
-            let (cols, rows) = crossterm::terminal::size()?;
-            screen.resize(cols, rows, app);
-            screen.set_cell_aspect(cell_aspect(app.cell_size), app);
+            suspend_until_continued(app, &mut screen, mouse)?;
         }
     }
+    Ok(())
+}
+
+/// A signal handler that is removed (the default action back) when this is dropped.
+struct Registered(signal_hook::SigId);
+
+impl Drop for Registered {
+    fn drop(&mut self) {
+        signal_hook::low_level::unregister(self.0);
+    }
+}
+
+/// Gives the terminal back and stops; once continued, draws everything again at the window's
+/// size then (the shell drew over the screen, and the window may have changed meanwhile).
+fn suspend_until_continued(app: &mut App, screen: &mut Screen, mouse: bool) -> io::Result<()> {
+    crate::term::suspend_and_resume(mouse)?;
+    let (cols, rows) = crossterm::terminal::size()?;
+    screen.resize(cols, rows, app);
+    screen.set_cell_aspect(cell_aspect(app.cell_size), app);
     Ok(())
 }
 
