@@ -6,6 +6,7 @@ mod contrast;
 mod in_order;
 mod recipe;
 mod samples;
+mod saved_view;
 mod stream;
 
 pub use bands::{
@@ -16,4 +17,5 @@ pub use recipe::{
     StillSettings, check_quality,
 };
 pub use samples::{MAX_SAMPLES, RefiningOrder, ResolveFilter, Supersampling};
+pub use saved_view::saved_view;
 pub use stream::{RowSink, StillStop, stream_still};

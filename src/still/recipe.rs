@@ -384,7 +384,7 @@ fn absolute_source(source: &str) -> String {
 }
 
 /// The directory a source's relative pattern and image names are resolved against.
-fn source_directory(source: &str) -> PathBuf {
+pub(super) fn source_directory(source: &str) -> PathBuf {
     let path = Path::new(source);
     if crate::scene::preset(source).is_some() || source.ends_with(".pat") {
         return PathBuf::from(".");
@@ -395,7 +395,7 @@ fn source_directory(source: &str) -> PathBuf {
 }
 
 /// A pattern or image name as an absolute path when it names a file, else (built-in) as it is.
-fn absolute_name(name: &str, base: &Path) -> String {
+pub(super) fn absolute_name(name: &str, base: &Path) -> String {
     let path = base.join(name);
     if path.is_file() {
         std::fs::canonicalize(&path).map_or_else(|_| name.to_string(), |p| p.display().to_string())
@@ -404,7 +404,7 @@ fn absolute_name(name: &str, base: &Path) -> String {
     }
 }
 
-fn object_state(material: &Material, base: &Path) -> ObjectState {
+pub(super) fn object_state(material: &Material, base: &Path) -> ObjectState {
     let bump = material.bump.as_ref().map(|bump| {
         let mut state = match &bump.source {
             BumpSource::Pattern(binding) => pattern_state(binding, base),

@@ -44,4 +44,6 @@ pub enum Action {
     TogglePause,
     StepClock,
     Export,
+    /// The view as a new scene file in the export directory.
+    SaveScene,
 }

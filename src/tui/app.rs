@@ -182,6 +182,7 @@ impl App {
             Action::NextScene => self.switch_scene(1),
             Action::PreviousScene => self.switch_scene(-1),
             Action::Export => self.export(),
+            Action::SaveScene => self.save_scene(),
             _ => self.apply_to_picture(action),
         }
     }
@@ -341,6 +342,20 @@ impl App {
         }
     }
 
+    /// Writes the view (camera, lights, live material values) as a new scene file beside the
+    /// exports, never over an existing file.
+    fn save_scene(&mut self) {
+        let source = &self.scenes[self.scene_index];
+        let stem = format!("bumpwork-{}", super::export::slug(&self.scene().name));
+        let path = super::export::unique_path(&self.export_dir, &stem, "toml");
+        let saved = crate::still::saved_view(source, &self.prepared.scene, &self.camera())
+            .and_then(|file| write_new_file(&path, file.to_toml().as_bytes()));
+        self.message = match saved {
+            Ok(()) => Message::Info(format!("saved the view as {}", path.display())),
+            Err(e) => Message::Error(e.to_string()),
+        };
+    }
+
     /// The current scene as its source gives it, with the `--set` settings.
     fn scene_as_saved(&self) -> Result<Scene, Error> {
         let mut scene = crate::scene::load_source(&self.scenes[self.scene_index])?;
@@ -461,6 +476,15 @@ fn prepare(scene: Scene, quality: QualityPreset) -> Result<PreparedScene, OverBu
 
 /// Pixels of the largest picture a terminal is expected to show: 500×150 cells in sextants.
 const PLANNED_OUTPUT_PIXELS: u64 = 1000 * 450;
+
+/// Writes `bytes` to `path` whole or not at all.
+fn write_new_file(path: &std::path::Path, bytes: &[u8]) -> Result<(), Error> {
+    use std::io::Write;
+    let (output, mut file) = crate::export::OutputFile::create(path)?;
+    file.write_all(bytes)
+        .map_err(|e| Error::write(path, crate::bounded_read::io_words(&e)))?;
+    output.commit()
+}
 
 /// "reloaded", and the live values that stayed over the file's new ones.
 fn reloaded_message(kept: &[crate::watch::KeptValue]) -> String {

@@ -59,7 +59,7 @@ impl ExportJob {
                 time: view.time,
                 mode: view.mode.shader_mode(),
             },
-            path: unique_path(dir, &stem),
+            path: unique_path(dir, &stem, "png"),
         };
         let cancel = Arc::new(AtomicBool::new(false));
         let (sender, done) = channel();
@@ -158,22 +158,22 @@ fn export_picture(order: ExportOrder) -> Result<(), Error> {
 }
 
 /// `dir/stem-SECONDS.png`, or with `-2`, `-3`… added if that exists: never overwrites a file.
-fn unique_path(dir: &Path, stem: &str) -> PathBuf {
+pub(super) fn unique_path(dir: &Path, stem: &str, extension: &str) -> PathBuf {
     let seconds = SystemTime::now()
         .duration_since(UNIX_EPOCH)
         .map_or(0, |d| d.as_secs());
     let base = format!("{stem}-{seconds}");
     (1..)
         .map(|n| match n {
-            1 => dir.join(format!("{base}.png")),
-            n => dir.join(format!("{base}-{n}.png")),
+            1 => dir.join(format!("{base}.{extension}")),
+            n => dir.join(format!("{base}-{n}.{extension}")),
         })
         .find(|path| !path.exists())
         .expect("some suffix is free")
 }
 
 /// A scene name (which may come from a file) made safe for a file name.
-fn slug(name: &str) -> String {
+pub(super) fn slug(name: &str) -> String {
     let slug: String = name
         .chars()
         .map(|c| {
@@ -200,9 +200,9 @@ mod tests {
     fn names_are_unique_and_safe() {
         let dir = std::env::temp_dir().join(format!("bumpwork-export-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
-        let first = unique_path(&dir, "a");
+        let first = unique_path(&dir, "a", "png");
         std::fs::write(&first, b"").unwrap();
-        assert_ne!(unique_path(&dir, "a"), first);
+        assert_ne!(unique_path(&dir, "a", "png"), first);
         assert_eq!(slug("../x y\u{1b}"), "---x-y-");
         std::fs::remove_dir_all(&dir).unwrap();
     }

@@ -181,6 +181,12 @@ pub const BINDINGS: &[Binding] = &[
         Action::DropLiveValues,
     ),
     bind("e", "export view to PNG", &[Char('e')], Action::Export),
+    bind(
+        "s",
+        "save view as a new scene file",
+        &[Char('s')],
+        Action::SaveScene,
+    ),
     bind("? F1", "this help", &[Char('?'), F(1)], Action::ToggleHelp),
     bind(
         "Esc",

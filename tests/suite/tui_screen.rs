@@ -400,3 +400,70 @@ fn keys_take_the_lights_and_the_materials_back_to_the_file() {
     assert_eq!(app.scene().lights, lights);
     assert_eq!(app.camera(), camera, "the camera has its own key");
 }
+
+/// PSNR in dB between two 8-bit pictures of the same size.
+fn psnr(a: &[u8], b: &[u8]) -> f64 {
+    let squared: f64 = a
+        .iter()
+        .zip(b)
+        .map(|(&p, &q)| (f64::from(p) - f64::from(q)).powi(2))
+        .sum();
+    10.0 * (255.0f64.powi(2) * a.len() as f64 / squared.max(1e-9)).log10()
+}
+
+#[test]
+fn the_saved_scene_renders_what_the_export_key_exports() {
+    let mut app = app();
+    app.apply(Action::NextScene);
+    let dir = fresh_dir("save");
+    app.export_dir = dir.clone();
+    app.export_size = (64, 36);
+    app.export_samples = 4;
+    // The same live edits as an export carries: camera, light, parameter, bump.
+    app.apply(Action::Orbit(20.0, 5.0));
+    app.apply(Action::MoveLight(30.0, 0.0));
+    app.apply(Action::AdjustParam(10.0));
+    app.apply(Action::ScaleBump(2.0));
+    app.apply(Action::SaveScene);
+    let Message::Info(text) = app.message.clone() else {
+        panic!("{:?}", app.message);
+    };
+    let saved = Path::new(text.strip_prefix("saved the view as ").unwrap()).to_path_buf();
+    app.apply(Action::Export);
+    let exported = finished_export_message(&mut app);
+    let exported = Path::new(exported.strip_prefix("exported ").unwrap()).to_path_buf();
+    let render = |args: &[&std::ffi::OsStr], out: &Path| {
+        let output = std::process::Command::new(env!("CARGO_BIN_EXE_bumpwork"))
+            .args(args)
+            .args(["--size", "64x36", "--samples", "4", "-o"])
+            .arg(out)
+            .output()
+            .unwrap();
+        assert!(
+            output.status.success(),
+            "{}",
+            String::from_utf8_lossy(&output.stderr)
+        );
+        read_png_rgb8(out).unwrap().2
+    };
+    let from_scene = render(
+        &["render".as_ref(), saved.as_os_str()],
+        &dir.join("scene.png"),
+    );
+    let from_still = render(
+        &["render".as_ref(), "--from".as_ref(), exported.as_os_str()],
+        &dir.join("still.png"),
+    );
+    let db = psnr(&from_scene, &from_still);
+    assert!(
+        db >= 40.0,
+        "the saved scene and the export agree to {db:.1} dB"
+    );
+    // A second save takes a new name.
+    app.apply(Action::SaveScene);
+    let Message::Info(again) = app.message.clone() else {
+        panic!("{:?}", app.message);
+    };
+    assert_ne!(again, text);
+    std::fs::remove_dir_all(&dir).unwrap();
+}

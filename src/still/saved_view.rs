@@ -1,0 +1,61 @@
+//! The view on screen as a scene file of its own: the source scene's file with the camera, the
+//! lights and every material value changed live written in, so the workbench's `s` keeps a
+//! tweak that otherwise lives only in an exported still's recipe.
+
+use super::recipe::{absolute_name, object_state, source_directory};
+use crate::Error;
+use crate::scene::Camera;
+use crate::scene::{
+    BindingFile, CameraFile, Direction, FieldOfView, LightFile, Point, Positive, Scene, SceneFile,
+};
+use std::path::Path;
+
+/// The scene file that renders `scene` (as shown, from `source`) through `camera`. Its file
+/// names are absolute, so it can be saved anywhere.
+pub fn saved_view(source: &str, scene: &Scene, camera: &Camera) -> Result<SceneFile, Error> {
+    let text = crate::scene::source_text(source)?;
+    let mut file: SceneFile = toml::from_str(&text)
+        .map_err(|e| Error::Diagnostic(format!("{source}: {}", e.message())))?;
+    let base = source_directory(source);
+    file.camera = camera_file(camera)?;
+    file.lights = scene.lights.iter().map(LightFile::of).collect();
+    for (written, shown) in file.objects.iter_mut().zip(&scene.objects) {
+        let state = object_state(&shown.material, &base);
+        written.bump = merged(written.bump.take(), state.bump, &base);
+        written.texture = merged(written.texture.take(), state.texture, &base);
+    }
+    Ok(file)
+}
+
+/// The binding to write: the live pattern binding where there is one; else the file's (an image)
+/// with the live strength and sign, its image named absolutely.
+fn merged(
+    in_file: Option<BindingFile>,
+    live: Option<BindingFile>,
+    base: &Path,
+) -> Option<BindingFile> {
+    match (in_file, live) {
+        (_, Some(live)) if live.pattern.is_some() => Some(live),
+        (Some(mut image), live) => {
+            image.image = image.image.map(|name| absolute_name(&name, base));
+            if let Some(live) = live {
+                image.strength = live.strength.or(image.strength);
+                image.invert = live.invert.or(image.invert);
+            }
+            Some(image)
+        }
+        (None, live) => live,
+    }
+}
+
+fn camera_file(camera: &Camera) -> Result<CameraFile, Error> {
+    let refuse = |e: String| Error::InvalidArgument(format!("the camera: {e}"));
+    Ok(CameraFile {
+        eye: Point::try_from(camera.eye.to_array().to_vec()).map_err(refuse)?,
+        target: Point::try_from(camera.target.to_array().to_vec()).map_err(refuse)?,
+        up: Direction::try_from(camera.up.as_dvec3().to_array().to_vec()).map_err(refuse)?,
+        fov: FieldOfView::try_from(f64::from(camera.vfov_degrees)).map_err(refuse)?,
+        near: Some(Positive::try_from(f64::from(camera.near)).map_err(refuse)?),
+        far: Some(Positive::try_from(f64::from(camera.far)).map_err(refuse)?),
+    })
+}
