@@ -52,6 +52,16 @@ pub fn run(options: &WorkbenchOptions) -> Result<(), Error> {
     let guard = TerminalGuard::enter(options.mouse).map_err(terminal_error)?;
     let result = event_loop(&mut app, &signals, options.mouse);
     drop(guard);
+    // On the normal screen now: say what became of an export still running.
+    if let Some(job) = app.export_job.take() {
+        let path = job.path.clone();
+        // Dropped: cancelled and waited for, its temporary file removed.
+        drop(job);
+        eprintln!(
+            "bumpwork: the export of {} was cancelled on quitting; nothing was written",
+            crate::term::sanitize(&path.display().to_string())
+        );
+    }
     if let Some(signal) = signals.received() {
         // Cancels an export under way and waits for it, so its temporary file is removed.
         drop(app);

@@ -214,3 +214,30 @@ fn a_failed_reload_shows_the_whole_diagnostic_until_dismissed_or_fixed() {
     session.send("q");
     assert_eq!(session.exit_within(Duration::from_secs(5)), Some(0));
 }
+
+/// Quitting while an export runs cancels it, leaves no file, and says so on the normal screen.
+#[test]
+fn quitting_during_an_export_says_it_was_cancelled() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut command = CommandBuilder::new(env!("CARGO_BIN_EXE_bumpwork"));
+    command.args([
+        "view",
+        "plane-dimples",
+        "--export-size",
+        "8000x8000",
+        "--export-samples",
+        "64",
+    ]);
+    command.cwd(dir.path());
+    command.env("TERM", "xterm-256color");
+    let mut session = Session::spawn(command, COLS, ROWS);
+    session.wait_for("the first frame", status_contains("plane-dimples"));
+    session.send("e");
+    session.wait_for("the export to start", status_contains("exporting"));
+    session.send("q");
+    assert_eq!(session.exit_within(Duration::from_secs(5)), Some(0));
+    session.wait_for("the note on the normal screen", |screen| {
+        !screen.alternate_screen() && screen.contents().contains("was cancelled on quitting")
+    });
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0);
+}
