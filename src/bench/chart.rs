@@ -3,9 +3,10 @@
 //! numbers' variants beside the plot, in the contact sheet's 5×7 bitmap font.
 
 use super::Summary;
+use super::label_placement::place_labels;
 use super::pareto::pareto_front;
 use super::variants::VariantKind;
-use crate::label_font::{GLYPH_HEIGHT, text_pixels};
+use crate::label_font::{GLYPH_HEIGHT, text_pixels, text_width};
 use crate::raster::Framebuffer;
 use crate::texture::srgb_to_linear;
 use glam::Vec3;
@@ -49,8 +50,16 @@ pub fn draw_chart(summaries: &[Summary], metric: ChartMetric) -> Framebuffer {
     for (i, (&point, summary)) in points.iter().zip(summaries).enumerate() {
         let on_front = front.contains(&i);
         draw_point(&mut pixmap, &axes, point, summary.variant.kind, on_front);
-        let (x, y) = axes.to_pixel(point);
-        draw_number(&mut pixmap, x + 6.0, y - 16.0, i as u32 + 1, [40, 40, 40]);
+    }
+    let anchors: Vec<(f32, f32)> = points.iter().map(|&p| axes.to_pixel(p)).collect();
+    let sizes: Vec<(f32, f32)> = (1..=points.len())
+        .map(|n| {
+            let width = text_width(&n.to_string(), GLYPH_SCALE) as f32;
+            (width, (GLYPH_HEIGHT * GLYPH_SCALE) as f32)
+        })
+        .collect();
+    for (i, (x, y)) in place_labels(&anchors, &sizes).into_iter().enumerate() {
+        draw_number(&mut pixmap, x, y, i as u32 + 1, [40, 40, 40]);
     }
     draw_legend(&mut pixmap, summaries, &front);
     to_framebuffer(&pixmap)

@@ -2,6 +2,7 @@
 //! on the standard scenes and measured against the exact reference on the same frame.
 
 mod chart;
+mod label_placement;
 mod pareto;
 mod variants;
 
