@@ -27,7 +27,10 @@ pub struct SheetLayout {
 
 const GAP: u32 = 8;
 const LABEL_SCALE: u32 = 2;
-const LABEL_HEIGHT: u32 = GLYPH_HEIGHT * LABEL_SCALE + 2 * 4;
+/// Rows of label text under a thumbnail: a long name wraps at its hyphens instead of shrinking.
+const LABEL_LINES: u32 = 2;
+const LINE_HEIGHT: u32 = GLYPH_HEIGHT * LABEL_SCALE + 4;
+const LABEL_HEIGHT: u32 = LINE_HEIGHT * LABEL_LINES + 4;
 
 /// The sheet being drawn: each picture is placed as soon as it is rendered, so the gallery holds
 /// the sheet and one still, never every still at once.
@@ -138,26 +141,72 @@ fn rgba_pixmap(picture: &SheetPicture) -> Option<Pixmap> {
     Pixmap::from_vec(rgba, IntSize::from_wh(picture.width, picture.height)?)
 }
 
-/// The label centred under its thumbnail: at half size if that makes it fit, else cut.
+/// The label centred under its thumbnail, at full size: wrapped at hyphens onto `LABEL_LINES`
+/// lines, and only what still does not fit cut (marked `..`).
 fn draw_label(sheet: &mut Pixmap, label: &str, at: (u32, u32), width: u32) {
-    let scale = if text_width(label, LABEL_SCALE) <= width {
-        LABEL_SCALE
-    } else {
-        1
-    };
-    let fits: String = label
-        .chars()
-        .take(((width / scale + 1) / 6) as usize)
-        .collect();
-    let top = at.1 + (GLYPH_HEIGHT * (LABEL_SCALE - scale)) / 2;
-    let left = at.0 + (width.saturating_sub(text_width(&fits, scale))) / 2;
     let (sheet_w, sheet_h) = (sheet.width(), sheet.height());
     let data = sheet.data_mut();
-    for (dx, dy) in text_pixels(&fits, scale) {
-        let (x, y) = (left + dx, top + dy);
-        if x < sheet_w && y < sheet_h {
-            let i = 4 * (y * sheet_w + x) as usize;
-            data[i..i + 4].copy_from_slice(&[230, 230, 230, 255]);
+    for (row, line) in label_lines(label, width).iter().enumerate() {
+        let top = at.1 + row as u32 * LINE_HEIGHT;
+        let left = at.0 + (width.saturating_sub(text_width(line, LABEL_SCALE))) / 2;
+        for (dx, dy) in text_pixels(line, LABEL_SCALE) {
+            let (x, y) = (left + dx, top + dy);
+            if x < sheet_w && y < sheet_h {
+                let i = 4 * (y * sheet_w + x) as usize;
+                data[i..i + 4].copy_from_slice(&[230, 230, 230, 255]);
+            }
         }
+    }
+}
+
+/// `label` in lines of at most `width` pixels at `LABEL_SCALE`, broken after hyphens; a line the
+/// words still do not fit (past `LABEL_LINES`, or one long word) is cut, ending in `..`.
+fn label_lines(label: &str, width: u32) -> Vec<String> {
+    let fits = |text: &str| text_width(text, LABEL_SCALE) <= width;
+    let mut lines: Vec<String> = vec![String::new()];
+    for word in label.split_inclusive('-') {
+        let last = lines.last_mut().expect("one line at least");
+        if fits(&format!("{last}{word}")) || last.is_empty() {
+            last.push_str(word);
+        } else {
+            lines.push(word.to_string());
+        }
+    }
+    if lines.len() > LABEL_LINES as usize {
+        let rest = lines.split_off(LABEL_LINES as usize - 1).concat();
+        lines.push(rest);
+    }
+    for line in lines.iter_mut().filter(|line| !fits(line)) {
+        while !line.is_empty() && !fits(&format!("{line}..")) {
+            line.pop();
+        }
+        line.push_str("..");
+    }
+    lines
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn long_names_wrap_at_hyphens_at_full_size() {
+        let width = 240;
+        assert_eq!(label_lines("plane-dimples", width), vec!["plane-dimples"]);
+        let lines = label_lines("sphere-on-plane-dots-and-dimples", width);
+        assert_eq!(lines.len(), 2, "{lines:?}");
+        assert_eq!(lines.concat(), "sphere-on-plane-dots-and-dimples");
+        assert!(
+            lines.iter().all(|l| text_width(l, LABEL_SCALE) <= width),
+            "{lines:?}"
+        );
+        let long = "a-very-long-name-that-goes-on-and-on-past-two-lines-of-text";
+        let lines = label_lines(long, width);
+        assert_eq!(lines.len(), 2, "{lines:?}");
+        assert!(lines[1].ends_with(".."), "{lines:?}");
+        assert!(
+            lines.iter().all(|l| text_width(l, LABEL_SCALE) <= width),
+            "{lines:?}"
+        );
     }
 }

@@ -382,9 +382,9 @@ fn the_gallery_writes_each_scene_and_a_contact_sheet_of_them() {
         recipe_of(&dir.join("textured-sphere.png")).source,
         "textured-sphere"
     );
-    // Two 32-wide cells with 8-pixel gaps; one row of 24 + a 22-pixel label.
+    // Two 32-wide cells with 8-pixel gaps; one row of 24 + a label of two 18-pixel lines.
     let (w, h, sheet) = decode_png(&dir.join("contact-sheet.png"));
-    assert_eq!((w, h), (2 * 40 + 8, 24 + 22 + 8 + 8));
+    assert_eq!((w, h), (2 * 40 + 8, 24 + 40 + 8 + 8));
     // The first thumbnail's middle is the first still's middle, scaled down by 2.
     let (sw, _, still) = decode_png(&dir.join("plane-dimples.png"));
     let at =
