@@ -7,7 +7,6 @@
 
 use crate::cli_support::make_fifo;
 use crate::pty_support::{Session, status_contains};
-use portable_pty::CommandBuilder;
 use std::path::Path;
 use std::time::{Duration, Instant};
 
@@ -34,12 +33,8 @@ fn quits_after(replace: impl Fn(&Path), reported: &'static str) {
         let dir = tempfile::tempdir().unwrap();
         let pattern = dir.path().join("live.pat");
         std::fs::write(&pattern, "height = 0.1 * sin(20 * u)\n").unwrap();
-        let mut command = CommandBuilder::new(env!("CARGO_BIN_EXE_bumpwork"));
-        command.args(["view", "live.pat"]);
-        command.cwd(dir.path());
-        command.env("TERM", "xterm-256color");
-        let mut session = Session::spawn(command, 120, 30);
-        session.wait_for("the first frame", status_contains("live.pat"));
+        let view = ["view", "live.pat"];
+        let mut session = Session::bumpwork(&view, Some(dir.path()), (120, 30), "live.pat");
 
         let replacement = dir.path().join("replacement");
         replace(&replacement);

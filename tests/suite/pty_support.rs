@@ -18,6 +18,25 @@ pub struct Session {
 }
 
 impl Session {
+    /// Runs `bumpwork ARGS` (TERM=xterm-256color) in `cwd` in a fresh pseudo-terminal of
+    /// `cols` × `rows`, and waits until its status line shows `first` (the first frame is up).
+    pub fn bumpwork(
+        args: &[&str],
+        cwd: Option<&std::path::Path>,
+        (cols, rows): (u16, u16),
+        first: &'static str,
+    ) -> Session {
+        let mut command = CommandBuilder::new(env!("CARGO_BIN_EXE_bumpwork"));
+        command.args(args);
+        if let Some(cwd) = cwd {
+            command.cwd(cwd);
+        }
+        command.env("TERM", "xterm-256color");
+        let session = Session::spawn(command, cols, rows);
+        session.wait_for("the first frame", status_contains(first));
+        session
+    }
+
     /// Runs `command` in a fresh pseudo-terminal of `cols` × `rows`.
     pub fn spawn(command: CommandBuilder, cols: u16, rows: u16) -> Session {
         let pty = native_pty_system()

@@ -95,28 +95,30 @@ fn the_workbench_runs_in_a_real_terminal_and_gives_it_back() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
+/// The workbench in `dir`, exporting a still large and supersampled enough to be still running
+/// when the test acts.
+fn exporting_in(dir: &std::path::Path) -> Session {
+    let args = [
+        "view",
+        "plane-dimples",
+        "--export-size",
+        "8000x8000",
+        "--export-samples",
+        "64",
+    ];
+    let mut session = Session::bumpwork(&args, Some(dir), (COLS, ROWS), "plane-dimples");
+    session.send("e");
+    session.wait_for("the export to start", status_contains("exporting"));
+    session
+}
+
 /// Every catchable signal that ends the workbench during an export leaves neither the still nor
 /// its temporary file, and ends it within the 0.5 s grace.
 #[test]
 fn a_signal_during_an_export_leaves_no_file() {
     for (name, signal) in [("SIGQUIT", libc::SIGQUIT), ("SIGUSR1", libc::SIGUSR1)] {
         let dir = tempfile::tempdir().unwrap();
-        let mut command = CommandBuilder::new(env!("CARGO_BIN_EXE_bumpwork"));
-        // Large and supersampled: the export is still running when the signal comes.
-        command.args([
-            "view",
-            "plane-dimples",
-            "--export-size",
-            "8000x8000",
-            "--export-samples",
-            "64",
-        ]);
-        command.cwd(dir.path());
-        command.env("TERM", "xterm-256color");
-        let mut session = Session::spawn(command, COLS, ROWS);
-        session.wait_for("the first frame", status_contains("plane-dimples"));
-        session.send("e");
-        session.wait_for("the export to start", status_contains("exporting"));
+        let mut session = exporting_in(dir.path());
         let pid = session.child.process_id().unwrap() as i32;
         // SAFETY: kill only sends a signal to the process we started.
         assert_eq!(unsafe { libc::kill(pid, signal) }, 0);
@@ -146,11 +148,8 @@ fn process_state(pid: u32) -> char {
 #[test]
 fn ctrl_z_suspends_with_the_terminal_restored_and_continuing_redraws() {
     for suspend in ["Ctrl-Z", "SIGTSTP"] {
-        let mut command = CommandBuilder::new(env!("CARGO_BIN_EXE_bumpwork"));
-        command.args(["view", "plane-dimples"]);
-        command.env("TERM", "xterm-256color");
-        let mut session = Session::spawn(command, COLS, ROWS);
-        session.wait_for("the first frame", status_contains("plane-dimples"));
+        let view = ["view", "plane-dimples"];
+        let mut session = Session::bumpwork(&view, None, (COLS, ROWS), "plane-dimples");
         let pid = session.child.process_id().unwrap();
         match suspend {
             "Ctrl-Z" => session.send("\x1a"),
@@ -184,12 +183,12 @@ fn a_failed_reload_shows_the_whole_diagnostic_until_dismissed_or_fixed() {
     let dir = tempfile::tempdir().unwrap();
     let pattern = dir.path().join("live.pat");
     std::fs::write(&pattern, "height = 0.1 * sin(20 * u)\n").unwrap();
-    let mut command = CommandBuilder::new(env!("CARGO_BIN_EXE_bumpwork"));
-    command.args(["view", "live.pat"]);
-    command.cwd(dir.path());
-    command.env("TERM", "xterm-256color");
-    let mut session = Session::spawn(command, COLS, ROWS);
-    session.wait_for("the first frame", status_contains("live.pat"));
+    let mut session = Session::bumpwork(
+        &["view", "live.pat"],
+        Some(dir.path()),
+        (COLS, ROWS),
+        "live.pat",
+    );
     let overlay = |screen: &vt100::Screen| {
         let text = screen.contents();
         text.contains("does not load") && text.contains("1 | height = 0.1 * * u")
@@ -219,21 +218,7 @@ fn a_failed_reload_shows_the_whole_diagnostic_until_dismissed_or_fixed() {
 #[test]
 fn quitting_during_an_export_says_it_was_cancelled() {
     let dir = tempfile::tempdir().unwrap();
-    let mut command = CommandBuilder::new(env!("CARGO_BIN_EXE_bumpwork"));
-    command.args([
-        "view",
-        "plane-dimples",
-        "--export-size",
-        "8000x8000",
-        "--export-samples",
-        "64",
-    ]);
-    command.cwd(dir.path());
-    command.env("TERM", "xterm-256color");
-    let mut session = Session::spawn(command, COLS, ROWS);
-    session.wait_for("the first frame", status_contains("plane-dimples"));
-    session.send("e");
-    session.wait_for("the export to start", status_contains("exporting"));
+    let mut session = exporting_in(dir.path());
     session.send("q");
     assert_eq!(session.exit_within(Duration::from_secs(5)), Some(0));
     session.wait_for("the note on the normal screen", |screen| {
