@@ -39,19 +39,24 @@ impl Spot {
 /// Renders `file:line:column: message`, the offending line (a window of it when it is long) and a
 /// caret under the spot.
 pub fn render(file: &str, source: &str, offset: usize, message: &str) -> String {
+    render_at(file, &Spot::at(source, offset), message)
+}
+
+/// `render` for a spot already found.
+pub fn render_at(file: &str, spot: &Spot, message: &str) -> String {
     let Spot {
         line,
         column,
         shown,
         caret,
-    } = Spot::at(source, offset);
+    } = spot;
     let gutter = line.to_string().len();
     format!(
         "{file}:{line}:{column}: {message}\n{pad} |\n{line} | {shown}\n{pad} | {space}^",
         file = sanitize(file),
         message = sanitize(&shorten_quotes(message)),
         pad = " ".repeat(gutter),
-        space = " ".repeat(caret),
+        space = " ".repeat(*caret),
     )
 }
 

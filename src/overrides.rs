@@ -7,7 +7,7 @@
 //! objects' bindings (OBJECT counts from 1; without it, every object whose binding has PARAM).
 
 use crate::quality::Quality;
-use crate::scene::{BumpSource, PatternBinding, Scene, Texturing};
+use crate::scene::{BumpSource, KnobPlace, KnobSetting, PatternBinding, Scene, Texturing};
 
 /// One `--set`, parsed.
 #[derive(Clone, Debug, PartialEq)]
@@ -104,25 +104,22 @@ fn binding(object: Option<usize>, slot: &str, name: Name) -> Option<Target> {
 
 /// `quality` with every `quality.KNOB` override applied, checked as a recipe's quality is.
 pub fn apply_to_quality(overrides: &[Override], quality: Quality) -> Result<Quality, String> {
-    let mut quality = quality;
-    for o in overrides {
-        let Target::Quality(knob) = &o.target else {
-            continue;
-        };
-        let mut table = toml::Table::try_from(quality).expect("a quality is a TOML table");
-        match o.value.as_str() {
-            "none" => table.remove(knob),
-            value => table.insert(knob.clone(), toml_value(value)),
-        };
-        quality = toml::Value::Table(table)
-            .try_into::<Quality>()
-            .map_err(|e| {
-                let message = crate::scene::user_words::in_user_words(e.message());
-                format!("--set {}: {message}", o.shown())
-            })?;
-        crate::still::check_quality(&quality).map_err(|e| format!("--set {}: {e}", o.shown()))?;
-    }
-    Ok(quality)
+    quality.with_settings(&knob_settings(overrides))
+}
+
+/// The `quality.KNOB` overrides as knob settings.
+pub fn knob_settings(overrides: &[Override]) -> Vec<KnobSetting> {
+    overrides
+        .iter()
+        .filter_map(|o| match &o.target {
+            Target::Quality(knob) => Some(KnobSetting {
+                knob: knob.clone(),
+                value: toml_value(&o.value),
+                place: KnobPlace::CommandLine(o.shown()),
+            }),
+            Target::Binding { .. } => None,
+        })
+        .collect()
 }
 
 /// The value as TOML reads it (a number, a boolean, an inline table), else as text: so

@@ -38,6 +38,8 @@ pub fn sphere_scene() -> Scene {
             position: DVec3::new(-4.0, 4.0, 6.0),
             color: Vec3::ONE,
         }],
+        time: 0.0,
+        quality: Vec::new(),
         objects: vec![Object {
             surface: Surface::Sphere(Sphere {
                 center: DVec3::ZERO,

@@ -47,16 +47,16 @@ fn check(path: &Path) -> Result<String, String> {
         Some("pat") => bumpwork::pattern::check_file(path)
             .map(|s| s.to_string())
             .map_err(|e| e.to_string()),
-        Some("toml") => bumpwork::scene::load_scene_file(path)
-            .map(|scene| {
-                format!(
-                    "scene '{}', {} objects, {} lights",
-                    sanitize(&scene.name),
-                    scene.objects.len(),
-                    scene.lights.len()
-                )
-            })
-            .map_err(|e| e.to_string()),
+        Some("toml") => {
+            let scene = bumpwork::scene::load_scene_file(path).map_err(|e| e.to_string())?;
+            bumpwork::quality::Quality::default().with_settings(&scene.quality)?;
+            Ok(format!(
+                "scene '{}', {} objects, {} lights",
+                sanitize(&scene.name),
+                scene.objects.len(),
+                scene.lights.len()
+            ))
+        }
         Some(ext) if IMAGE_EXTENSIONS.contains(&ext) => bumpwork::texture::check_image(path)
             .map(|info| info.to_string())
             .map_err(|e| e.to_string()),

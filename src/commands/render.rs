@@ -12,7 +12,7 @@ use bumpwork::export::{
 use bumpwork::overrides::{Override, apply_to_quality, apply_to_scene};
 use bumpwork::quality::Quality;
 use bumpwork::scene::Camera;
-use bumpwork::scene::Scene;
+use bumpwork::scene::{KnobSetting, Scene};
 use bumpwork::shade::ShaderMode;
 use bumpwork::still::{
     MAX_DENSITY, MAX_SAMPLES, MAX_TIME_SECONDS, Recipe, ResolveFilter, StillSettings,
@@ -133,7 +133,7 @@ fn render_start(
     format: StillFormat,
     interrupt: &Interrupt,
 ) -> Result<(), Error> {
-    let mut settings = override_settings(start.settings, args);
+    let mut settings = override_settings(start, args)?;
     settings.quality =
         apply_to_quality(&args.set, settings.quality).map_err(Error::InvalidArgument)?;
     let mut scene = start.scene.clone();
@@ -209,13 +209,13 @@ fn watch_and_render(
             super::sanitized(name)
         )));
     };
-    let mut start = Start {
-        source: name.to_string(),
-        scene_text: bumpwork::scene::source_text(name)?,
-        settings: default_settings(),
-        scene,
-    };
-    render_start(args, &start, output, format, interrupt)?;
+    render_start(
+        args,
+        &Start::of_source(name, scene)?,
+        output,
+        format,
+        interrupt,
+    )?;
     let shown = super::sanitized(&output.display().to_string());
     eprintln!(
         "bumpwork: rendered {shown}; watching {} for changes (Ctrl-C stops)",
@@ -224,9 +224,9 @@ fn watch_and_render(
     while interrupt.received().is_none() {
         match reloader.poll() {
             Some(ReloadOutcome::Reloaded(reload)) => {
-                start.scene = reload.scene;
-                start.scene_text = bumpwork::scene::source_text(name)?;
-                match render_start(args, &start, output, format, interrupt) {
+                let rendered = Start::of_source(name, reload.scene)
+                    .and_then(|start| render_start(args, &start, output, format, interrupt));
+                match rendered {
                     Ok(()) => eprintln!("bumpwork: rendered {shown} again"),
                     Err(Error::Interrupted(signal)) => return Err(Error::Interrupted(signal)),
                     Err(e) => eprintln!("bumpwork: error: {}", sanitize_lines(&e.to_string())),
@@ -324,27 +324,40 @@ struct Start {
     scene_text: String,
     scene: Scene,
     settings: StillSettings,
+    /// The scene file's `[quality]` settings, for a `--quality` preset to take (none from a
+    /// still: its recipe's quality has them already).
+    quality_table: Vec<KnobSetting>,
 }
 
 fn from_source(name: &str) -> Result<Start, Error> {
-    let scene = bumpwork::scene::load_source(name)?;
-    Ok(Start {
-        source: name.to_string(),
-        scene_text: bumpwork::scene::source_text(name)?,
-        settings: default_settings(),
-        scene,
-    })
+    Start::of_source(name, bumpwork::scene::load_source(name)?)
 }
 
-/// A render's settings before any option: 800 × 600, the default quality, shaded, time 0.
-fn default_settings() -> StillSettings {
-    StillSettings {
-        size: (800, 600),
-        quality: Quality::default(),
-        resolve: ResolveFilter::default(),
-        time: 0.0,
-        mode: ShaderMode::Shaded,
+impl Start {
+    /// `scene`, loaded from `name`.
+    fn of_source(name: &str, scene: Scene) -> Result<Start, Error> {
+        Ok(Start {
+            source: name.to_string(),
+            scene_text: bumpwork::scene::source_text(name)?,
+            settings: scene_settings(&scene)?,
+            quality_table: scene.quality.clone(),
+            scene,
+        })
     }
+}
+
+/// A render's settings before any option: 800 × 600, shaded, the scene's time and the default
+/// quality with the scene file's `[quality]` settings.
+fn scene_settings(scene: &Scene) -> Result<StillSettings, Error> {
+    Ok(StillSettings {
+        size: (800, 600),
+        quality: Quality::default()
+            .with_settings(&scene.quality)
+            .map_err(Error::Diagnostic)?,
+        resolve: ResolveFilter::default(),
+        time: scene.time,
+        mode: ShaderMode::Shaded,
+    })
 }
 
 fn from_still(still: &Path, read_outside: bool) -> Result<Start, Error> {
@@ -378,6 +391,7 @@ fn from_still(still: &Path, read_outside: bool) -> Result<Start, Error> {
         source: recipe.source,
         scene_text,
         settings,
+        quality_table: Vec::new(),
     })
 }
 
@@ -405,8 +419,16 @@ fn confine_to_directory(files: &[PathBuf], still: &Path, directory: &Path) -> Re
     Ok(())
 }
 
-fn override_settings(base: StillSettings, args: &RenderArgs) -> StillSettings {
-    let mut quality = args.quality.unwrap_or(base.quality);
+/// The start's settings with the command line's options over them; a `--quality` preset takes
+/// the scene file's `[quality]` settings over it, as the default preset does.
+fn override_settings(start: &Start, args: &RenderArgs) -> Result<StillSettings, Error> {
+    let base = start.settings;
+    let mut quality = match args.quality {
+        Some(preset) => preset
+            .with_settings(&start.quality_table)
+            .map_err(Error::Diagnostic)?,
+        None => base.quality,
+    };
     if let Some(samples) = args.samples {
         quality.samples = samples;
     }
@@ -417,7 +439,7 @@ fn override_settings(base: StillSettings, args: &RenderArgs) -> StillSettings {
         quality.tessellation = density;
         quality.adaptive_tolerance_px = None;
     }
-    StillSettings {
+    Ok(StillSettings {
         size: args.size.unwrap_or(base.size),
         quality,
         resolve: args
@@ -431,7 +453,7 @@ fn override_settings(base: StillSettings, args: &RenderArgs) -> StillSettings {
             .as_deref()
             .and_then(|m| ShaderMode::ALL.into_iter().find(|v| v.name() == m))
             .unwrap_or(base.mode),
-    }
+    })
 }
 
 /// (time, file) of every frame: one, or a numbered sequence over the time range.

@@ -33,9 +33,9 @@ pub struct ViewArgs {
     /// (circles come out round) [default: as the terminal reports, else 1x2].
     #[arg(long, value_parser = super::parse_size)]
     cell_size: Option<(u32, u32)>,
-    /// A scene setting, KEY=VALUE (repeatable), as for `render --set`: [OBJECT.]bump.PARAM,
-    /// [OBJECT.]texture.PARAM, [OBJECT.]bump.strength, [OBJECT.]bump.params.PARAM; kept over
-    /// reloads.
+    /// A setting, KEY=VALUE (repeatable), as for `render --set`: quality.KNOB (over every
+    /// preset `Q` picks), [OBJECT.]bump.PARAM, [OBJECT.]texture.PARAM, [OBJECT.]bump.strength,
+    /// [OBJECT.]bump.params.PARAM; kept over reloads.
     #[arg(long = "set", value_name = "KEY=VALUE", value_parser = bumpwork::overrides::Override::parse)]
     set: Vec<bumpwork::overrides::Override>,
     /// Samples per pixel of PNGs the export key writes.

@@ -6,8 +6,10 @@
 //! Samples per pixel are carried here for the supersampled renderer to read.
 
 mod adaptive;
+mod knob_settings;
 
 pub use adaptive::{MAX_ADAPTIVE_DENSITY, adaptive_density, projected_chord_error};
+pub use knob_settings::{MAX_DENSITY, MAX_SAMPLES, check_quality, knob_names};
 
 use crate::memory_budget::{MemoryUse, OverBudget};
 use crate::pattern::Precision;

@@ -4,6 +4,7 @@
 
 use super::binding_file::BindingFile;
 use super::exact_arrays::exact;
+use super::quality_table::{QualityTable, knob_settings};
 use super::{Light, Material, Object, Scene};
 use crate::Error;
 use crate::scene::Camera;
@@ -30,6 +31,12 @@ pub struct SceneFile {
     pub lights: Vec<LightFile>,
     #[serde(rename = "object")]
     pub objects: Vec<ObjectFile>,
+    /// The scene time a still shows when none is asked for, in seconds.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub time: Option<SceneTime>,
+    /// Quality knobs over the chosen preset, applied by the quality module.
+    #[serde(default, skip_serializing_if = "QualityTable::is_empty")]
+    pub quality: QualityTable,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -177,6 +184,13 @@ const MIN_NEAR_FRACTION: f32 = 1e-6;
 /// Coordinates past this are refused: beyond it even f64 positions lose sub-unit precision.
 const MAX_COORDINATE: f64 = 1e12;
 
+/// The largest scene time, in seconds either way: past it f32 pattern time loses whole seconds.
+pub const MAX_TIME_SECONDS: f64 = 1e9;
+
+checked!(
+    /// Seconds, within `MAX_TIME_SECONDS` of zero.
+    SceneTime(f64) from "f64" f64, "a time in seconds (|t| ≤ 1e9)",
+    check |v| v.is_finite() && v.abs() <= MAX_TIME_SECONDS, make v, back |x| x.0);
 checked!(Finite(f32) from "f64" f64, "a finite number",
     check |v| v.is_finite() && v.abs() < 1e30, make v as f32, back |x| shortest(x.0));
 checked!(Positive(f32) from "f64" f64, "a positive number",
@@ -263,12 +277,14 @@ pub fn parse_scene_in(text: &str, origin: &str, base: &Path) -> Result<Scene, Er
     let fallback_name = Path::new(origin)
         .file_stem()
         .map_or("scene".into(), |s| s.to_string_lossy());
-    file.to_scene(&fallback_name, base).map_err(|message| {
+    let mut scene = file.to_scene(&fallback_name, base).map_err(|message| {
         Error::Diagnostic(format!(
             "{}: {message}",
             crate::diagnostic::sanitize(origin)
         ))
-    })
+    })?;
+    scene.quality = knob_settings(&file.quality, origin, text);
+    Ok(scene)
 }
 
 /// Reads a scene file, refusing files past `MAX_SCENE_FILE_BYTES` before reading them.
@@ -308,6 +324,8 @@ impl SceneFile {
             ambient: self.ambient.0,
             lights: self.lights.iter().map(LightFile::to_light).collect(),
             objects,
+            time: self.time.map_or(0.0, |t| t.0),
+            quality: Vec::new(),
         })
     }
 }

@@ -8,18 +8,21 @@ pub(crate) mod exact_arrays;
 mod file;
 mod material;
 mod presets;
+mod quality_table;
 pub(crate) mod user_words;
 
 pub use binding_file::{BindingFile, FilterFile, MappingKind, WrapFile};
 pub use by_name::{load_source, source_text};
 pub use file::{
-    CameraFile, Direction, FieldOfView, Finite, LightFile, MAX_SCENE_FILE_BYTES, Point, Positive,
-    SceneFile, camera_looking, load_scene_file, parse_scene, parse_scene_in,
+    CameraFile, Direction, FieldOfView, Finite, LightFile, MAX_SCENE_FILE_BYTES, MAX_TIME_SECONDS,
+    Point, Positive, SceneFile, SceneTime, camera_looking, load_scene_file, parse_scene,
+    parse_scene_in,
 };
 pub use material::{
     Bump, BumpSource, ImageHeight, ImageTexture, Material, PatternBinding, Placement, Texturing,
 };
 pub use presets::{PRESET_NAMES, preset, preset_file};
+pub use quality_table::{KnobPlace, KnobSetting, QualityTable, written_table};
 
 use crate::surface::Surface;
 pub use camera::Camera;
@@ -34,6 +37,10 @@ pub struct Scene {
     pub ambient: Vec3,
     pub lights: Vec<Light>,
     pub objects: Vec<Object>,
+    /// The time a still shows unless another is asked for, in seconds.
+    pub time: f64,
+    /// The scene file's `[quality]` settings, applied over the chosen preset.
+    pub quality: Vec<KnobSetting>,
 }
 
 #[derive(Clone, Debug, PartialEq)]

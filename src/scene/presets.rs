@@ -254,6 +254,8 @@ fn scene(camera: CameraFile, lights: Vec<LightFile>, objects: Vec<ObjectFile>) -
         ambient: Rgb(Vec3::splat(0.08)),
         lights,
         objects,
+        time: None,
+        quality: Default::default(),
     }
 }
 

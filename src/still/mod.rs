@@ -9,13 +9,13 @@ mod samples;
 mod saved_view;
 mod stream;
 
+pub use crate::quality::{MAX_DENSITY, MAX_SAMPLES, check_quality};
 pub use bands::{
     BAND_BUDGET_BYTES, BandBuffers, BandJob, band_bytes, band_rows, render_supersampled,
 };
 pub use recipe::{
-    FileHash, MAX_DENSITY, MAX_SIDE, MAX_TIME_SECONDS, ObjectState, Recipe, RecipeCamera,
-    StillSettings, check_quality,
+    FileHash, MAX_SIDE, MAX_TIME_SECONDS, ObjectState, Recipe, RecipeCamera, StillSettings,
 };
-pub use samples::{MAX_SAMPLES, RefiningOrder, ResolveFilter, Supersampling};
+pub use samples::{RefiningOrder, ResolveFilter, Supersampling};
 pub use saved_view::saved_view;
 pub use stream::{RowSink, StillStop, stream_still};

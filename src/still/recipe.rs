@@ -2,26 +2,24 @@
 //! scene's source and text, every object's live bump and texture patterns with their parameter
 //! values, the camera and lights, the render settings, and a content hash of each file the scene reads.
 
-use super::samples::{MAX_SAMPLES, ResolveFilter, Supersampling};
+use super::samples::{ResolveFilter, Supersampling};
 use crate::Error;
 use crate::quality::Quality;
+use crate::quality::check_quality;
 use crate::scene::Camera;
 use crate::scene::exact_arrays::exact;
 use crate::scene::{
     BindingFile, BumpSource, CameraFile, Direction, FieldOfView, Finite, LightFile, Material,
     PatternBinding, Point, Positive, Scene, Texturing,
 };
-use crate::shade::{GradientMethod, ShaderMode};
+use crate::shade::ShaderMode;
 use crate::texture::ImageCache;
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
 
 /// The largest still side in pixels.
 pub const MAX_SIDE: u32 = 16384;
-/// The largest tessellation density (cells per half turn).
-pub const MAX_DENSITY: u32 = 4096;
-/// The largest scene time, in seconds either way: past it f32 pattern time loses whole seconds.
-pub const MAX_TIME_SECONDS: f64 = 1e9;
+pub use crate::scene::MAX_TIME_SECONDS;
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, rename_all = "kebab-case")]
@@ -305,32 +303,6 @@ impl Recipe {
             .map(|m| crate::diagnostic::sanitize(&m).into_owned())
             .collect()
     }
-}
-
-/// The ranges the command line enforces, for a quality read from a file.
-pub fn check_quality(quality: &Quality) -> Result<(), String> {
-    if !(1..=MAX_SAMPLES).contains(&quality.samples) {
-        return Err(format!(
-            "samples {} is outside 1..={MAX_SAMPLES}",
-            quality.samples
-        ));
-    }
-    if !(1..=MAX_DENSITY).contains(&quality.tessellation) {
-        return Err(format!(
-            "tessellation {} is outside 1..={MAX_DENSITY}",
-            quality.tessellation
-        ));
-    }
-    let positive = |x: f32| x.is_finite() && x > 0.0;
-    if quality.adaptive_tolerance_px.is_some_and(|t| !positive(t)) {
-        return Err("the adaptive tolerance must be a positive number of pixels".into());
-    }
-    if let GradientMethod::CentralDifference { step } = quality.gradient
-        && !positive(step)
-    {
-        return Err("the central-difference step must be positive".into());
-    }
-    Ok(())
 }
 
 impl RecipeCamera {

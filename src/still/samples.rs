@@ -50,9 +50,6 @@ impl Default for Supersampling {
     }
 }
 
-/// The most samples per pixel a still may ask for.
-pub const MAX_SAMPLES: u32 = 1024;
-
 impl Supersampling {
     /// Sample offsets from the pixel centre, in pixels. They are importance-sampled from the
     /// filter, so every sample weighs the same. One sample sits at the centre. They are whole

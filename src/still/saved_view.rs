@@ -4,21 +4,31 @@
 
 use super::recipe::{absolute_name, object_state, source_directory};
 use crate::Error;
+use crate::quality::Quality;
 use crate::scene::Camera;
 use crate::scene::{
     BindingFile, CameraFile, Direction, FieldOfView, LightFile, Point, Positive, Scene, SceneFile,
+    SceneTime, written_table,
 };
 use std::path::Path;
 
-/// The scene file that renders `scene` (as shown, from `source`) through `camera`. Its file
-/// names are absolute, so it can be saved anywhere.
-pub fn saved_view(source: &str, scene: &Scene, camera: &Camera) -> Result<SceneFile, Error> {
+/// The scene file that renders `scene` (as shown, from `source`) through `camera` at `quality`
+/// and `time`. Its file names are absolute, so it can be saved anywhere.
+pub fn saved_view(
+    source: &str,
+    scene: &Scene,
+    camera: &Camera,
+    quality: &Quality,
+    time: f64,
+) -> Result<SceneFile, Error> {
     let text = crate::scene::source_text(source)?;
     let mut file: SceneFile = toml::from_str(&text)
         .map_err(|e| Error::Diagnostic(format!("{source}: {}", e.message())))?;
     let base = source_directory(source);
     file.camera = camera_file(camera)?;
     file.lights = scene.lights.iter().map(LightFile::of).collect();
+    file.quality = written_table(toml::Table::try_from(quality).expect("a quality is a table"));
+    file.time = Some(SceneTime::try_from(time).map_err(Error::InvalidArgument)?);
     for (written, shown) in file.objects.iter_mut().zip(&scene.objects) {
         let state = object_state(&shown.material, &base);
         written.bump = merged(written.bump.take(), state.bump, &base);

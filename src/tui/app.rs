@@ -11,8 +11,8 @@ use super::orbit::Orbit;
 use super::quality::QualityPreset;
 use super::view_mode::ViewMode;
 use crate::Error;
-use crate::memory_budget::OverBudget;
-use crate::overrides::{Override, apply_where_known};
+use crate::overrides::{Override, apply_to_quality, apply_where_known};
+use crate::quality::Quality;
 use crate::raster::{FrameStats, Framebuffer, PreparedScene, Viewport};
 use crate::scene::Camera;
 use crate::scene::{Material, Scene};
@@ -31,12 +31,16 @@ pub struct App {
     pub object: usize,
     pub param: usize,
     pub view_mode: ViewMode,
+    /// The preset `Q` cycles.
     pub quality: QualityPreset,
+    /// What is rendered: the preset with the scene file's `[quality]` settings and the `--set`
+    /// ones over it.
+    pub quality_in_use: Quality,
     pub glyphs: GlyphSet,
     pub colors: ColorMode,
     /// `--cell-size`: a cell's pixels, for terminals that do not report them.
     pub cell_size: Option<(u32, u32)>,
-    /// `--set` scene settings, applied at every load.
+    /// `--set` settings, applied at every load.
     settings: Vec<Override>,
     pub clock: Clock,
     pub help: bool,
@@ -112,21 +116,24 @@ impl App {
         apply_settings(&options.settings, &mut scene);
         let quality = options.quality;
         let orbit = Orbit::from_camera(&scene.camera);
+        let (prepared, quality_in_use) = prepare(scene, quality, &options.settings)?;
+        let start_time = prepared.scene.time;
         Ok(App {
             scenes: options.scenes.clone(),
             watch: options.watch,
             scene_index: 0,
-            object: first_bumped_object(&scene),
+            object: first_bumped_object(&prepared.scene),
             param: 0,
-            prepared: prepare(scene, quality)?,
+            prepared,
             orbit,
             view_mode: ViewMode::default(),
             quality,
+            quality_in_use,
             glyphs: options.glyphs,
             colors,
             cell_size: options.cell_size,
             settings: options.settings.clone(),
-            clock: Clock::new(options.fps),
+            clock: Clock::new(options.fps, start_time),
             help: false,
             diagnostic: None,
             help_scroll: 0,
@@ -289,10 +296,11 @@ impl App {
         let opened =
             open_watched(&self.scenes[index], self.watch).and_then(|(mut scene, reloader)| {
                 apply_settings(&self.settings, &mut scene);
-                Ok((prepare(scene, self.quality)?, reloader))
+                Ok((prepare(scene, self.quality, &self.settings)?, reloader))
             });
         match opened {
-            Ok((prepared, reloader)) => {
+            Ok(((prepared, quality), reloader)) => {
+                self.quality_in_use = quality;
                 self.reloader = reloader;
                 self.scene_index = index;
                 self.object = first_bumped_object(&prepared.scene);
@@ -302,8 +310,17 @@ impl App {
                 self.message = Message::None;
                 self.dirty = Dirty::ALL;
             }
-            Err(e) => self.message = Message::Error(e.to_string()),
+            Err(e) => self.report(&e),
         }
+    }
+
+    /// Shows `error`: its first line in the status line, a message of several lines (a file's
+    /// line and caret) whole over the picture.
+    fn report(&mut self, error: &Error) {
+        let text = error.to_string();
+        let first = text.lines().next().unwrap_or_default().to_string();
+        self.diagnostic = (first.len() < text.len()).then_some(text);
+        self.message = Message::Error(first);
     }
 
     /// Takes what the file watcher found: a changed scene replaces the shown one (keeping the
@@ -321,16 +338,17 @@ impl App {
                     let mut reload = reload;
                     apply_settings(&self.settings, &mut reload.scene);
                     let (scene, kept) = reload.keep_live_params_telling(&self.prepared.scene);
-                    match prepare(scene, self.quality) {
-                        Ok(prepared) => {
+                    match prepare(scene, self.quality, &self.settings) {
+                        Ok((prepared, quality)) => {
                             self.prepared = prepared;
+                            self.quality_in_use = quality;
                             let last = self.prepared.objects.len().saturating_sub(1);
                             self.object = self.object.min(last);
                             self.message = Message::Info(reloaded_message(&kept));
                             self.diagnostic = None;
                             self.dirty.picture = true;
                         }
-                        Err(e) => self.message = Message::Error(e.to_string()),
+                        Err(e) => self.report(&e),
                     }
                 }
                 ReloadOutcome::Failed(error) => {
@@ -348,7 +366,12 @@ impl App {
         let source = &self.scenes[self.scene_index];
         let stem = format!("bumpwork-{}", super::export::slug(&self.scene().name));
         let path = super::export::unique_path(&self.export_dir, &stem, "toml");
-        let saved = crate::still::saved_view(source, &self.prepared.scene, &self.camera())
+        let exported = Quality {
+            samples: self.export_samples,
+            ..self.quality_in_use
+        };
+        let (scene, camera, time) = (&self.prepared.scene, self.camera(), self.clock.time());
+        let saved = crate::still::saved_view(source, scene, &camera, &exported, time)
             .and_then(|file| write_new_file(&path, file.to_toml().as_bytes()));
         self.message = match saved {
             Ok(()) => Message::Info(format!("saved the view as {}", path.display())),
@@ -367,28 +390,30 @@ impl App {
     fn drop_live_values(&mut self) {
         let fresh = self.scene_as_saved().and_then(|mut scene| {
             scene.lights = self.prepared.scene.lights.clone();
-            Ok(prepare(scene, self.quality)?)
+            prepare(scene, self.quality, &self.settings)
         });
         match fresh {
-            Ok(prepared) => {
+            Ok((prepared, quality)) => {
                 self.prepared = prepared;
+                self.quality_in_use = quality;
                 self.object = self
                     .object
                     .min(self.prepared.objects.len().saturating_sub(1));
                 self.message = Message::Info("the file's values again".into());
             }
-            Err(e) => self.message = Message::Error(e.to_string()),
+            Err(e) => self.report(&e),
         }
     }
 
-    /// Tessellates again for `quality`; one that does not fit keeps the current one.
+    /// Tessellates again for the preset `quality`; one that does not fit keeps the current one.
     fn reprepare(&mut self, quality: QualityPreset) {
-        match prepare(self.prepared.scene.clone(), quality) {
-            Ok(prepared) => {
+        match prepare(self.prepared.scene.clone(), quality, &self.settings) {
+            Ok((prepared, in_use)) => {
                 self.prepared = prepared;
                 self.quality = quality;
+                self.quality_in_use = in_use;
             }
-            Err(e) => self.message = Message::Error(e.to_string()),
+            Err(e) => self.report(&e),
         }
     }
 
@@ -464,14 +489,24 @@ const PLANNED_VIEWPORT: Viewport = Viewport {
     height: 100,
 };
 
-/// Tessellates for the preset, planning adaptive density for the scene's own camera, within the
-/// memory budget (a terminal's picture is small beside it; the plan counts a large one).
-fn prepare(scene: Scene, quality: QualityPreset) -> Result<PreparedScene, OverBudget> {
+/// The quality to show `scene` at (`preset` with the scene file's `[quality]` settings and the
+/// `--set` ones over it), and the scene tessellated for it, planning adaptive density for the
+/// scene's own camera, within the memory budget (a terminal's picture is small beside it; the
+/// plan counts a large one).
+fn prepare(
+    scene: Scene,
+    preset: QualityPreset,
+    settings: &[Override],
+) -> Result<(PreparedScene, Quality), Error> {
+    let quality = preset
+        .quality()
+        .with_settings(&scene.quality)
+        .map_err(Error::Diagnostic)?;
+    let quality = apply_to_quality(settings, quality).map_err(Error::InvalidArgument)?;
     let camera = scene.camera.clone();
     let output_bytes = PLANNED_OUTPUT_PIXELS * Framebuffer::BYTES_PER_PIXEL;
-    quality
-        .quality()
-        .prepare(scene, &camera, PLANNED_VIEWPORT, output_bytes)
+    let prepared = quality.prepare(scene, &camera, PLANNED_VIEWPORT, output_bytes)?;
+    Ok((prepared, quality))
 }
 
 /// Pixels of the largest picture a terminal is expected to show: 500×150 cells in sextants.
@@ -501,23 +536,19 @@ fn reloaded_message(kept: &[crate::watch::KeptValue]) -> String {
     )
 }
 
-/// Every scene opens, and every `--set` is one the workbench takes: scene settings each taken by
-/// at least one of the scenes (quality is the workbench's presets: `--quality`, `Q`).
+/// Every scene opens, and every `--set` is one the workbench takes: quality knobs, and scene
+/// settings each taken by at least one of the scenes.
 fn check_settings(scenes: &[String], settings: &[Override]) -> Result<(), Error> {
-    if let Some(quality) = settings.iter().find(|o| !o.is_binding()) {
-        return Err(Error::InvalidArgument(format!(
-            "--set {}: the workbench's quality is one of its presets (--quality, the Q key); \
-             quality settings are for render and gallery",
-            quality.shown()
-        )));
-    }
+    apply_to_quality(settings, Quality::interactive()).map_err(Error::InvalidArgument)?;
     let mut taken = vec![false; settings.len()];
     for name in scenes {
         let mut scene = crate::scene::load_source(name)?;
+        (Quality::interactive().with_settings(&scene.quality)).map_err(Error::Diagnostic)?;
         let here = apply_where_known(settings, &mut scene).map_err(Error::InvalidArgument)?;
         taken.iter_mut().zip(here).for_each(|(t, h)| *t |= h);
     }
-    match settings.iter().zip(&taken).find(|(_, taken)| !**taken) {
+    let untaken = |(o, taken): &(&Override, &bool)| o.is_binding() && !**taken;
+    match settings.iter().zip(&taken).find(untaken) {
         Some((o, _)) => Err(Error::InvalidArgument(format!(
             "--set {}: no scene shown has that parameter",
             o.shown()

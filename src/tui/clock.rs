@@ -11,9 +11,10 @@ pub struct Clock {
 }
 
 impl Clock {
-    pub fn new(fps: u32) -> Clock {
+    /// A running clock at `time` seconds.
+    pub fn new(fps: u32, time: f64) -> Clock {
         Clock {
-            time: 0.0,
+            time,
             running_since: Some(Instant::now()),
             frame: Duration::from_secs_f64(1.0 / fps.max(1) as f64),
         }
@@ -58,7 +59,7 @@ mod tests {
 
     #[test]
     fn stepping_pauses_and_advances_one_frame() {
-        let mut clock = Clock::new(25);
+        let mut clock = Clock::new(25, 0.0);
         clock.step();
         let t = clock.time();
         clock.step();

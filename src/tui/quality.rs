@@ -43,13 +43,13 @@ impl QualityPreset {
             index: (self.index + 1) % QUALITY_NAMES.len(),
         }
     }
+}
 
-    /// Samples along each axis of a picture pixel: the preset's, capped at
-    /// `MAX_TERMINAL_SAMPLES`, as the largest square grid that fits.
-    pub fn supersampling(self) -> usize {
-        let samples = self.quality().samples.clamp(1, MAX_TERMINAL_SAMPLES);
-        (samples as f64).sqrt().floor() as usize
-    }
+/// Samples along each axis of a picture pixel: `quality`'s, capped at `MAX_TERMINAL_SAMPLES`, as
+/// the largest square grid that fits.
+pub fn terminal_supersampling(quality: &Quality) -> usize {
+    let samples = quality.samples.clamp(1, MAX_TERMINAL_SAMPLES);
+    (samples as f64).sqrt().floor() as usize
 }
 
 #[cfg(test)]
@@ -80,9 +80,12 @@ mod tests {
 
     #[test]
     fn a_frame_takes_at_most_the_terminal_cap_of_samples() {
-        let exact = QualityPreset { index: 3 };
-        assert_eq!(exact.supersampling(), 2);
-        let interactive = QualityPreset::default();
-        assert_eq!(interactive.supersampling(), 1);
+        assert_eq!(terminal_supersampling(&Quality::exact()), 2);
+        assert_eq!(terminal_supersampling(&Quality::interactive()), 1);
+        let nine = Quality {
+            samples: 9,
+            ..Quality::interactive()
+        };
+        assert_eq!(terminal_supersampling(&nine), 2);
     }
 }

@@ -28,7 +28,7 @@ impl<'a> View<'a> {
             camera: app.camera(),
             mode: app.view_mode,
             time: app.clock.time(),
-            quality: app.quality.quality(),
+            quality: app.quality_in_use,
         }
     }
 }

@@ -172,7 +172,7 @@ impl Screen {
             &View::of(app),
             cells,
             shape,
-            app.quality.supersampling(),
+            super::quality::terminal_supersampling(&app.quality_in_use),
             sampling,
             &mut self.framebuffer,
         )

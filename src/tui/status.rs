@@ -95,7 +95,7 @@ fn segments(app: &App) -> Vec<Segment> {
 /// The last frame's render time, and the samples per sub-pixel the picture holds so far.
 fn cost_text(app: &App) -> String {
     let ms = app.report.render_time.as_secs_f64() * 1e3;
-    let per_pass = app.quality.supersampling().pow(2) as u32;
+    let per_pass = super::quality::terminal_supersampling(&app.quality_in_use).pow(2) as u32;
     let samples = app.report.passes.max(1) * per_pass;
     format!("{ms:.1} ms {samples} spp")
 }

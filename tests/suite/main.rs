@@ -43,6 +43,7 @@ mod reference_round_trip;
 mod reference_support;
 mod render_watch;
 mod scene_files;
+mod scene_quality;
 mod settings;
 mod source_layout;
 mod ssh_session;

@@ -21,6 +21,8 @@ fn scene_of(camera: Camera, surface: Surface) -> Scene {
         background: Vec3::ZERO,
         ambient: Vec3::ZERO,
         lights: vec![],
+        time: 0.0,
+        quality: Vec::new(),
         objects: vec![Object {
             surface,
             material: Material {

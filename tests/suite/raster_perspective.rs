@@ -26,6 +26,8 @@ fn grazing_plane_scene() -> (Scene, Plane) {
         background: Vec3::ZERO,
         ambient: Vec3::ZERO,
         lights: vec![],
+        time: 0.0,
+        quality: Vec::new(),
         objects: vec![Object {
             surface: Surface::Plane(plane.clone()),
             material: Material {

@@ -270,6 +270,8 @@ fn sphere_scene(radius: f32) -> Scene {
             towards: Vec3::Z,
             color: Vec3::ONE,
         }],
+        time: 0.0,
+        quality: Vec::new(),
         objects: vec![Object {
             surface: Surface::Sphere(Sphere {
                 center: DVec3::ZERO,

@@ -55,7 +55,7 @@ fn every_bad_setting_is_one_line_naming_what_is_valid() {
     let dir = temp_dir("settings-errors");
     let out = dir.join("x.png");
     for (setting, expected) in [
-        ("quality.smaples=4", "expected one of `tessellation`"),
+        ("quality.smaples=4", "the knobs are adaptive-samples"),
         (
             "quality.normal-form=wild",
             "expected one of `blinn`, `seed`, `full`",

@@ -21,6 +21,8 @@ fn triangle_scene() -> (PreparedScene, Camera) {
         background: Vec3::ZERO,
         ambient: Vec3::ZERO,
         lights: vec![],
+        time: 0.0,
+        quality: Vec::new(),
         objects: vec![Object {
             surface: Surface::Triangle(Triangle::new(
                 DVec3::new(-2.5, -1.7, 0.0),

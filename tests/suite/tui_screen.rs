@@ -374,10 +374,7 @@ fn scene_settings_from_the_command_line_apply_to_the_scenes_that_have_them() {
         Err(e) => assert!(e.to_string().contains(expected), "{e}"),
         Ok(_) => panic!("{settings:?} was taken"),
     };
-    refused(
-        &["quality.samples=4"],
-        "the workbench's quality is one of its presets",
-    );
+    refused(&["quality.samples=0"], "samples 0 is outside");
     refused(&["bump.nope=1"], "no scene shown has that parameter");
     refused(&["bump.params.strength=9"], "outside strength's range");
 }
@@ -419,7 +416,10 @@ fn the_saved_scene_renders_what_the_export_key_exports() {
     app.export_dir = dir.clone();
     app.export_size = (64, 36);
     app.export_samples = 4;
-    // The same live edits as an export carries: camera, light, parameter, bump.
+    // The same live edits as an export carries: camera, light, parameter, bump, quality, time.
+    app.apply(Action::TogglePause);
+    app.apply(Action::StepClock);
+    app.apply(Action::NextQuality);
     app.apply(Action::Orbit(20.0, 5.0));
     app.apply(Action::MoveLight(30.0, 0.0));
     app.apply(Action::AdjustParam(10.0));
@@ -435,7 +435,7 @@ fn the_saved_scene_renders_what_the_export_key_exports() {
     let render = |args: &[&std::ffi::OsStr], out: &Path| {
         let output = std::process::Command::new(env!("CARGO_BIN_EXE_bumpwork"))
             .args(args)
-            .args(["--size", "64x36", "--samples", "4", "-o"])
+            .args(["--size", "64x36", "-o"])
             .arg(out)
             .output()
             .unwrap();
@@ -453,6 +453,15 @@ fn the_saved_scene_renders_what_the_export_key_exports() {
     let from_still = render(
         &["render".as_ref(), "--from".as_ref(), exported.as_os_str()],
         &dir.join("still.png"),
+    );
+    let saved_text = std::fs::read_to_string(&saved).unwrap();
+    let saved_scene = bumpwork::scene::parse_scene(&saved_text, "saved.toml").unwrap();
+    assert!(saved_scene.time > 0.0, "the clock's time is saved");
+    let quality = bumpwork::quality::Quality::high().with_settings(&saved_scene.quality);
+    assert_eq!(
+        quality.unwrap().samples,
+        4,
+        "the export's samples are saved"
     );
     let db = psnr(&from_scene, &from_still);
     assert!(
