@@ -76,6 +76,7 @@ pub fn textured_sphere_scene() -> (Scene, Arc<Texture>) {
         texture: Arc::clone(&texture),
         mapping: Mapping::Spherical(Spherical::new(Vec3::ZERO)),
         sampler: bilinear(),
+        chosen_live: false,
     }));
     (scene, texture)
 }

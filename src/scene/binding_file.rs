@@ -141,6 +141,7 @@ impl BindingFile {
                     mapping,
                     wrap_s,
                     wrap_t,
+                    chosen_live: false,
                 })
             }
             _ => return Err("a bump needs exactly one of `pattern` and `image`".into()),
@@ -190,6 +191,7 @@ impl BindingFile {
                     texture,
                     mapping,
                     sampler,
+                    chosen_live: false,
                 }))
             }
             _ => Err("a texture needs exactly one of `pattern` and `image`".into()),

@@ -86,6 +86,8 @@ pub struct ImageHeight {
     pub mapping: Mapping,
     pub wrap_s: Wrap,
     pub wrap_t: Wrap,
+    /// Put on by the workbench's keys with the default placement, not as a scene file says.
+    pub chosen_live: bool,
 }
 
 impl PartialEq for ImageHeight {
@@ -93,6 +95,7 @@ impl PartialEq for ImageHeight {
         self.name == other.name
             && self.mapping == other.mapping
             && (self.wrap_s, self.wrap_t) == (other.wrap_s, other.wrap_t)
+            && self.chosen_live == other.chosen_live
     }
 }
 
@@ -102,11 +105,16 @@ pub struct ImageTexture {
     pub texture: Arc<Texture>,
     pub mapping: Mapping,
     pub sampler: Sampler,
+    /// Put on by the workbench's keys with the default placement, not as a scene file says.
+    pub chosen_live: bool,
 }
 
 impl PartialEq for ImageTexture {
     fn eq(&self, other: &Self) -> bool {
-        self.name == other.name && self.mapping == other.mapping && self.sampler == other.sampler
+        self.name == other.name
+            && self.mapping == other.mapping
+            && self.sampler == other.sampler
+            && self.chosen_live == other.chosen_live
     }
 }
 

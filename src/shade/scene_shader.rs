@@ -725,6 +725,7 @@ mod tests {
                 wrap_s: Wrap::Repeat,
                 wrap_t: Wrap::Repeat,
             },
+            chosen_live: false,
         })
     }
 

@@ -15,6 +15,7 @@ pub use bands::{
 };
 pub use recipe::{
     FileHash, MAX_SIDE, MAX_TIME_SECONDS, ObjectState, Recipe, RecipeCamera, StillSettings,
+    source_directory,
 };
 pub use samples::{RefiningOrder, ResolveFilter, Supersampling};
 pub use saved_view::saved_view;

@@ -356,7 +356,7 @@ fn absolute_source(source: &str) -> String {
 }
 
 /// The directory a source's relative pattern and image names are resolved against.
-pub(super) fn source_directory(source: &str) -> PathBuf {
+pub fn source_directory(source: &str) -> PathBuf {
     let path = Path::new(source);
     if crate::scene::preset(source).is_some() || source.ends_with(".pat") {
         return PathBuf::from(".");
@@ -380,6 +380,7 @@ pub(super) fn object_state(material: &Material, base: &Path) -> ObjectState {
     let bump = material.bump.as_ref().map(|bump| {
         let mut state = match &bump.source {
             BumpSource::Pattern(binding) => pattern_state(binding, base),
+            BumpSource::Image(image) if image.chosen_live => live_image_state(&image.name, base),
             BumpSource::Image(_) => BindingFile::default(),
         };
         state.strength = Some(Finite(bump.strength));
@@ -388,9 +389,20 @@ pub(super) fn object_state(material: &Material, base: &Path) -> ObjectState {
     });
     let texture = match &material.texture {
         Some(Texturing::Pattern(binding)) => Some(pattern_state(binding, base)),
+        Some(Texturing::Image(image)) if image.chosen_live => {
+            Some(live_image_state(&image.name, base))
+        }
         _ => None,
     };
     ObjectState { bump, texture }
+}
+
+/// An image the workbench's keys put on: its name alone, so it is placed by default again.
+fn live_image_state(name: &str, base: &Path) -> BindingFile {
+    BindingFile {
+        image: Some(absolute_name(name, base)),
+        ..BindingFile::default()
+    }
 }
 
 fn pattern_state(binding: &PatternBinding, base: &Path) -> BindingFile {
@@ -418,18 +430,27 @@ fn apply_state(
 ) -> Result<(), String> {
     let surface = &object.surface;
     let material = &mut object.material;
-    // Only patterns are bound again here; images keep the scene's decoded copies.
-    let mut images = ImageCache::new(0);
+    // Patterns and images put on live are bound again here; the file's images keep the scene's
+    // decoded copies.
+    let mut images = ImageCache::new(crate::memory_budget::budget_bytes());
     if let Some(bump) = &state.bump {
-        if bump.pattern.is_some() {
-            material.bump = Some(bump.load_bump(surface, base, &mut images)?);
+        if bump.pattern.is_some() || bump.image.is_some() {
+            let mut loaded = bump.load_bump(surface, base, &mut images)?;
+            if let BumpSource::Image(image) = &mut loaded.source {
+                image.chosen_live = true;
+            }
+            material.bump = Some(loaded);
         } else if let Some(live) = &mut material.bump {
             live.strength = bump.strength.map_or(live.strength, |s| s.0);
             live.invert = bump.invert.unwrap_or(live.invert);
         }
     }
-    if let Some(texture) = state.texture.as_ref().filter(|t| t.pattern.is_some()) {
-        material.texture = Some(texture.load_texture(surface, base, &mut images)?);
+    if let Some(texture) = &state.texture {
+        let mut loaded = texture.load_texture(surface, base, &mut images)?;
+        if let Texturing::Image(image) = &mut loaded {
+            image.chosen_live = true;
+        }
+        material.texture = Some(loaded);
     }
     Ok(())
 }

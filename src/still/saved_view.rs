@@ -45,7 +45,7 @@ fn merged(
     base: &Path,
 ) -> Option<BindingFile> {
     match (in_file, live) {
-        (_, Some(live)) if live.pattern.is_some() => Some(live),
+        (_, Some(live)) if live.pattern.is_some() || live.image.is_some() => Some(live),
         (Some(mut image), live) => {
             image.image = image.image.map(|name| absolute_name(&name, base));
             if let Some(live) = live {

@@ -37,10 +37,16 @@ pub enum Action {
     /// Bump strength factor.
     ScaleBump(f32),
     InvertBump,
-    /// Select the next (+1) or previous (−1) pattern parameter.
+    /// Select the next (+1) or previous (−1) pattern parameter (the bump's, then the texture's).
     SelectParam(i32),
     /// Steps of one fiftieth of the selected parameter's range.
     AdjustParam(f32),
+    /// Opens or closes the parameter panel.
+    TogglePanel,
+    /// Select the parameter in this row of the panel (a click).
+    SelectParamAt(usize),
+    /// Select the parameter in this row of the panel and move it by steps (the wheel over it).
+    AdjustParamAt(usize, f32),
     TogglePause,
     StepClock,
     Export,

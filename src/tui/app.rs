@@ -4,6 +4,7 @@
 use super::action::Action;
 use super::clock::Clock;
 use super::export::ExportJob;
+use super::image_shelf::ImageShelf;
 use super::light::move_lights;
 use super::material_controls as controls;
 use super::options::WorkbenchOptions;
@@ -16,6 +17,7 @@ use crate::quality::Quality;
 use crate::raster::{FrameStats, Framebuffer, PreparedScene, Viewport};
 use crate::scene::Camera;
 use crate::scene::{Material, Scene};
+use crate::surface::Surface;
 use crate::term::{ColorMode, GlyphSet};
 use crate::watch::open_watched;
 use crate::watch::{ReloadOutcome, Reloader};
@@ -44,6 +46,8 @@ pub struct App {
     settings: Vec<Override>,
     pub clock: Clock,
     pub help: bool,
+    /// Whether the parameter panel is open.
+    pub panel: bool,
     /// The whole message of the last failed reload (line, caret), shown over the picture until
     /// the file loads again or Esc dismisses it.
     pub diagnostic: Option<String>,
@@ -58,6 +62,8 @@ pub struct App {
     /// The export rendering in the background, if any.
     pub export_job: Option<ExportJob>,
     pub dirty: Dirty,
+    /// The images the pattern and texture keys offer.
+    images: ImageShelf,
     /// Watches the current scene's files; None for built-in scenes.
     reloader: Option<Reloader>,
     /// Whether files are watched (`--no-watch` turns it off).
@@ -65,6 +71,9 @@ pub struct App {
     /// The message on show and when it first was, to let an `Info` expire.
     message_seen: (Message, Instant),
 }
+
+/// `material_controls::cycle_bump` or `cycle_texture`.
+type Cycle = fn(&mut Material, &Surface, i32, &mut ImageShelf) -> Result<String, String>;
 
 /// How long an `Info` message stays in the status line.
 pub const INFO_LIFETIME: Duration = Duration::from_secs(5);
@@ -118,6 +127,7 @@ impl App {
         let orbit = Orbit::from_camera(&scene.camera);
         let (prepared, quality_in_use) = prepare(scene, quality, &options.settings)?;
         let start_time = prepared.scene.time;
+        let images = shelf_for(&prepared.scene, &options.scenes[0]);
         Ok(App {
             scenes: options.scenes.clone(),
             watch: options.watch,
@@ -135,6 +145,7 @@ impl App {
             settings: options.settings.clone(),
             clock: Clock::new(options.fps, start_time),
             help: false,
+            panel: false,
             diagnostic: None,
             help_scroll: 0,
             quit: false,
@@ -146,6 +157,7 @@ impl App {
             export_job: None,
             dirty: Dirty::ALL,
             reloader,
+            images,
             message_seen: (Message::None, Instant::now()),
         })
     }
@@ -178,6 +190,8 @@ impl App {
             Action::ToggleHelp => self.help = !self.help,
             Action::Back if self.help => self.help = false,
             Action::Back if self.diagnostic.is_some() => self.diagnostic = None,
+            Action::Back if self.panel => self.panel = false,
+            Action::TogglePanel => self.panel = !self.panel,
             Action::Back => self.quit = true,
             // While the help is open, up and down scroll it instead of orbiting behind it.
             Action::Orbit(_, dy) if self.help => {
@@ -234,33 +248,53 @@ impl App {
                 self.param = 0;
                 true
             }
-            Action::NextPattern => {
-                self.edit_material(|m| !controls::cycle_bump_pattern(m, 1).is_empty())
-            }
-            Action::PreviousPattern => {
-                self.edit_material(|m| !controls::cycle_bump_pattern(m, -1).is_empty())
-            }
-            Action::NextTexture => {
-                self.edit_material(|m| !controls::cycle_texture_pattern(m, 1).is_empty())
-            }
-            Action::PreviousTexture => {
-                self.edit_material(|m| !controls::cycle_texture_pattern(m, -1).is_empty())
-            }
+            Action::NextPattern => return self.cycle(controls::cycle_bump, 1),
+            Action::PreviousPattern => return self.cycle(controls::cycle_bump, -1),
+            Action::NextTexture => return self.cycle(controls::cycle_texture, 1),
+            Action::PreviousTexture => return self.cycle(controls::cycle_texture, -1),
             Action::ScaleBump(factor) => self.edit_material(|m| controls::scale_bump(m, factor)),
             Action::InvertBump => self.edit_material(controls::invert_bump),
             Action::SelectParam(step) => self.select_param(step),
             Action::AdjustParam(steps) => {
                 self.edit_material(|m| controls::adjust_param(m, param, steps))
             }
+            Action::SelectParamAt(row) => {
+                let found = row < self.param_rows().len();
+                self.param = if found { row } else { self.param };
+                found
+            }
+            Action::AdjustParamAt(row, steps) => {
+                self.param = row;
+                self.edit_material(|m| controls::adjust_param(m, row, steps))
+            }
             _ => true,
         };
-        if matches!(action, Action::NextPattern | Action::PreviousPattern) {
-            self.param = 0;
-        }
         self.message = match done {
             true => Message::None,
-            false => Message::Info("this object has no bump pattern (p adds one)".into()),
+            false => Message::Info(
+                "this object has no pattern parameters (p adds a bump pattern, t a texture)".into(),
+            ),
         };
+    }
+
+    /// Puts the next (`step` 1) or previous pattern or image on the edited object with `cycle`
+    /// (`cycle_bump` or `cycle_texture`); an image that does not load is reported.
+    fn cycle(&mut self, cycle: Cycle, step: i32) {
+        let Some(object) = self.prepared.scene.objects.get(self.object) else {
+            return;
+        };
+        let mut material = object.material.clone();
+        match cycle(&mut material, &object.surface, step, &mut self.images) {
+            Ok(name) => {
+                self.edit_material(|m| {
+                    *m = material.clone();
+                    true
+                });
+                self.param = 0;
+                self.message = Message::Info(format!("now {}", crate::term::sanitize(&name)));
+            }
+            Err(e) => self.message = Message::Error(crate::term::sanitize(&e).into_owned()),
+        }
     }
 
     /// Applies `edit` to the current object's material, both as rendered and as kept in the scene
@@ -278,11 +312,13 @@ impl App {
         rendered
     }
 
+    /// The pattern parameters of the edited object (the bump's, then the texture's).
+    pub fn param_rows(&self) -> Vec<controls::ParamRow> {
+        self.material().map_or_else(Vec::new, controls::param_rows)
+    }
+
     fn select_param(&mut self, step: i32) -> bool {
-        let count = self
-            .material()
-            .and_then(controls::bump_pattern)
-            .map_or(0, |b| b.params.len());
+        let count = self.param_rows().len();
         if count == 0 {
             return false;
         }
@@ -302,6 +338,7 @@ impl App {
             Ok(((prepared, quality), reloader)) => {
                 self.quality_in_use = quality;
                 self.reloader = reloader;
+                self.images = shelf_for(&prepared.scene, &self.scenes[index]);
                 self.scene_index = index;
                 self.object = first_bumped_object(&prepared.scene);
                 self.param = 0;
@@ -340,6 +377,8 @@ impl App {
                     let (scene, kept) = reload.keep_live_params_telling(&self.prepared.scene);
                     match prepare(scene, self.quality, &self.settings) {
                         Ok((prepared, quality)) => {
+                            let source = &self.scenes[self.scene_index];
+                            self.images = shelf_for(&prepared.scene, source);
                             self.prepared = prepared;
                             self.quality_in_use = quality;
                             let last = self.prepared.objects.len().saturating_sub(1);
@@ -507,6 +546,11 @@ fn prepare(
     let output_bytes = PLANNED_OUTPUT_PIXELS * Framebuffer::BYTES_PER_PIXEL;
     let prepared = quality.prepare(scene, &camera, PLANNED_VIEWPORT, output_bytes)?;
     Ok((prepared, quality))
+}
+
+/// The images offered on `scene`, loaded from `source`.
+fn shelf_for(scene: &Scene, source: &str) -> ImageShelf {
+    ImageShelf::of(scene, crate::still::source_directory(source))
 }
 
 /// Pixels of the largest picture a terminal is expected to show: 500×150 cells in sextants.

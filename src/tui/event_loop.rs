@@ -163,6 +163,11 @@ fn handle_pending_events(
         match input.translate(event::read()?) {
             Input::Suspend => suspend = true,
             Input::Action(action) => app.apply(action),
+            Input::Pointer(pointer) => {
+                if let Some(action) = pointer.action(app, screen.picture_area()) {
+                    app.apply(action);
+                }
+            }
             Input::Resize(cols, rows) => {
                 screen.resize(cols, rows, app);
                 // A new font size or zoom changes the cells' shape too.

@@ -15,12 +15,29 @@ const WHEEL_ZOOM: f64 = 1.1;
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Input {
     Action(Action),
+    /// A click or the wheel at a cell: what it does depends on what is drawn there.
+    Pointer(Pointer),
     Resize(u16, u16),
     /// The terminal may have drawn over us (focus regained, Ctrl-L): draw everything again.
     Redraw,
     /// Ctrl-Z: give the terminal back and stop until continued.
     Suspend,
     Nothing,
+}
+
+/// A mouse press or wheel turn at a cell of the screen.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Pointer {
+    pub column: u16,
+    pub row: u16,
+    pub kind: PointerKind,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PointerKind {
+    Press,
+    WheelUp,
+    WheelDown,
 }
 
 /// Whether `key` is a press of Ctrl and `letter` (raw mode delivers these as keys, not signals).
@@ -51,10 +68,17 @@ impl InputState {
 
     fn mouse(&mut self, mouse: MouseEvent) -> Input {
         let at = (mouse.column, mouse.row);
+        let pointer = |kind| {
+            Input::Pointer(Pointer {
+                column: mouse.column,
+                row: mouse.row,
+                kind,
+            })
+        };
         match mouse.kind {
             MouseEventKind::Down(MouseButton::Left) => {
                 self.drag_from = Some(at);
-                Input::Nothing
+                pointer(PointerKind::Press)
             }
             MouseEventKind::Drag(MouseButton::Left) => {
                 let Some(from) = self.drag_from.replace(at) else {
@@ -71,9 +95,31 @@ impl InputState {
                 self.drag_from = None;
                 Input::Nothing
             }
-            MouseEventKind::ScrollUp => Input::Action(Action::Zoom(1.0 / WHEEL_ZOOM)),
-            MouseEventKind::ScrollDown => Input::Action(Action::Zoom(WHEEL_ZOOM)),
+            MouseEventKind::ScrollUp => pointer(PointerKind::WheelUp),
+            MouseEventKind::ScrollDown => pointer(PointerKind::WheelDown),
             _ => Input::Nothing,
+        }
+    }
+}
+
+impl Pointer {
+    /// What the pointer asks of the picture (`picture` is its area): over the open parameter
+    /// panel a press selects the row's parameter and the wheel changes it; elsewhere the wheel
+    /// zooms.
+    pub fn action(self, app: &super::app::App, picture: ratatui::layout::Rect) -> Option<Action> {
+        use super::param_panel::{covers, param_at};
+        if covers(app, picture, self.column, self.row) {
+            let row = param_at(app, picture, self.column, self.row)?;
+            return Some(match self.kind {
+                PointerKind::Press => Action::SelectParamAt(row),
+                PointerKind::WheelUp => Action::AdjustParamAt(row, 1.0),
+                PointerKind::WheelDown => Action::AdjustParamAt(row, -1.0),
+            });
+        }
+        match self.kind {
+            PointerKind::Press => None,
+            PointerKind::WheelUp => Some(Action::Zoom(1.0 / WHEEL_ZOOM)),
+            PointerKind::WheelDown => Some(Action::Zoom(WHEEL_ZOOM)),
         }
     }
 }

@@ -103,14 +103,14 @@ pub const BINDINGS: &[Binding] = &[
     ),
     bind(
         "p P",
-        "next / previous pattern",
+        "next / previous bump: pattern or image",
         &[Char('p')],
         Action::NextPattern,
     ),
     bind("", "", &[Char('P')], Action::PreviousPattern),
     bind(
         "t T",
-        "next / previous texture",
+        "next / previous texture: pattern or image",
         &[Char('t')],
         Action::NextTexture,
     ),
@@ -144,6 +144,12 @@ pub const BINDINGS: &[Binding] = &[
         Action::AdjustParam(-10.0),
     ),
     bind("", "", &[Char('>')], Action::AdjustParam(10.0)),
+    bind(
+        "m",
+        "parameter panel (click a row, wheel to change)",
+        &[Char('m')],
+        Action::TogglePanel,
+    ),
     bind(
         "Space",
         "pause / run animation",
@@ -190,7 +196,7 @@ pub const BINDINGS: &[Binding] = &[
     bind("? F1", "this help", &[Char('?'), F(1)], Action::ToggleHelp),
     bind(
         "Esc",
-        "close help or diagnostic, else quit",
+        "close help, diagnostic or panel, else quit",
         &[Esc],
         Action::Back,
     ),

@@ -1,8 +1,10 @@
 //! Live edits of one object's material: which bump pattern and colour pattern it wears, the bump's
-//! strength and sign, and the values of the bump pattern's parameters.
+//! strength and sign, and the values of its patterns' parameters.
 
+use super::image_shelf::ImageShelf;
 use crate::pattern::{BUILTINS, OutputKind, Pattern};
 use crate::scene::{Bump, BumpSource, Material, PatternBinding, Placement, Texturing};
+use crate::surface::Surface;
 use crate::texture::Mapping;
 
 /// The built-in patterns of one kind (bump or colour), in the order they are shipped.
@@ -14,15 +16,40 @@ fn builtins_of(colour: bool) -> Vec<(&'static str, Pattern)> {
         .collect()
 }
 
-/// The next (`step` = 1) or previous built-in after `current` in `list`, wrapping.
-fn cycle(list: &[(&'static str, Pattern)], current: Option<&str>, step: i32) -> (String, Pattern) {
-    let position = current.and_then(|name| list.iter().position(|(n, _)| *n == name));
+/// Something the pattern or texture keys put on an object: a shipped pattern or an image.
+enum Choice {
+    Pattern(&'static str, Pattern),
+    Image(String),
+}
+
+impl Choice {
+    fn name(&self) -> &str {
+        match self {
+            Choice::Pattern(name, _) => name,
+            Choice::Image(name) => name,
+        }
+    }
+}
+
+/// The shipped patterns of one kind, then the shelf's images.
+fn choices(colour: bool, images: &ImageShelf) -> Vec<Choice> {
+    let patterns = builtins_of(colour).into_iter();
+    let images = images.names().iter().cloned().map(Choice::Image);
+    patterns
+        .map(|(name, pattern)| Choice::Pattern(name, pattern))
+        .chain(images)
+        .collect()
+}
+
+/// The next (`step` = 1) or previous choice after the one named `current`, wrapping.
+fn cycle<'a>(list: &'a [Choice], current: Option<&str>, step: i32) -> &'a Choice {
+    let position = current.and_then(|name| list.iter().position(|c| c.name() == name));
     let index = match position {
         Some(i) => (i as i32 + step).rem_euclid(list.len() as i32) as usize,
         None if step >= 0 => 0,
         None => list.len() - 1,
     };
-    (list[index].0.to_string(), list[index].1.clone())
+    &list[index]
 }
 
 fn binding(name: String, pattern: Pattern, placement: Placement) -> PatternBinding {
@@ -50,45 +77,73 @@ fn bump_pattern_mut(material: &mut Material) -> Option<&mut PatternBinding> {
     }
 }
 
-/// Puts the next or previous built-in bump pattern on the material, keeping its placement,
-/// strength and sign. Returns the new pattern's name.
-pub fn cycle_bump_pattern(material: &mut Material, step: i32) -> String {
-    let list = builtins_of(false);
-    let current = bump_pattern(material).map(|b| b.name.clone());
-    let (name, pattern) = cycle(&list, current.as_deref(), step);
+/// Bump strength for an image put on in place of a pattern: image heights run 0..1, so they
+/// need a factor near the shipped image scenes' to show.
+const IMAGE_BUMP_STRENGTH: f32 = 30.0;
+
+/// Puts the next or previous shipped bump pattern or image on the material (on `surface`),
+/// keeping a pattern's placement and the sign; the strength is kept unless the kind changes.
+/// Returns the new bump's name.
+pub fn cycle_bump(
+    material: &mut Material,
+    surface: &Surface,
+    step: i32,
+    images: &mut ImageShelf,
+) -> Result<String, String> {
+    let list = choices(false, images);
+    let current = material.bump.as_ref().map(|b| match &b.source {
+        BumpSource::Pattern(binding) => binding.name.clone(),
+        BumpSource::Image(image) => image.name.clone(),
+    });
+    let choice = cycle(&list, current.as_deref(), step);
     let placement = bump_pattern(material).map_or_else(Placement::default, |b| b.placement);
-    let source = BumpSource::Pattern(binding(name.clone(), pattern, placement));
-    match &mut material.bump {
-        Some(bump) => bump.source = source,
-        None => {
-            material.bump = Some(Bump {
-                source,
-                strength: 1.0,
-                invert: false,
-            })
+    let source = match choice {
+        Choice::Pattern(name, pattern) => {
+            BumpSource::Pattern(binding(name.to_string(), pattern.clone(), placement))
         }
-    }
-    name
+        Choice::Image(name) => BumpSource::Image(images.height(name, surface)?),
+    };
+    let was_image = matches!(
+        material.bump.as_ref().map(|b| &b.source),
+        Some(BumpSource::Image(_))
+    );
+    let is_image = matches!(source, BumpSource::Image(_));
+    let strength = match (&material.bump, was_image == is_image) {
+        (Some(bump), true) => bump.strength,
+        _ if is_image => IMAGE_BUMP_STRENGTH,
+        _ => 1.0,
+    };
+    let invert = material.bump.as_ref().is_some_and(|b| b.invert);
+    material.bump = Some(Bump {
+        source,
+        strength,
+        invert,
+    });
+    Ok(choice.name().to_string())
 }
 
-/// Puts the next or previous built-in colour pattern on the material as its texture.
-pub fn cycle_texture_pattern(material: &mut Material, step: i32) -> String {
-    let list = builtins_of(true);
-    let current = match &material.texture {
-        Some(Texturing::Pattern(binding)) => Some(binding.name.clone()),
-        _ => None,
-    };
-    let (name, pattern) = cycle(&list, current.as_deref(), step);
-    let placement = match &material.texture {
-        Some(Texturing::Pattern(binding)) => binding.placement,
-        _ => Placement::default(),
-    };
-    material.texture = Some(Texturing::Pattern(binding(
-        name.clone(),
-        pattern,
-        placement,
-    )));
-    name
+/// Puts the next or previous shipped colour pattern or image on the material (on `surface`) as
+/// its texture, keeping a pattern's placement. Returns the new texture's name.
+pub fn cycle_texture(
+    material: &mut Material,
+    surface: &Surface,
+    step: i32,
+    images: &mut ImageShelf,
+) -> Result<String, String> {
+    let list = choices(true, images);
+    let current = material.texture.as_ref().map(|t| match t {
+        Texturing::Pattern(binding) => binding.name.clone(),
+        Texturing::Image(image) => image.name.clone(),
+    });
+    let choice = cycle(&list, current.as_deref(), step);
+    let placement = texture_pattern(material).map_or_else(Placement::default, |b| b.placement);
+    material.texture = Some(match choice {
+        Choice::Pattern(name, pattern) => {
+            Texturing::Pattern(binding(name.to_string(), pattern.clone(), placement))
+        }
+        Choice::Image(name) => Texturing::Image(images.texture(name, surface)?),
+    });
+    Ok(choice.name().to_string())
 }
 
 /// Multiplies the bump strength; false if the material has no bump.
@@ -111,9 +166,78 @@ pub fn invert_bump(material: &mut Material) -> bool {
 /// Steps of one fiftieth of the parameter's range.
 const PARAM_STEPS: f32 = 50.0;
 
-/// Moves bump parameter `index` by `steps`, clamped to its range; false if there is none.
-pub fn adjust_param(material: &mut Material, index: usize, steps: f32) -> bool {
-    let Some(binding) = bump_pattern_mut(material) else {
+/// Which of a material's pattern bindings a parameter belongs to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ParamSlot {
+    Bump,
+    Texture,
+}
+
+/// One editable pattern parameter of a material, as the panel lists it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ParamRow {
+    pub slot: ParamSlot,
+    /// The binding's pattern name.
+    pub pattern: String,
+    pub name: String,
+    pub value: f32,
+    pub min: f32,
+    pub max: f32,
+    pub default: f32,
+}
+
+fn texture_pattern(material: &Material) -> Option<&PatternBinding> {
+    match material.texture.as_ref()? {
+        Texturing::Pattern(binding) => Some(binding),
+        Texturing::Image(_) => None,
+    }
+}
+
+fn texture_pattern_mut(material: &mut Material) -> Option<&mut PatternBinding> {
+    match material.texture.as_mut()? {
+        Texturing::Pattern(binding) => Some(binding),
+        Texturing::Image(_) => None,
+    }
+}
+
+/// Every pattern parameter of the material: the bump's, then the texture's. A parameter is
+/// addressed by its place in this list.
+pub fn param_rows(material: &Material) -> Vec<ParamRow> {
+    let mut rows = binding_rows(ParamSlot::Bump, bump_pattern(material));
+    rows.extend(binding_rows(ParamSlot::Texture, texture_pattern(material)));
+    rows
+}
+
+fn binding_rows(slot: ParamSlot, binding: Option<&PatternBinding>) -> Vec<ParamRow> {
+    let Some(binding) = binding else {
+        return Vec::new();
+    };
+    binding
+        .pattern
+        .params()
+        .iter()
+        .zip(&binding.params)
+        .map(|(param, &value)| ParamRow {
+            slot,
+            pattern: binding.name.clone(),
+            name: param.name.clone(),
+            value,
+            min: param.min,
+            max: param.max,
+            default: param.default,
+        })
+        .collect()
+}
+
+/// Moves parameter `row` of `param_rows` by `steps`, clamped to its range; false if there is
+/// none.
+pub fn adjust_param(material: &mut Material, row: usize, steps: f32) -> bool {
+    let bump_count = bump_pattern(material).map_or(0, |b| b.params.len());
+    let (binding, index) = match row < bump_count {
+        true => (bump_pattern_mut(material), row),
+        false => (texture_pattern_mut(material), row - bump_count),
+    };
+    let Some(binding) = binding else {
         return false;
     };
     let Some(param) = binding.pattern.params().get(index) else {
@@ -140,6 +264,65 @@ pub fn animates(material: &Material) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A plane's surface and the shelf of a scene with no images of its own.
+    fn stage() -> (Surface, ImageShelf) {
+        let scene = crate::scene::preset("plane-dimples").unwrap();
+        let surface = scene.objects[0].surface.clone();
+        (surface, ImageShelf::of(&scene, ".".into()))
+    }
+
+    fn cycle_bump_pattern(material: &mut Material, step: i32) -> String {
+        let (surface, mut shelf) = stage();
+        loop {
+            let name = cycle_bump(material, &surface, step, &mut shelf).unwrap();
+            if bump_pattern(material).is_some() {
+                return name;
+            }
+        }
+    }
+
+    fn cycle_texture_pattern(material: &mut Material, step: i32) -> String {
+        let (surface, mut shelf) = stage();
+        loop {
+            let name = cycle_texture(material, &surface, step, &mut shelf).unwrap();
+            if texture_pattern(material).is_some() {
+                return name;
+            }
+        }
+    }
+
+    #[test]
+    fn images_follow_the_patterns_and_the_bump_strength_follows_the_kind() {
+        let (surface, mut shelf) = stage();
+        let mut material = Material::default();
+        let patterns = builtins_of(false).len();
+        let mut names = Vec::new();
+        for _ in 0..patterns + shelf.names().len() {
+            names.push(cycle_bump(&mut material, &surface, 1, &mut shelf).unwrap());
+            let bump = material.bump.as_ref().unwrap();
+            match &bump.source {
+                BumpSource::Image(image) => {
+                    assert!(image.chosen_live);
+                    assert_eq!(bump.strength, IMAGE_BUMP_STRENGTH);
+                }
+                BumpSource::Pattern(_) => assert_eq!(bump.strength, 1.0),
+            }
+        }
+        assert_eq!(&names[patterns..], shelf.names());
+        assert_eq!(
+            cycle_bump(&mut material, &surface, 1, &mut shelf).unwrap(),
+            names[0]
+        );
+        assert_eq!(
+            cycle_texture(&mut material, &surface, -1, &mut shelf).unwrap(),
+            "gravel"
+        );
+        let Some(Texturing::Image(image)) = &material.texture else {
+            panic!("the last choice is an image");
+        };
+        assert!(image.chosen_live && image.texture.width() > 0);
+    }
 
     #[test]
     fn cycling_bump_patterns_visits_only_bump_patterns_and_keeps_strength() {
@@ -168,5 +351,31 @@ mod tests {
         let binding = bump_pattern(&material).unwrap();
         assert_eq!(binding.params[0], binding.pattern.params()[0].max);
         assert!(!adjust_param(&mut material, 99, 1.0));
+    }
+
+    #[test]
+    fn rows_list_the_bump_parameters_then_the_textures_and_each_edits_its_own() {
+        let mut material = Material::default();
+        while bump_pattern(&material).is_none_or(|b| b.params.is_empty()) {
+            cycle_bump_pattern(&mut material, 1);
+        }
+        while texture_pattern(&material).is_none_or(|b| b.params.is_empty()) {
+            cycle_texture_pattern(&mut material, 1);
+        }
+        let rows = param_rows(&material);
+        let bump_count = bump_pattern(&material).unwrap().params.len();
+        assert!(rows[..bump_count].iter().all(|r| r.slot == ParamSlot::Bump));
+        assert!(
+            rows[bump_count..]
+                .iter()
+                .all(|r| r.slot == ParamSlot::Texture)
+        );
+        assert!(rows.len() > bump_count);
+        let bump_before = bump_pattern(&material).unwrap().params.clone();
+        assert!(adjust_param(&mut material, bump_count, 1.0));
+        assert_eq!(bump_pattern(&material).unwrap().params, bump_before);
+        let moved = &param_rows(&material)[bump_count];
+        assert!(moved.value != rows[bump_count].value || moved.value == moved.max);
+        assert!(!adjust_param(&mut material, rows.len(), 1.0));
     }
 }

@@ -80,6 +80,11 @@ impl Screen {
         self.layout
     }
 
+    /// The cells the picture takes (all but the status line).
+    pub fn picture_area(&self) -> Rect {
+        Rect::new(0, 0, self.layout.cols, self.layout.picture_rows)
+    }
+
     /// A new terminal size: everything is drawn again in full.
     pub fn resize(&mut self, cols: u16, rows: u16, app: &mut App) {
         self.layout = Layout::new(cols, rows);
@@ -195,7 +200,10 @@ impl Screen {
                 style,
             );
         }
-        let picture = Rect::new(0, 0, cols, self.layout.picture_rows);
+        let picture = self.picture_area();
+        if app.panel {
+            super::param_panel::draw_panel(app, picture, style, &mut buffer);
+        }
         if let Some(message) = &app.diagnostic {
             draw_diagnostic(picture, style, message, &mut buffer);
         }

@@ -2,6 +2,7 @@
 //! important parts first.
 
 use super::app::{App, Message};
+use super::material_controls::{ParamRow, ParamSlot};
 use crate::scene::{BumpSource, Material, Texturing};
 use crate::term::{ColorMode, GlyphSet, sanitize};
 
@@ -106,44 +107,45 @@ fn material_text(app: &App) -> String {
     let Some(material) = app.material() else {
         return "no objects".into();
     };
-    let mut text = format!("obj {} {}", app.object + 1, bump_text(material, app.param));
+    let rows = app.param_rows();
+    let params = |slot| params_text(&rows, slot, app.param);
+    let mut text = format!("obj {} {}", app.object + 1, bump_text(material));
+    text += &params(ParamSlot::Bump);
     if let Some(texture) = &material.texture {
         let name = match texture {
             Texturing::Pattern(b) => &b.name,
             Texturing::Image(i) => &i.name,
         };
         text += &format!(" tex {}", sanitize(name));
+        text += &params(ParamSlot::Texture);
     }
     text
 }
 
-fn bump_text(material: &Material, selected: usize) -> String {
+/// The bump's source and strength.
+fn bump_text(material: &Material) -> String {
     let Some(bump) = &material.bump else {
         return "no bump".into();
     };
     let sign = if bump.invert { "-" } else { "" };
-    match &bump.source {
-        BumpSource::Image(image) => {
-            format!("{} ×{sign}{:.2}", sanitize(&image.name), bump.strength)
-        }
-        BumpSource::Pattern(binding) => {
-            let mut text = format!("{} ×{sign}{:.2}", sanitize(&binding.name), bump.strength);
-            for (i, (param, value)) in binding
-                .pattern
-                .params()
-                .iter()
-                .zip(&binding.params)
-                .enumerate()
-            {
-                let name = sanitize(&param.name);
-                text += &match i == selected {
-                    true => format!(" {name}=[{value:.3}]"),
-                    false => format!(" {name}={value:.3}"),
-                };
-            }
-            text
-        }
+    let name = match &bump.source {
+        BumpSource::Image(image) => &image.name,
+        BumpSource::Pattern(binding) => &binding.name,
+    };
+    format!("{} ×{sign}{:.2}", sanitize(name), bump.strength)
+}
+
+/// ` name=value` for each parameter of `slot`, the `selected` row's value bracketed.
+fn params_text(rows: &[ParamRow], slot: ParamSlot, selected: usize) -> String {
+    let mut text = String::new();
+    for (i, row) in rows.iter().enumerate().filter(|(_, r)| r.slot == slot) {
+        let (name, value) = (sanitize(&row.name), row.value);
+        text += &match i == selected {
+            true => format!(" {name}=[{value:.3}]"),
+            false => format!(" {name}={value:.3}"),
+        };
     }
+    text
 }
 
 fn segment(rank: u8, text: String) -> Segment {

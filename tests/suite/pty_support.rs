@@ -93,6 +93,11 @@ impl Session {
         }
     }
 
+    /// The screen's text now, a line a row.
+    pub fn contents(&self) -> String {
+        self.screen.lock().unwrap().screen().contents()
+    }
+
     pub fn status_line(&self) -> String {
         let parser = self.screen.lock().unwrap();
         parser

@@ -226,3 +226,56 @@ fn quitting_during_an_export_says_it_was_cancelled() {
     });
     assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0);
 }
+
+/// The parameter panel lists the pattern's parameters with range and default; a click selects
+/// a row and the wheel over it changes the value, as the status line then shows.
+#[test]
+fn the_parameter_panel_is_edited_with_keys_and_the_mouse() {
+    let dir = tempfile::tempdir().unwrap();
+    let pattern = dir.path().join("two.pat");
+    std::fs::write(
+        &pattern,
+        "param period = 20 in 2..100\nparam depth = 0.5 in 0..1\n\
+         height = depth * sin(u / period)\n",
+    )
+    .unwrap();
+    let mut session = Session::bumpwork(
+        &["view", "two.pat"],
+        Some(dir.path()),
+        (COLS, ROWS),
+        "two.pat",
+    );
+    session.send("m");
+    session.wait_for("the panel", |screen| {
+        let text = screen.contents();
+        text.contains("parameters (m closes)")
+            && text.contains("▸ period")
+            && text.contains("2..100 (20)")
+            && text.contains("0..1 (0.5)")
+    });
+    let text = session.contents();
+    let depth_row = text
+        .lines()
+        .position(|l| l.contains("  depth "))
+        .expect("a depth row") as u16;
+    let column = COLS - 10;
+    // SGR mouse: a left press on the depth row, then two wheel-downs over it.
+    session.send(&format!("\x1b[<0;{};{}M", column + 1, depth_row + 1));
+    session.wait_for("depth selected", |screen| {
+        screen.contents().contains("▸ depth")
+    });
+    session.send(&format!("\x1b[<65;{};{}M", column + 1, depth_row + 1));
+    session.send(&format!("\x1b[<65;{};{}M", column + 1, depth_row + 1));
+    session.wait_for(
+        "depth lowered by two steps",
+        status_contains("depth=[0.460]"),
+    );
+    session.send(".");
+    session.wait_for("depth raised by a key", status_contains("depth=[0.480]"));
+    session.send("\x1b");
+    session.wait_for("the panel closed by Esc", |screen| {
+        !screen.contents().contains("parameters (m closes)")
+    });
+    session.send("q");
+    assert_eq!(session.exit_within(Duration::from_secs(5)), Some(0));
+}

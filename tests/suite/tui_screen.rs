@@ -424,6 +424,23 @@ fn the_saved_scene_renders_what_the_export_key_exports() {
     app.apply(Action::MoveLight(30.0, 0.0));
     app.apply(Action::AdjustParam(10.0));
     app.apply(Action::ScaleBump(2.0));
+    // An image put on by the keys: the texture and the bump go back past the patterns.
+    app.apply(Action::PreviousTexture);
+    assert_eq!(app.message, Message::Info("now gravel".into()));
+    app.apply(Action::NextObject);
+    let image_bump = |app: &App| {
+        matches!(
+            app.material().unwrap().bump.as_ref().unwrap().source,
+            bumpwork::scene::BumpSource::Image(_)
+        )
+    };
+    for _ in 0..100 {
+        if image_bump(&app) {
+            break;
+        }
+        app.apply(Action::NextPattern);
+    }
+    assert!(image_bump(&app), "the bump keys reach the images");
     app.apply(Action::SaveScene);
     let Message::Info(text) = app.message.clone() else {
         panic!("{:?}", app.message);
