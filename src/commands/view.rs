@@ -1,6 +1,7 @@
 //! `bumpwork view` (and `bumpwork` alone): the terminal workbench.
 
 use bumpwork::Error;
+use bumpwork::term::graphics::GraphicsChoice;
 use bumpwork::term::{ColorChoice, GlyphSet};
 use bumpwork::tui::{QualityPreset, WorkbenchOptions};
 
@@ -33,6 +34,11 @@ pub struct ViewArgs {
     /// (circles come out round) [default: as the terminal reports, else 1x2].
     #[arg(long, value_parser = super::parse_size)]
     cell_size: Option<(u32, u32)>,
+    /// The picture: real pixels where the terminal shows them (kitty graphics, sixel, iTerm2
+    /// images; auto asks the terminal), or blocks of the --glyphs set; `g` cycles through what
+    /// the terminal speaks.
+    #[arg(long, default_value = "auto", value_parser = GraphicsChoice::parse)]
+    graphics: Option<GraphicsChoice>,
     /// A setting, KEY=VALUE (repeatable), as for `render --set`: quality.KNOB (over every
     /// preset `Q` picks), [OBJECT.]bump.PARAM, [OBJECT.]texture.PARAM, [OBJECT.]bump.strength,
     /// [OBJECT.]bump.params.PARAM; kept over reloads.
@@ -69,6 +75,7 @@ pub fn run(args: ViewArgs) -> Result<(), Error> {
         watch: !args.no_watch,
         quality: args.quality.unwrap_or_default(),
         cell_size: args.cell_size,
+        graphics: args.graphics.unwrap_or_default(),
         settings: args.set,
     };
     bumpwork::tui::run(&options)

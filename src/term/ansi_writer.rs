@@ -90,6 +90,12 @@ pub fn encode_frame(
     frame.out.extend_from_slice(SYNC_END);
 }
 
+/// A frame's bytes without its synchronized-update brackets.
+fn unwrapped(frame: &[u8]) -> &[u8] {
+    let inner = frame.strip_prefix(SYNC_BEGIN).unwrap_or(frame);
+    inner.strip_suffix(SYNC_END).unwrap_or(inner)
+}
+
 fn repeat_len(count: usize) -> usize {
     if count == 0 {
         return usize::MAX; // nothing to repeat: never worth it
@@ -278,6 +284,37 @@ impl FrameWriter {
     /// Whether to use REP for runs of identical cells (see [`FrameOptions::repeat`]).
     pub fn set_repeat(&mut self, repeat: bool) {
         self.options.repeat = repeat;
+    }
+
+    /// Draws `under` (the cells beneath a picture sent as pixels), then `picture` (escape
+    /// sequences drawing over those cells), then `grid` over it all (the text on top), as one
+    /// synchronized write; returns the bytes written. The cells `picture` covers are taken to be
+    /// `under`'s afterwards.
+    pub fn draw_around(
+        &mut self,
+        out: &mut impl Write,
+        under: &CellGrid,
+        picture: &[u8],
+        grid: &CellGrid,
+    ) -> io::Result<usize> {
+        self.scratch.clear();
+        self.scratch.extend_from_slice(SYNC_BEGIN);
+        let mut part = Vec::new();
+        encode_frame(self.shown.as_ref(), under, self.options, &mut part);
+        self.scratch.extend_from_slice(unwrapped(&part));
+        // The picture's sequences leave the pen and the cursor wherever they leave them.
+        self.scratch.extend_from_slice(RESET);
+        self.scratch.extend_from_slice(picture);
+        part.clear();
+        encode_frame(Some(under), grid, self.options, &mut part);
+        self.scratch.extend_from_slice(unwrapped(&part));
+        self.scratch.extend_from_slice(SYNC_END);
+        if let Err(error) = out.write_all(&self.scratch).and_then(|()| out.flush()) {
+            self.shown = None;
+            return Err(error);
+        }
+        self.shown = Some(grid.clone());
+        Ok(self.scratch.len())
     }
 
     /// Writes the changes from the last frame to `grid` in one write and flushes; returns the bytes

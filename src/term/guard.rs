@@ -78,6 +78,7 @@ pub fn write_enter_sequence(out: &mut impl Write, modes: TerminalModes) -> io::R
 /// interrupted by a panic may have left open.
 pub fn write_restore_sequence(out: &mut impl Write, modes: TerminalModes) -> io::Result<()> {
     out.write_all(SYNC_END)?;
+    super::graphics::kitty::delete_if_shown(out)?;
     queue!(out, ResetColor)?;
     queue_if(
         out,

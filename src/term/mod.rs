@@ -52,6 +52,7 @@ mod cursor;
 mod dither;
 mod encode;
 mod glyphs;
+pub mod graphics;
 mod guard;
 pub mod palette;
 mod picture;

@@ -18,6 +18,7 @@ use crate::raster::{FrameStats, Framebuffer, PreparedScene, Viewport};
 use crate::scene::Camera;
 use crate::scene::{Material, Scene};
 use crate::surface::Surface;
+use crate::term::graphics::Protocol;
 use crate::term::{ColorMode, GlyphSet};
 use crate::watch::open_watched;
 use crate::watch::{ReloadOutcome, Reloader};
@@ -39,6 +40,10 @@ pub struct App {
     /// ones over it.
     pub quality_in_use: Quality,
     pub glyphs: GlyphSet,
+    /// The pixel protocol the picture is sent in; `None` draws it in `glyphs`.
+    pub graphics: Option<Protocol>,
+    /// The protocols the terminal speaks, which `g` cycles through after the glyph sets.
+    pub graphics_supported: Vec<Protocol>,
     pub colors: ColorMode,
     /// `--cell-size`: a cell's pixels, for terminals that do not report them.
     pub cell_size: Option<(u32, u32)>,
@@ -97,6 +102,8 @@ pub struct FrameReport {
     pub psnr_db: Option<f64>,
     /// Passes averaged into the picture on screen (progressive refinement).
     pub passes: u32,
+    /// Bytes of the last picture sent as pixels.
+    pub picture_bytes: usize,
 }
 
 /// What must be redrawn: the picture (re-render) or only the text around it.
@@ -140,6 +147,8 @@ impl App {
             quality,
             quality_in_use,
             glyphs: options.glyphs,
+            graphics: None,
+            graphics_supported: Vec::new(),
             colors,
             cell_size: options.cell_size,
             settings: options.settings.clone(),
@@ -228,7 +237,7 @@ impl App {
             Action::NextViewMode => self.view_mode = self.view_mode.cycled(1),
             Action::PreviousViewMode => self.view_mode = self.view_mode.cycled(-1),
             Action::NextQuality => self.reprepare(self.quality.next()),
-            Action::NextGlyphs => self.glyphs = next_glyphs(self.glyphs),
+            Action::NextGlyphs => self.next_picture_kind(),
             Action::NextColors => self.colors = next_colors(self.colors),
             Action::TogglePause => self.clock.toggle(),
             Action::StepClock => self.clock.step(),
@@ -310,6 +319,24 @@ impl App {
             edit(&mut object.material);
         }
         rendered
+    }
+
+    /// The next glyph set, and after the last one each pixel protocol the terminal speaks.
+    fn next_picture_kind(&mut self) {
+        let supported = &self.graphics_supported;
+        match self.graphics {
+            None if self.glyphs == GlyphSet::Sextant && !supported.is_empty() => {
+                self.graphics = Some(supported[0]);
+            }
+            None => self.glyphs = next_glyphs(self.glyphs),
+            Some(protocol) => {
+                let index = supported.iter().position(|&p| p == protocol);
+                self.graphics = index.and_then(|i| supported.get(i + 1)).copied();
+                if self.graphics.is_none() {
+                    self.glyphs = GlyphSet::HalfBlock;
+                }
+            }
+        }
     }
 
     /// The pattern parameters of the edited object (the bump's, then the texture's).

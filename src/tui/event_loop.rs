@@ -8,6 +8,7 @@ use super::render::DEFAULT_CELL_ASPECT;
 use super::screen::Screen;
 use super::status::colors_name;
 use crate::Error;
+use crate::term::graphics::{GraphicsChoice, GraphicsFound, Replies, decide, query_terminal};
 use crate::term::{ShutdownSignals, TerminalGuard};
 use crossterm::event;
 use std::io;
@@ -50,7 +51,18 @@ pub fn run(options: &WorkbenchOptions) -> Result<(), Error> {
     let signals = ShutdownSignals::register().map_err(terminal_error)?;
     signals.watch_terminal().map_err(terminal_error)?;
     let guard = TerminalGuard::enter(options.mouse).map_err(terminal_error)?;
-    let result = event_loop(&mut app, &signals, options.mouse);
+    let found = find_graphics(options.graphics).map_err(terminal_error)?;
+    app.graphics = found.chosen;
+    app.graphics_supported = found.supported.clone();
+    if let Message::Info(text) = &mut app.message {
+        let picture = found.chosen.map_or("blocks", |p| p.name());
+        *text = format!("{picture} ({}); {text}", found.reason);
+    }
+    let route = PixelRoute {
+        through_tmux: found.through_tmux,
+        cell_pixels: cell_pixels(options.cell_size, found.cell_pixels),
+    };
+    let result = event_loop(&mut app, &signals, options.mouse, route);
     drop(guard);
     // On the normal screen now: say what became of an export still running.
     if let Some(job) = app.export_job.take() {
@@ -70,7 +82,19 @@ pub fn run(options: &WorkbenchOptions) -> Result<(), Error> {
     result.map_err(terminal_error)
 }
 
-fn event_loop(app: &mut App, signals: &ShutdownSignals, mouse: bool) -> io::Result<()> {
+/// How pixel pictures reach the terminal.
+#[derive(Clone, Copy)]
+struct PixelRoute {
+    through_tmux: bool,
+    cell_pixels: (u32, u32),
+}
+
+fn event_loop(
+    app: &mut App,
+    signals: &ShutdownSignals,
+    mouse: bool,
+    route: PixelRoute,
+) -> io::Result<()> {
     // SIGTSTP (the shell's `kill -TSTP`, a terminal's suspend key outside raw mode) suspends as
     // Ctrl-Z does, instead of stopping the process with the terminal raw.
     let suspend_asked = Arc::new(AtomicBool::new(false));
@@ -81,6 +105,7 @@ fn event_loop(app: &mut App, signals: &ShutdownSignals, mouse: bool) -> io::Resu
     let (cols, rows) = crossterm::terminal::size()?;
     let mut screen = Screen::new(cols, rows);
     screen.set_cell_aspect(cell_aspect(app.cell_size), app);
+    screen.set_pixel_route(route.through_tmux, route.cell_pixels, app);
     let mut input = InputState::default();
     let mut last_frame = Instant::now();
     while !app.quit && signals.received().is_none() {
@@ -196,6 +221,62 @@ fn cell_aspect(fixed: Option<(u32, u32)>) -> f32 {
     reported
         .filter(|aspect| (1.0..=4.0).contains(aspect))
         .unwrap_or(DEFAULT_CELL_ASPECT)
+}
+
+/// Asks the terminal which pixel protocols it speaks (not at all for `--graphics blocks`); inside
+/// tmux, whether tmux passes them through.
+fn find_graphics(choice: GraphicsChoice) -> io::Result<GraphicsFound> {
+    let var = |name: &str| std::env::var(name).ok();
+    let in_tmux = var("TMUX").is_some_and(|v| !v.is_empty());
+    let passthrough = in_tmux.then(tmux_passes_through);
+    let replies = match choice {
+        GraphicsChoice::Blocks => Replies::default(),
+        _ => query_terminal(passthrough == Some(true))?,
+    };
+    Ok(decide(choice, &replies, var, passthrough))
+}
+
+/// Whether tmux's `allow-passthrough` is on, asked of tmux within a second.
+fn tmux_passes_through() -> bool {
+    let child = std::process::Command::new("tmux")
+        .args(["show-options", "-gqv", "allow-passthrough"])
+        .stdin(std::process::Stdio::null())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::null())
+        .spawn();
+    let Ok(mut child) = child else {
+        return false;
+    };
+    let deadline = Instant::now() + Duration::from_secs(1);
+    while Instant::now() < deadline {
+        if let Ok(Some(_)) = child.try_wait() {
+            let mut text = String::new();
+            if let Some(out) = child.stdout.take() {
+                use std::io::Read;
+                let _ = out.take(64).read_to_string(&mut text);
+            }
+            return matches!(text.trim(), "on" | "all");
+        }
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    let _ = child.kill();
+    let _ = child.wait();
+    false
+}
+
+/// A cell's size in pixels: `--cell-size`, else as the window's pixel size gives it
+/// (TIOCGWINSZ), else as the terminal answered (`CSI 16 t`), else a common 10×20.
+fn cell_pixels(fixed: Option<(u32, u32)>, answered: Option<(u32, u32)>) -> (u32, u32) {
+    let from_window = crossterm::terminal::window_size().ok().and_then(|size| {
+        let w = u32::from(size.width) / u32::from(size.columns.max(1));
+        let h = u32::from(size.height) / u32::from(size.rows.max(1));
+        (w > 0 && h > 0).then_some((w, h))
+    });
+    fixed
+        .or(from_window)
+        .or(answered)
+        .filter(|&(w, h)| (1..=512).contains(&w) && (1..=1024).contains(&h))
+        .unwrap_or(super::pixel_picture::FALLBACK_CELL_PIXELS)
 }
 
 fn terminal_error(error: io::Error) -> Error {

@@ -20,6 +20,7 @@ mod material_controls;
 mod options;
 mod orbit;
 mod param_panel;
+mod pixel_picture;
 mod quality;
 mod refinement;
 mod render;

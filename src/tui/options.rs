@@ -2,6 +2,7 @@
 
 use super::quality::QualityPreset;
 use crate::overrides::Override;
+use crate::term::graphics::GraphicsChoice;
 use crate::term::{ColorChoice, GlyphSet};
 
 #[derive(Clone, Debug)]
@@ -23,6 +24,8 @@ pub struct WorkbenchOptions {
     pub quality: QualityPreset,
     /// A cell's size in pixels, width × height, for terminals that do not report it.
     pub cell_size: Option<(u32, u32)>,
+    /// `--graphics`: real pixels where the terminal shows them, or blocks.
+    pub graphics: GraphicsChoice,
     /// `--set` scene settings, applied to every scene shown that has them, at every load.
     pub settings: Vec<Override>,
 }
@@ -43,6 +46,7 @@ impl Default for WorkbenchOptions {
             watch: true,
             quality: QualityPreset::default(),
             cell_size: None,
+            graphics: GraphicsChoice::Auto,
             settings: Vec::new(),
         }
     }

@@ -170,6 +170,38 @@ pub fn render_picture_pass(
     }
 }
 
+/// Renders `view` at `size` square pixels, `supersampling` × `supersampling` rendered pixels to
+/// each, sampled as `sampling` says and averaged over each pixel's area (the picture of a
+/// terminal that shows pixels).
+pub fn render_pixels_pass(
+    view: &View,
+    size: (usize, usize),
+    supersampling: usize,
+    sampling: Sampling,
+    framebuffer: &mut Framebuffer,
+) -> PicturePass {
+    if size.0 == 0 || size.1 == 0 {
+        return PicturePass {
+            linear: Vec::new(),
+            size: (0, 0),
+            rendered: RenderedFrame::default(),
+        };
+    }
+    let (render_w, render_h) = (size.0 * supersampling, size.1 * supersampling);
+    let rendered = render_frame_at(
+        view,
+        render_w as u32,
+        render_h as u32,
+        sampling,
+        framebuffer,
+    );
+    PicturePass {
+        linear: resample_linear(framebuffer, size.0, size.1),
+        size,
+        rendered,
+    }
+}
+
 /// The cells showing `linear`, a picture of `size` sub-pixels.
 pub fn encode_cells(linear: &[Vec3], size: (usize, usize), options: EncodeOptions) -> CellGrid {
     let pixels = to_srgb8(linear);

@@ -4,6 +4,7 @@
 
 use super::app::App;
 use super::help::{draw_diagnostic, draw_help};
+use super::pixel_picture::{FALLBACK_CELL_PIXELS, PixelPicture};
 use super::refinement::Accumulation;
 use super::render::{
     CellShape, DEFAULT_CELL_ASPECT, Sampling, View, empty_framebuffer, encode_cells,
@@ -12,7 +13,8 @@ use super::render::{
 use super::status::status_line;
 use super::view_mode::ViewMode;
 use crate::raster::Framebuffer;
-use crate::term::{CellGrid, Color, ColorMode, EncodeOptions, FrameWriter};
+use crate::term::graphics::Protocol;
+use crate::term::{Cell, CellGrid, Color, ColorMode, EncodeOptions, FrameWriter};
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::Style;
@@ -54,6 +56,12 @@ pub struct Screen {
     accumulation: Accumulation,
     /// Cell height / width as the terminal draws them.
     cell_aspect: f32,
+    /// The picture in pixels, when the app shows one.
+    pixels: Option<PixelPicture>,
+    /// How pixels reach this terminal: through tmux or not, and a cell's size in pixels.
+    pixel_route: (bool, (u32, u32)),
+    /// The picture rows of the grid last drawn over a pixel picture: the text over it.
+    text_over_pixels: Vec<Cell>,
 }
 
 impl Screen {
@@ -65,7 +73,41 @@ impl Screen {
             framebuffer: empty_framebuffer(),
             accumulation: Accumulation::default(),
             cell_aspect: DEFAULT_CELL_ASPECT,
+            pixels: None,
+            pixel_route: (false, FALLBACK_CELL_PIXELS),
+            text_over_pixels: Vec::new(),
         }
+    }
+
+    /// How pixel pictures reach the terminal: through tmux's passthrough or not, and a cell's
+    /// size in pixels.
+    pub fn set_pixel_route(&mut self, through_tmux: bool, cell_pixels: (u32, u32), app: &mut App) {
+        if (through_tmux, cell_pixels) != self.pixel_route {
+            self.pixel_route = (through_tmux, cell_pixels);
+            self.pixels = None;
+            app.invalidate();
+        }
+    }
+
+    /// Follows the app's choice of picture: a pixel protocol or cells. Leaving kitty's pixels
+    /// deletes its image. Returns the bytes written.
+    fn follow_graphics(&mut self, app: &mut App, out: &mut impl Write) -> io::Result<usize> {
+        if self.pixels.as_ref().map(|p| p.protocol) == app.graphics {
+            return Ok(0);
+        }
+        let removal = self.pixels.take().map(|p| p.removal()).unwrap_or_default();
+        crate::term::graphics::kitty::note_image(None);
+        out.write_all(&removal)?;
+        out.flush()?;
+        if let Some(protocol) = app.graphics {
+            let (through_tmux, cell_pixels) = self.pixel_route;
+            self.pixels = Some(PixelPicture::new(protocol, through_tmux, cell_pixels));
+            self.picture =
+                CellGrid::new(self.layout.cols as usize, self.layout.picture_rows as usize);
+        }
+        self.writer.invalidate();
+        app.invalidate();
+        Ok(removal.len())
     }
 
     /// How tall the terminal's cells are for their width; a change redraws the picture.
@@ -88,26 +130,35 @@ impl Screen {
     /// A new terminal size: everything is drawn again in full.
     pub fn resize(&mut self, cols: u16, rows: u16, app: &mut App) {
         self.layout = Layout::new(cols, rows);
-        self.writer.invalidate();
-        app.invalidate();
+        self.invalidate(app);
     }
 
     /// Forgets what the terminal shows, so the next frame is drawn in full.
     pub fn invalidate(&mut self, app: &mut App) {
         self.writer.invalidate();
+        if let Some(pixels) = &mut self.pixels {
+            pixels.on_screen = false;
+        }
         app.invalidate();
     }
 
     /// Draws what `app` marked as changed; returns the bytes written (0 when nothing changed).
     pub fn draw(&mut self, app: &mut App, out: &mut impl Write) -> io::Result<usize> {
+        let switched = self.follow_graphics(app, out)?;
         if !(app.dirty.picture || app.dirty.text) {
-            return Ok(0);
+            return Ok(switched);
         }
         if app.dirty.picture {
             let start = Instant::now();
-            self.render_picture(app);
+            match self.pixels.is_some() {
+                true => self.render_pixels(app),
+                false => self.render_picture(app),
+            }
             // Before the status line is composed, so the first frame reports its own cost.
             app.report.render_time = start.elapsed();
+        }
+        if self.pixels.is_some() {
+            return self.draw_over_pixels(app, out);
         }
         let grid = self.compose(app);
         let result = self.writer.draw(out, &grid);
@@ -123,9 +174,11 @@ impl Screen {
     /// since it was started, and its mode is one the passes average (the wireframe and the error
     /// view are drawn over a single pass).
     pub fn refining(&self, app: &App) -> bool {
-        !app.dirty.picture
-            && self.accumulation.wants_more()
-            && !matches!(app.view_mode, ViewMode::Wireframe | ViewMode::Error)
+        let wants_more = match &self.pixels {
+            Some(pixels) => pixels.refining(),
+            None => self.accumulation.wants_more(),
+        };
+        !app.dirty.picture && wants_more && refines(app.view_mode)
     }
 
     /// Renders one more pass into the picture and draws the cells it changed; returns the bytes
@@ -133,6 +186,9 @@ impl Screen {
     pub fn refine(&mut self, app: &mut App, out: &mut impl Write) -> io::Result<usize> {
         if !self.refining(app) {
             return Ok(0);
+        }
+        if self.pixels.is_some() {
+            return self.refine_pixels(app, out);
         }
         let sampling = Sampling {
             offset: self.accumulation.next_offset(),
@@ -155,6 +211,84 @@ impl Screen {
         app.report.passes = self.accumulation.passes();
         let grid = self.compose(app);
         self.writer.draw(out, &grid)
+    }
+
+    /// The cells the picture covers, across and down.
+    fn picture_cells(&self) -> (u16, u16) {
+        (self.layout.cols, self.layout.picture_rows)
+    }
+
+    fn render_pixels(&mut self, app: &mut App) {
+        let cells = self.picture_cells();
+        self.picture = CellGrid::new(cells.0 as usize, cells.1 as usize);
+        let supersampling = super::quality::terminal_supersampling(&app.quality_in_use);
+        let pixels = self.pixels.as_mut().expect("in pixel mode");
+        let view = View::of(app);
+        let refined = refines(app.view_mode);
+        let pass = pixels.first(&view, cells, supersampling, refined, &mut self.framebuffer);
+        app.report.stats = pass.rendered.stats;
+        app.report.psnr_db = pass.rendered.psnr_db;
+        app.report.passes = pixels.passes();
+    }
+
+    fn refine_pixels(&mut self, app: &mut App, out: &mut impl Write) -> io::Result<usize> {
+        let cells = self.picture_cells();
+        let supersampling = super::quality::terminal_supersampling(&app.quality_in_use);
+        let pixels = self.pixels.as_mut().expect("in pixel mode");
+        let ready = pixels.refine(&View::of(app), cells, supersampling, &mut self.framebuffer);
+        app.report.passes = pixels.passes();
+        match ready {
+            true => self.draw_over_pixels(app, out),
+            false => Ok(0),
+        }
+    }
+
+    /// Draws the text of the screen over the pixel picture, sending the picture first when the
+    /// terminal does not show it yet, or shows it under text that has changed (sixel and iTerm2
+    /// pictures live in the cells, so text drawn over them takes their place).
+    fn draw_over_pixels(&mut self, app: &mut App, out: &mut impl Write) -> io::Result<usize> {
+        let pixels = self.pixels.as_ref().expect("in pixel mode");
+        let send = !pixels.on_screen;
+        let grid_now = |screen: &Screen, app: &App| screen.compose(app);
+        let grid = grid_now(self, app);
+        let picture_cells = self.layout.cols as usize * self.layout.picture_rows as usize;
+        let over: Vec<Cell> = (0..self.layout.picture_rows as usize)
+            .flat_map(|row| grid.row(row).iter().copied())
+            .collect();
+        let text_moved = over != self.text_over_pixels && pixels.protocol != Protocol::Kitty;
+        let result = if send || text_moved {
+            app.report.picture_bytes = pixels.image().len();
+            let under = self.compose_under(app);
+            let written = self.writer.draw_around(out, &under, pixels.image(), &grid);
+            if pixels.protocol == Protocol::Kitty {
+                crate::term::graphics::kitty::note_image(Some(self.pixel_route.0));
+            }
+            self.pixels.as_mut().expect("in pixel mode").on_screen = written.is_ok();
+            written
+        } else {
+            self.writer.draw(out, &grid)
+        };
+        debug_assert_eq!(over.len(), picture_cells);
+        self.text_over_pixels = over;
+        app.mark_drawn();
+        let bytes = result?;
+        if bytes > 0 {
+            app.report.bytes = bytes;
+        }
+        Ok(bytes)
+    }
+
+    /// The screen as `compose` makes it without the overlays over the picture: blank cells
+    /// where the picture goes, and the status line.
+    fn compose_under(&self, app: &App) -> CellGrid {
+        let mut under = self.compose(app);
+        let blank = Cell::solid(Color::Default);
+        for row in 0..self.layout.picture_rows as usize {
+            for col in 0..self.layout.cols as usize {
+                under.set(col, row, blank);
+            }
+        }
+        under
     }
 
     fn render_picture(&mut self, app: &mut App) {
@@ -212,6 +346,12 @@ impl Screen {
         }
         to_cells(&buffer)
     }
+}
+
+/// Whether a view mode's picture gains from further passes (the wireframe and the error view
+/// are drawn over a single pass).
+fn refines(mode: ViewMode) -> bool {
+    !matches!(mode, ViewMode::Wireframe | ViewMode::Error)
 }
 
 /// Light text on dark grey, in colours every mode has; none at all without colour.

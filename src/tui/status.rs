@@ -60,7 +60,7 @@ fn segments(app: &App) -> Vec<Segment> {
             format!(
                 "{} {} {}",
                 app.quality.name(),
-                glyphs_name(app.glyphs),
+                picture_name(app),
                 colors_name(app.colors)
             ),
         ),
@@ -75,7 +75,12 @@ fn segments(app: &App) -> Vec<Segment> {
         ),
     ];
     // The bytes of a frame are known once it is written: none yet on the first.
-    if report.bytes > 0 {
+    if app.graphics.is_some() && report.picture_bytes > 0 {
+        list.push(segment(
+            3,
+            format!("picture {} B", si(report.picture_bytes)),
+        ));
+    } else if report.bytes > 0 {
         list.push(segment(4, format!("{} B", si(report.bytes))));
     }
     if let Some(db) = report.psnr_db {
@@ -188,6 +193,14 @@ fn si(n: usize) -> String {
         0..1_000 => n.to_string(),
         1_000..1_000_000 => format!("{:.1}k", n as f64 / 1e3),
         _ => format!("{:.1}M", n as f64 / 1e6),
+    }
+}
+
+/// The picture's kind: the pixel protocol, or the glyph set.
+fn picture_name(app: &App) -> &'static str {
+    match app.graphics {
+        Some(protocol) => protocol.name(),
+        None => glyphs_name(app.glyphs),
     }
 }
 

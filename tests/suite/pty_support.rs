@@ -9,8 +9,13 @@ use std::time::{Duration, Instant};
 
 pub const DEADLINE: Duration = Duration::from_secs(90);
 
+/// Bytes of the program's output kept for `output` at most.
+const KEPT_OUTPUT: usize = 64 << 20;
+
 pub struct Session {
     pub screen: Arc<Mutex<vt100::Parser>>,
+    /// Everything the program wrote, as written.
+    raw: Arc<Mutex<Vec<u8>>>,
     writer: Box<dyn Write + Send>,
     pub child: Box<dyn Child + Send + Sync>,
     rows: u16,
@@ -53,13 +58,20 @@ impl Session {
         let screen = Arc::new(Mutex::new(vt100::Parser::new(size(rows), size(cols), 0)));
         let mut reader = pty.master.try_clone_reader().unwrap();
         let feed = Arc::clone(&screen);
+        let raw = Arc::new(Mutex::new(Vec::new()));
+        let keep = Arc::clone(&raw);
         std::thread::spawn(move || {
             let mut buffer = [0u8; 65536];
             while let Ok(n @ 1..) = reader.read(&mut buffer) {
                 feed.lock().unwrap().process(&buffer[..n]);
+                let mut kept = keep.lock().unwrap();
+                if kept.len() + n <= KEPT_OUTPUT {
+                    kept.extend_from_slice(&buffer[..n]);
+                }
             }
         });
         Session {
+            raw,
             screen,
             writer: pty.master.take_writer().unwrap(),
             child,
@@ -91,6 +103,11 @@ impl Session {
             }
             std::thread::sleep(Duration::from_millis(20));
         }
+    }
+
+    /// Everything the program has written so far.
+    pub fn output(&self) -> Vec<u8> {
+        self.raw.lock().unwrap().clone()
     }
 
     /// The screen's text now, a line a row.

@@ -1,0 +1,220 @@
+//! Real pixels: the workbench's kitty and sixel pictures decoded back to pixels and compared with
+//! what was rendered (kitty exactly, sixel within a PSNR bound) and with a still of the same view;
+//! detection answered in a pseudo-terminal, its replies never taken for keys.
+
+use crate::graphics_support::{Rgb, kitty_images, psnr, sixel_images};
+use crate::pty_support::{Session, status_contains};
+use bumpwork::term::ColorMode;
+use bumpwork::term::graphics::Protocol;
+use bumpwork::tui::{App, Screen, WorkbenchOptions};
+use std::time::Duration;
+
+const COLS: u16 = 60;
+const ROWS: u16 = 20;
+const CELL: (u32, u32) = (8, 16);
+/// The picture's pixels: the cells' pixels, the status line's row left to text.
+const PICTURE: (usize, usize) = (60 * 8, 19 * 16);
+
+fn app(scene: &str) -> App {
+    let options = WorkbenchOptions {
+        scenes: vec![scene.into()],
+        watch: false,
+        ..WorkbenchOptions::default()
+    };
+    App::new(&options, ColorMode::TrueColor).unwrap()
+}
+
+/// Everything a workbench in `protocol` writes until its picture has settled, in process.
+fn settled_output(scene: &str, protocol: Protocol) -> Vec<u8> {
+    let mut app = app(scene);
+    app.graphics = Some(protocol);
+    let mut screen = Screen::new(COLS, ROWS);
+    screen.set_pixel_route(false, CELL, &mut app);
+    let mut out = Vec::new();
+    screen.draw(&mut app, &mut out).unwrap();
+    while screen.refining(&app) {
+        screen.refine(&mut app, &mut out).unwrap();
+    }
+    out
+}
+
+/// A still of the scene's own view at the picture's size, 64 samples box-filtered.
+fn still(scene: &str) -> Vec<u8> {
+    let dir = crate::cli_support::temp_dir("graphics-still");
+    let path = dir.join("still.png");
+    let size = format!("{}x{}", PICTURE.0, PICTURE.1);
+    let output = crate::cli_support::bumpwork(&[
+        "render",
+        scene,
+        "--size",
+        &size,
+        "--samples",
+        "64",
+        "--filter",
+        "box",
+        "-o",
+        path.to_str().unwrap(),
+    ]);
+    assert!(
+        output.status.success(),
+        "{}",
+        crate::cli_support::stderr(&output)
+    );
+    crate::cli_support::decode_png(&path).2
+}
+
+#[test]
+fn kitty_sends_a_scaled_preview_then_the_settled_picture_exactly_as_rendered() {
+    let out = settled_output("sphere-on-plane-dimples", Protocol::Kitty);
+    let images = kitty_images(&out);
+    assert_eq!(images.len(), 2, "a preview and the settled picture");
+    assert_eq!(
+        (images[0].width, images[0].height),
+        (PICTURE.0 / 2, PICTURE.1 / 2)
+    );
+    let settled = &images[1];
+    assert_eq!((settled.width, settled.height), PICTURE);
+    let db = psnr(&still("sphere-on-plane-dimples"), &settled.pixels);
+    assert!(
+        db >= 40.0,
+        "the settled kitty picture is {db:.1} dB from the still"
+    );
+    // Each chunk is at most 4096 bytes (checked while decoding) and the image id is one.
+    let text = String::from_utf8_lossy(&out);
+    assert!(text.matches("a=T").all(|_| true) && text.matches("i=31").count() == 2);
+}
+
+#[test]
+fn sixel_dithers_onto_256_colours_within_its_bound() {
+    let scene = "sphere-on-plane-dimples";
+    let kitty = kitty_images(&settled_output(scene, Protocol::Kitty))
+        .pop()
+        .unwrap();
+    let out = settled_output(scene, Protocol::Sixel);
+    let images = sixel_images(&out);
+    assert_eq!(
+        images.len(),
+        2,
+        "one pass at full size, then the settled picture"
+    );
+    let settled: &Rgb = &images[1];
+    assert_eq!((settled.width, settled.height), PICTURE);
+    let db = psnr(&kitty.pixels, &settled.pixels);
+    assert!(db >= 30.0, "sixel is {db:.1} dB from the exact picture");
+    let registers = String::from_utf8_lossy(&out).matches(";2;").count();
+    assert!(
+        registers <= 2 * 256,
+        "{registers} colour registers in two images"
+    );
+    let still_db = psnr(&still(scene), &settled.pixels);
+    assert!(still_db >= 30.0, "sixel is {still_db:.1} dB from the still");
+}
+
+#[test]
+fn an_idle_pixel_picture_sends_nothing_and_leaving_kitty_deletes_its_image() {
+    let mut app = app("plane-dimples");
+    app.graphics = Some(Protocol::Kitty);
+    let mut screen = Screen::new(COLS, ROWS);
+    screen.set_pixel_route(false, CELL, &mut app);
+    let mut out = Vec::new();
+    screen.draw(&mut app, &mut out).unwrap();
+    while screen.refining(&app) {
+        screen.refine(&mut app, &mut out).unwrap();
+    }
+    let mut idle = Vec::new();
+    screen.draw(&mut app, &mut idle).unwrap();
+    screen.refine(&mut app, &mut idle).unwrap();
+    assert!(idle.is_empty(), "an idle screen wrote {} bytes", idle.len());
+    app.graphics = None;
+    let mut blocks = Vec::new();
+    screen.draw(&mut app, &mut blocks).unwrap();
+    let text = String::from_utf8_lossy(&blocks);
+    assert!(
+        text.starts_with("\x1b_Ga=d,d=I,i=31"),
+        "{:?}",
+        &text[..40.min(text.len())]
+    );
+    assert!(text.contains('▀'), "then the picture in blocks");
+}
+
+/// The workbench in a pseudo-terminal that answers the graphics queries as `replies`.
+fn answered_session(args: &[&str], replies: &[u8]) -> Session {
+    let mut command = portable_pty::CommandBuilder::new(env!("CARGO_BIN_EXE_bumpwork"));
+    command.args(args);
+    command.env("TERM", "xterm-256color");
+    command.env_remove("TMUX");
+    let mut session = Session::spawn(command, COLS, ROWS);
+    let asked = std::time::Instant::now();
+    while !String::from_utf8_lossy(&session.output()).contains("\x1b[c") {
+        assert!(
+            asked.elapsed() < Duration::from_secs(30),
+            "no graphics query"
+        );
+        std::thread::sleep(Duration::from_millis(5));
+    }
+    session.send(&String::from_utf8_lossy(replies));
+    session
+}
+
+#[test]
+fn auto_takes_the_terminals_answer_and_its_replies_never_reach_the_keys() {
+    let kitty_reply = b"\x1b_Gi=32;OK\x1b\\\x1b[6;16;8t\x1b[?62;4;22c";
+    let mut session = answered_session(&["view", "plane-dimples"], kitty_reply);
+    session.wait_for("kitty chosen", status_contains("kitty"));
+    session.wait_for("the settled picture", |_| {
+        kitty_images(&session.output()).len() >= 2
+    });
+    let images = kitty_images(&session.output());
+    let settled = images.last().unwrap();
+    assert_eq!(
+        (settled.width, settled.height),
+        PICTURE,
+        "the reported cell size"
+    );
+    assert_eq!(
+        settled,
+        kitty_images(&settled_output("plane-dimples", Protocol::Kitty))
+            .last()
+            .unwrap()
+    );
+    // The reply's escape characters were not taken for Esc (which quits).
+    assert_eq!(session.exit_within(Duration::from_millis(300)), None);
+    let sixel_reply = b"\x1b[?62;4c";
+    let mut session = answered_session(&["view", "plane-dimples"], sixel_reply);
+    session.wait_for("sixel chosen", status_contains("sixel"));
+    session.send("q");
+    assert_eq!(session.exit_within(Duration::from_secs(5)), Some(0));
+    let plain = b"\x1b[?1;2c";
+    let mut session = answered_session(&["view", "plane-dimples"], plain);
+    session.wait_for("blocks", status_contains("blocks (the terminal answered"));
+    session.send("q");
+    assert_eq!(session.exit_within(Duration::from_secs(5)), Some(0));
+}
+
+#[test]
+fn a_kitty_session_deletes_its_image_when_it_quits() {
+    let mut session = answered_session(
+        &[
+            "view",
+            "plane-dimples",
+            "--graphics",
+            "kitty",
+            "--cell-size",
+            "8x16",
+        ],
+        b"\x1b[?62c",
+    );
+    session.wait_for("a picture", |_| !kitty_images(&session.output()).is_empty());
+    session.send("q");
+    assert_eq!(session.exit_within(Duration::from_secs(5)), Some(0));
+    let output = session.output();
+    let text = String::from_utf8_lossy(&output);
+    let deleted = text.rfind("\x1b_Ga=d,d=I,i=31").expect("the image deleted");
+    let left = text
+        .rfind("\x1b[?1049l")
+        .expect("the alternate screen left");
+    assert!(
+        deleted < left,
+        "deleted before leaving the alternate screen"
+    );
+}
