@@ -37,6 +37,7 @@ mod raster_extremes;
 mod raster_perspective;
 mod raster_reuse;
 mod raster_watertight;
+mod real_terminals;
 mod reference_accuracy;
 mod reference_extremes;
 mod reference_properties;

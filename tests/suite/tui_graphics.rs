@@ -75,13 +75,19 @@ fn kitty_sends_a_scaled_preview_then_the_settled_picture_exactly_as_rendered() {
     let settled = &images[1];
     assert_eq!((settled.width, settled.height), PICTURE);
     let db = psnr(&still("sphere-on-plane-dimples"), &settled.pixels);
+    eprintln!("kitty: {db:.1} dB against the still");
     assert!(
         db >= 40.0,
         "the settled kitty picture is {db:.1} dB from the still"
     );
     // Each chunk is at most 4096 bytes (checked while decoding) and the image id is one.
     let text = String::from_utf8_lossy(&out);
-    assert!(text.matches("a=T").all(|_| true) && text.matches("i=31").count() == 2);
+    assert_eq!(text.matches("a=T,").count(), 2, "two transmissions");
+    assert_eq!(
+        text.matches(",i=31,").count(),
+        2,
+        "both under the one image id"
+    );
 }
 
 #[test]
@@ -107,6 +113,7 @@ fn sixel_dithers_onto_256_colours_within_its_bound() {
         "{registers} colour registers in two images"
     );
     let still_db = psnr(&still(scene), &settled.pixels);
+    eprintln!("sixel: {db:.1} dB against the exact picture, {still_db:.1} dB against the still");
     assert!(still_db >= 30.0, "sixel is {still_db:.1} dB from the still");
 }
 
@@ -200,11 +207,18 @@ fn a_kitty_session_deletes_its_image_when_it_quits() {
             "--graphics",
             "kitty",
             "--cell-size",
-            "8x16",
+            "10x20",
         ],
         b"\x1b[?62c",
     );
     session.wait_for("a picture", |_| !kitty_images(&session.output()).is_empty());
+    let first = kitty_images(&session.output()).remove(0);
+    let scaled = first.width == 60 * 10 / 2 && first.height == 19 * 20 / 2;
+    assert!(
+        scaled,
+        "--cell-size 10x20: half of 600x380, not {}x{}",
+        first.width, first.height
+    );
     session.send("q");
     assert_eq!(session.exit_within(Duration::from_secs(5)), Some(0));
     let output = session.output();
@@ -216,5 +230,43 @@ fn a_kitty_session_deletes_its_image_when_it_quits() {
     assert!(
         deleted < left,
         "deleted before leaving the alternate screen"
+    );
+}
+
+#[test]
+fn iterm2_sends_the_same_pixels_as_a_png_and_tmux_passes_sequences_through() {
+    use base64::Engine;
+    let exact = kitty_images(&settled_output("plane-dimples", Protocol::Kitty))
+        .pop()
+        .unwrap();
+    let out = settled_output("plane-dimples", Protocol::Iterm2);
+    let text = String::from_utf8_lossy(&out);
+    let last = text.rsplit("\x1b]1337;File=").next().unwrap();
+    let (keys, rest) = last.split_once(':').unwrap();
+    assert!(
+        keys.contains("inline=1") && keys.contains(&format!("width={COLS}")),
+        "{keys}"
+    );
+    let payload = rest.split('\x07').next().unwrap();
+    let png = base64::engine::general_purpose::STANDARD
+        .decode(payload)
+        .unwrap();
+    let (width, height, pixels) = crate::cli_support::decode_png_bytes(&png);
+    assert_eq!((width as usize, height as usize), PICTURE);
+    assert_eq!(pixels, exact.pixels, "iTerm2's PNG holds the exact picture");
+    // Through tmux: each kitty sequence wrapped, its escapes doubled, the picture the same.
+    let mut app = app("plane-dimples");
+    app.graphics = Some(Protocol::Kitty);
+    let mut screen = Screen::new(COLS, ROWS);
+    screen.set_pixel_route(true, CELL, &mut app);
+    let mut wrapped = Vec::new();
+    screen.draw(&mut app, &mut wrapped).unwrap();
+    let text = String::from_utf8_lossy(&wrapped);
+    assert!(text.contains("\x1bPtmux;\x1b\x1b_Ga=T"), "wrapped for tmux");
+    let unwrapped = text.replace("\x1bPtmux;", "").replace("\x1b\x1b", "\x1b");
+    let images = kitty_images(unwrapped.as_bytes());
+    assert_eq!(
+        (images[0].width, images[0].height),
+        (PICTURE.0 / 2, PICTURE.1 / 2)
     );
 }

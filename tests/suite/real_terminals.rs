@@ -1,0 +1,185 @@
+//! The workbench in real terminals under Xvfb: kitty (its graphics protocol) and xterm as a
+//! VT340 (sixel), each screenshot with xwd; the picture found on the screen is compared with a
+//! still of the same view. tmux without passthrough gets blocks and says why. Skipped, with the
+//! reason printed, where the programs are missing (`.ci/run` installs them).
+
+use crate::graphics_support::psnr;
+use crate::tmux_support::{Tmux, missing};
+use std::path::Path;
+use std::process::Command;
+
+const COLS: usize = 100;
+const ROWS: usize = 30;
+const SCENE: &str = "sphere-on-plane-dimples";
+
+/// A screenshot: width, height and RGB.
+struct Shot {
+    width: usize,
+    height: usize,
+    rgb: Vec<u8>,
+}
+
+/// Reads an xwd dump (ZPixmap, 24 or 32 bits a pixel, as Xvfb makes them).
+fn read_xwd(bytes: &[u8]) -> Shot {
+    let field = |i: usize| u32::from_be_bytes(bytes[i * 4..i * 4 + 4].try_into().unwrap()) as usize;
+    let (header, width, height) = (field(0), field(4), field(5));
+    let (bits_per_pixel, bytes_per_line, colours) = (field(11), field(12), field(19));
+    let little_endian = field(7) == 0;
+    let start = header + colours * 12;
+    let step = bits_per_pixel / 8;
+    let mut rgb = Vec::with_capacity(width * height * 3);
+    for y in 0..height {
+        for x in 0..width {
+            let at = start + y * bytes_per_line + x * step;
+            let px = &bytes[at..at + step];
+            let (r, g, b) = match little_endian {
+                true => (px[2], px[1], px[0]),
+                false => (px[step - 3], px[step - 2], px[step - 1]),
+            };
+            rgb.extend_from_slice(&[r, g, b]);
+        }
+    }
+    Shot { width, height, rgb }
+}
+
+impl Shot {
+    /// The terminal window: the box of every pixel that is not the root window's black.
+    fn window(&self) -> (usize, usize) {
+        let lit = |x: usize, y: usize| {
+            let at = (y * self.width + x) * 3;
+            self.rgb[at..at + 3] != [0, 0, 0]
+        };
+        let right = (0..self.width)
+            .rev()
+            .find(|&x| (0..self.height).any(|y| lit(x, y)));
+        let bottom = (0..self.height)
+            .rev()
+            .find(|&y| (0..self.width).any(|x| lit(x, y)));
+        (right.map_or(0, |x| x + 1), bottom.map_or(0, |y| y + 1))
+    }
+
+    fn crop(&self, width: usize, height: usize) -> Vec<u8> {
+        (0..height)
+            .flat_map(|y| self.rgb[y * self.width * 3..(y * self.width + width) * 3].to_vec())
+            .collect()
+    }
+}
+
+/// Runs `terminal` (a shell command that starts the workbench in a window at the top left)
+/// under Xvfb, waits `seconds` for the picture to settle and takes a screenshot.
+fn screenshot(terminal: &str, seconds: u32, dir: &Path) -> Shot {
+    let shot = dir.join("shot.xwd");
+    let script = format!(
+        "{terminal} & sleep {seconds}; xwd -root -silent > {}; kill $! 2>/dev/null; wait",
+        shot.display()
+    );
+    let output = Command::new("timeout")
+        .args([
+            "120",
+            "xvfb-run",
+            "-a",
+            "-s",
+            "-screen 0 1280x800x24",
+            "sh",
+            "-c",
+            &script,
+        ])
+        .env("LIBGL_ALWAYS_SOFTWARE", "1")
+        .env_remove("TMUX")
+        .output()
+        .unwrap();
+    let bytes = std::fs::read(&shot).unwrap_or_else(|e| {
+        panic!(
+            "no screenshot ({e}): {}",
+            String::from_utf8_lossy(&output.stderr)
+        )
+    });
+    read_xwd(&bytes)
+}
+
+/// The picture on `shot` (all rows of the window but the status line's) against a still of
+/// the same view at its size: PSNR in dB.
+fn picture_against_still(shot: &Shot, dir: &Path) -> f64 {
+    let (width, height) = shot.window();
+    assert!(
+        width >= COLS && height >= ROWS,
+        "a window of {width}x{height}"
+    );
+    let (cell_w, cell_h) = (width / COLS, height / ROWS);
+    let picture = (COLS * cell_w, (ROWS - 1) * cell_h);
+    let still = dir.join("still.png");
+    let size = format!("{}x{}", picture.0, picture.1);
+    let output = crate::cli_support::bumpwork(&[
+        "render",
+        SCENE,
+        "--size",
+        &size,
+        "--samples",
+        "64",
+        "--filter",
+        "box",
+        "-o",
+        still.to_str().unwrap(),
+    ]);
+    assert!(output.status.success());
+    let expected = crate::cli_support::decode_png(&still).2;
+    psnr(&expected, &shot.crop(picture.0, picture.1))
+}
+
+#[test]
+fn kitty_shows_the_picture_in_its_own_pixels() {
+    if let Some(reason) = missing(&["xvfb-run", "kitty", "xwd"]) {
+        eprintln!("skipped: {reason}");
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let kitty = format!(
+        "kitty --config NONE -o font_size=10 -o remember_window_size=no \
+         -o initial_window_width={COLS}c -o initial_window_height={ROWS}c \
+         -o window_padding_width=0 -o placement_strategy=top-left -o enable_audio_bell=no \
+         {} view {SCENE}",
+        env!("CARGO_BIN_EXE_bumpwork")
+    );
+    let shot = screenshot(&kitty, 8, dir.path());
+    let db = picture_against_still(&shot, dir.path());
+    eprintln!("kitty: {db:.1} dB against the still");
+    assert!(db >= 40.0, "kitty's picture is {db:.1} dB from the still");
+}
+
+#[test]
+fn xterm_as_a_vt340_shows_the_picture_in_sixels() {
+    if let Some(reason) = missing(&["xvfb-run", "xterm", "xwd"]) {
+        eprintln!("skipped: {reason}");
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let xterm = format!(
+        "xterm -ti vt340 -xrm 'XTerm*numColorRegisters: 256' -geometry {COLS}x{ROWS}+0+0 \
+         -bw 0 -b 0 -fa Monospace -fs 10 -e {} view {SCENE}",
+        env!("CARGO_BIN_EXE_bumpwork")
+    );
+    let shot = screenshot(&xterm, 8, dir.path());
+    let db = picture_against_still(&shot, dir.path());
+    eprintln!("xterm sixel: {db:.1} dB against the still");
+    assert!(
+        db >= 30.0,
+        "xterm's sixel picture is {db:.1} dB from the still"
+    );
+}
+
+#[test]
+fn tmux_without_passthrough_gets_blocks_and_says_why() {
+    if let Some(reason) = missing(&["tmux"]) {
+        eprintln!("skipped: {reason}");
+        return;
+    }
+    let command = format!("{} view {SCENE}", env!("CARGO_BIN_EXE_bumpwork"));
+    let tmux = Tmux::start("graphics", 160, 30, &command);
+    tmux.run(&["set-option", "-g", "allow-passthrough", "off"]);
+    let screen = tmux.wait_for("the first frame", |s| s.contains("blocks"));
+    assert!(
+        screen.contains("blocks (inside tmux without allow-passthrough"),
+        "{screen}"
+    );
+    assert!(screen.contains('▀'), "the picture in half blocks");
+}
