@@ -170,7 +170,7 @@ pub const BINDINGS: &[Binding] = &[
     ),
     bind(
         "g",
-        "glyphs: half / quadrant / sextant",
+        "picture: half / quadrant / sextant blocks, then pixels",
         &[Char('g')],
         Action::NextGlyphs,
     ),
