@@ -8,7 +8,7 @@ use base64::Engine;
 use bumpwork::measure::Timing;
 use bumpwork::term::ColorMode;
 use bumpwork::term::graphics::Protocol;
-use bumpwork::tui::{Action, App, Screen, WorkbenchOptions};
+use bumpwork::tui::{Action, App, PixelRoute, Screen, WorkbenchOptions};
 use std::io::Read;
 use std::process::Command;
 
@@ -29,7 +29,7 @@ fn app(protocol: Protocol) -> (App, Screen) {
     let mut app = App::new(&options, ColorMode::TrueColor).expect("built-in scene");
     app.graphics = Some(protocol);
     let mut screen = Screen::new(COLS, ROWS);
-    screen.set_pixel_route(false, CELL, &mut app);
+    screen.set_pixel_route(route(false), &mut app);
     (app, screen)
 }
 
@@ -207,4 +207,13 @@ fn pixels_of(size: &str) -> f64 {
         .split('x')
         .map(|s| s.parse::<f64>().unwrap_or(f64::NAN));
     sides.next().unwrap_or(f64::NAN) * sides.next().unwrap_or(f64::NAN)
+}
+
+/// Pixels of `CELL` a cell, through tmux or not.
+fn route(through_tmux: bool) -> PixelRoute {
+    PixelRoute {
+        through_tmux,
+        cell_pixels: CELL,
+        sixel_limit: None,
+    }
 }

@@ -4,6 +4,7 @@
 use super::app::{App, Message};
 use super::input::{Input, InputState};
 use super::options::WorkbenchOptions;
+use super::pixel_picture::PixelRoute;
 use super::render::DEFAULT_CELL_ASPECT;
 use super::screen::Screen;
 use super::status::colors_name;
@@ -61,6 +62,7 @@ pub fn run(options: &WorkbenchOptions) -> Result<(), Error> {
     let route = PixelRoute {
         through_tmux: found.through_tmux,
         cell_pixels: cell_pixels(options.cell_size, found.cell_pixels),
+        sixel_limit: found.sixel_limit,
     };
     let result = event_loop(&mut app, &signals, options.mouse, route);
     drop(guard);
@@ -82,13 +84,6 @@ pub fn run(options: &WorkbenchOptions) -> Result<(), Error> {
     result.map_err(terminal_error)
 }
 
-/// How pixel pictures reach the terminal.
-#[derive(Clone, Copy)]
-struct PixelRoute {
-    through_tmux: bool,
-    cell_pixels: (u32, u32),
-}
-
 fn event_loop(
     app: &mut App,
     signals: &ShutdownSignals,
@@ -105,7 +100,7 @@ fn event_loop(
     let (cols, rows) = crossterm::terminal::size()?;
     let mut screen = Screen::new(cols, rows);
     screen.set_cell_aspect(cell_aspect(app.cell_size), app);
-    screen.set_pixel_route(route.through_tmux, route.cell_pixels, app);
+    screen.set_pixel_route(route, app);
     let mut input = InputState::default();
     let mut last_frame = Instant::now();
     while !app.quit && signals.received().is_none() {

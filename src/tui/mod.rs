@@ -35,6 +35,7 @@ pub use app::{App, Dirty, FrameReport, INFO_LIFETIME, Message};
 pub use event_loop::run;
 pub use options::WorkbenchOptions;
 pub use orbit::Orbit;
+pub use pixel_picture::PixelRoute;
 pub use quality::{MAX_TERMINAL_SAMPLES, QualityPreset};
 pub use refinement::{Accumulation, MAX_PASSES};
 pub use render::{

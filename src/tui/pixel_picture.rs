@@ -12,11 +12,30 @@ use crate::term::graphics::{Protocol, tmux_passthrough};
 /// A cell's pixels when the terminal tells nothing and `--cell-size` is not given.
 pub const FALLBACK_CELL_PIXELS: (u32, u32) = (10, 20);
 
+/// How pixel pictures reach a terminal.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PixelRoute {
+    /// Sequences go through tmux's passthrough.
+    pub through_tmux: bool,
+    /// A cell's width and height in pixels.
+    pub cell_pixels: (u32, u32),
+    /// The largest sixel picture the terminal takes (XTSMGRAPHICS), if it said.
+    pub sixel_limit: Option<(u32, u32)>,
+}
+
+impl Default for PixelRoute {
+    fn default() -> Self {
+        PixelRoute {
+            through_tmux: false,
+            cell_pixels: FALLBACK_CELL_PIXELS,
+            sixel_limit: None,
+        }
+    }
+}
+
 pub struct PixelPicture {
     pub protocol: Protocol,
-    /// Sequences go through tmux's passthrough.
-    through_tmux: bool,
-    pub cell_pixels: (u32, u32),
+    route: PixelRoute,
     accumulation: Accumulation,
     /// The sequences of the picture last made, to send again when the terminal lost it.
     image: Vec<u8>,
@@ -25,21 +44,27 @@ pub struct PixelPicture {
 }
 
 impl PixelPicture {
-    pub fn new(protocol: Protocol, through_tmux: bool, cell_pixels: (u32, u32)) -> PixelPicture {
+    pub fn new(protocol: Protocol, route: PixelRoute) -> PixelPicture {
         PixelPicture {
             protocol,
-            through_tmux,
-            cell_pixels,
+            route,
             accumulation: Accumulation::default(),
             image: Vec::new(),
             on_screen: false,
         }
     }
 
-    /// The picture's pixels over `cells`: exactly the cells' pixels.
+    /// The picture's pixels over `cells`: exactly the cells' pixels (for sixel, no more than
+    /// the terminal takes).
     pub fn size(&self, (cols, rows): (u16, u16)) -> (usize, usize) {
-        let (w, h) = self.cell_pixels;
-        (cols as usize * w as usize, rows as usize * h as usize)
+        let (w, h) = self.route.cell_pixels;
+        let size = (cols as usize * w as usize, rows as usize * h as usize);
+        match (self.protocol, self.route.sixel_limit) {
+            (Protocol::Sixel, Some((max_w, max_h))) => {
+                (size.0.min(max_w as usize), size.1.min(max_h as usize))
+            }
+            _ => size,
+        }
     }
 
     /// The first picture after a change, made ready to send: half the size where the terminal
@@ -110,7 +135,7 @@ impl PixelPicture {
         let sequences = self.protocol.encode(&rgb, size, cells);
         self.image = b"\x1b[H".to_vec();
         for sequence in sequences {
-            match self.through_tmux && self.protocol != Protocol::Sixel {
+            match self.route.through_tmux && self.protocol != Protocol::Sixel {
                 true => self.image.extend(tmux_passthrough(&sequence)),
                 false => self.image.extend(sequence),
             }
@@ -126,10 +151,29 @@ impl PixelPicture {
     /// The sequence that takes the picture off the screen where text does not (kitty's images
     /// stay under the text until deleted); empty for the others.
     pub fn removal(&self) -> Vec<u8> {
-        match (self.protocol, self.through_tmux) {
+        match (self.protocol, self.route.through_tmux) {
             (Protocol::Kitty, false) => crate::term::graphics::kitty::delete(),
             (Protocol::Kitty, true) => tmux_passthrough(&crate::term::graphics::kitty::delete()),
             _ => Vec::new(),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_picture_has_the_cells_pixels_and_sixel_keeps_to_the_terminals_limit() {
+        let route = PixelRoute {
+            through_tmux: false,
+            cell_pixels: (10, 20),
+            sixel_limit: Some((800, 300)),
+        };
+        let kitty = PixelPicture::new(Protocol::Kitty, route);
+        assert_eq!(kitty.size((100, 29)), (1000, 580));
+        let sixel = PixelPicture::new(Protocol::Sixel, route);
+        assert_eq!(sixel.size((100, 29)), (800, 300));
+        assert_eq!(sixel.size((50, 10)), (500, 200));
     }
 }

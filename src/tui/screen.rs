@@ -4,7 +4,7 @@
 
 use super::app::App;
 use super::help::{draw_diagnostic, draw_help};
-use super::pixel_picture::{FALLBACK_CELL_PIXELS, PixelPicture};
+use super::pixel_picture::{PixelPicture, PixelRoute};
 use super::refinement::Accumulation;
 use super::render::{
     CellShape, DEFAULT_CELL_ASPECT, Sampling, View, empty_framebuffer, encode_cells,
@@ -58,8 +58,8 @@ pub struct Screen {
     cell_aspect: f32,
     /// The picture in pixels, when the app shows one.
     pixels: Option<PixelPicture>,
-    /// How pixels reach this terminal: through tmux or not, and a cell's size in pixels.
-    pixel_route: (bool, (u32, u32)),
+    /// How pixels reach this terminal.
+    pixel_route: PixelRoute,
     /// The picture rows of the grid last drawn over a pixel picture: the text over it.
     text_over_pixels: Vec<Cell>,
 }
@@ -74,16 +74,15 @@ impl Screen {
             accumulation: Accumulation::default(),
             cell_aspect: DEFAULT_CELL_ASPECT,
             pixels: None,
-            pixel_route: (false, FALLBACK_CELL_PIXELS),
+            pixel_route: PixelRoute::default(),
             text_over_pixels: Vec::new(),
         }
     }
 
-    /// How pixel pictures reach the terminal: through tmux's passthrough or not, and a cell's
-    /// size in pixels.
-    pub fn set_pixel_route(&mut self, through_tmux: bool, cell_pixels: (u32, u32), app: &mut App) {
-        if (through_tmux, cell_pixels) != self.pixel_route {
-            self.pixel_route = (through_tmux, cell_pixels);
+    /// How pixel pictures reach the terminal.
+    pub fn set_pixel_route(&mut self, route: PixelRoute, app: &mut App) {
+        if route != self.pixel_route {
+            self.pixel_route = route;
             self.pixels = None;
             app.invalidate();
         }
@@ -100,8 +99,7 @@ impl Screen {
         out.write_all(&removal)?;
         out.flush()?;
         if let Some(protocol) = app.graphics {
-            let (through_tmux, cell_pixels) = self.pixel_route;
-            self.pixels = Some(PixelPicture::new(protocol, through_tmux, cell_pixels));
+            self.pixels = Some(PixelPicture::new(protocol, self.pixel_route));
             self.picture =
                 CellGrid::new(self.layout.cols as usize, self.layout.picture_rows as usize);
         }
@@ -261,7 +259,7 @@ impl Screen {
             let under = self.compose_under(app);
             let written = self.writer.draw_around(out, &under, pixels.image(), &grid);
             if pixels.protocol == Protocol::Kitty {
-                crate::term::graphics::kitty::note_image(Some(self.pixel_route.0));
+                crate::term::graphics::kitty::note_image(Some(self.pixel_route.through_tmux));
             }
             self.pixels.as_mut().expect("in pixel mode").on_screen = written.is_ok();
             written

@@ -6,7 +6,7 @@ use crate::graphics_support::{Rgb, kitty_images, psnr, sixel_images};
 use crate::pty_support::{Session, status_contains};
 use bumpwork::term::ColorMode;
 use bumpwork::term::graphics::Protocol;
-use bumpwork::tui::{App, Screen, WorkbenchOptions};
+use bumpwork::tui::{App, PixelRoute, Screen, WorkbenchOptions};
 use std::time::Duration;
 
 const COLS: u16 = 60;
@@ -29,7 +29,7 @@ fn settled_output(scene: &str, protocol: Protocol) -> Vec<u8> {
     let mut app = app(scene);
     app.graphics = Some(protocol);
     let mut screen = Screen::new(COLS, ROWS);
-    screen.set_pixel_route(false, CELL, &mut app);
+    screen.set_pixel_route(route(false), &mut app);
     let mut out = Vec::new();
     screen.draw(&mut app, &mut out).unwrap();
     while screen.refining(&app) {
@@ -122,7 +122,7 @@ fn an_idle_pixel_picture_sends_nothing_and_leaving_kitty_deletes_its_image() {
     let mut app = app("plane-dimples");
     app.graphics = Some(Protocol::Kitty);
     let mut screen = Screen::new(COLS, ROWS);
-    screen.set_pixel_route(false, CELL, &mut app);
+    screen.set_pixel_route(route(false), &mut app);
     let mut out = Vec::new();
     screen.draw(&mut app, &mut out).unwrap();
     while screen.refining(&app) {
@@ -186,9 +186,25 @@ fn auto_takes_the_terminals_answer_and_its_replies_never_reach_the_keys() {
     );
     // The reply's escape characters were not taken for Esc (which quits).
     assert_eq!(session.exit_within(Duration::from_millis(300)), None);
-    let sixel_reply = b"\x1b[?62;4c";
+    let sixel_reply = b"\x1b[6;16;8t\x1b[?62;4c";
     let mut session = answered_session(&["view", "plane-dimples"], sixel_reply);
     session.wait_for("sixel chosen", status_contains("sixel"));
+    session.wait_for("the settled sixel picture", |_| {
+        sixel_images(&session.output()).len() >= 2
+    });
+    let in_process = sixel_images(&settled_output("plane-dimples", Protocol::Sixel));
+    let sent = sixel_images(&session.output());
+    assert_eq!(
+        sent.last(),
+        in_process.last(),
+        "the same sixels as rendered in process"
+    );
+    let exact = kitty_images(&settled_output("plane-dimples", Protocol::Kitty));
+    let db = psnr(&exact.last().unwrap().pixels, &sent.last().unwrap().pixels);
+    assert!(
+        db >= 30.0,
+        "the sixel picture sent is {db:.1} dB from the exact one"
+    );
     session.send("q");
     assert_eq!(session.exit_within(Duration::from_secs(5)), Some(0));
     let plain = b"\x1b[?1;2c";
@@ -258,7 +274,7 @@ fn iterm2_sends_the_same_pixels_as_a_png_and_tmux_passes_sequences_through() {
     let mut app = app("plane-dimples");
     app.graphics = Some(Protocol::Kitty);
     let mut screen = Screen::new(COLS, ROWS);
-    screen.set_pixel_route(true, CELL, &mut app);
+    screen.set_pixel_route(route(true), &mut app);
     let mut wrapped = Vec::new();
     screen.draw(&mut app, &mut wrapped).unwrap();
     let text = String::from_utf8_lossy(&wrapped);
@@ -269,4 +285,13 @@ fn iterm2_sends_the_same_pixels_as_a_png_and_tmux_passes_sequences_through() {
         (images[0].width, images[0].height),
         (PICTURE.0 / 2, PICTURE.1 / 2)
     );
+}
+
+/// Pixels of `CELL` a cell, through tmux or not.
+fn route(through_tmux: bool) -> PixelRoute {
+    PixelRoute {
+        through_tmux,
+        cell_pixels: CELL,
+        sixel_limit: None,
+    }
 }

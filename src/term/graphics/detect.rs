@@ -122,6 +122,8 @@ pub struct GraphicsFound {
     /// Inside tmux with passthrough on: the kitty and iTerm2 sequences go through it.
     pub through_tmux: bool,
     pub cell_pixels: Option<(u32, u32)>,
+    /// The largest sixel picture, if the terminal said.
+    pub sixel_limit: Option<(u32, u32)>,
 }
 
 /// What to use, from `choice`, the replies, the environment (`var`) and whether tmux passes
@@ -185,6 +187,7 @@ pub fn decide(
         reason,
         through_tmux: tmux_passthrough == Some(true),
         cell_pixels: replies.cell_pixels,
+        sixel_limit: replies.sixel_limit,
     }
 }
 
