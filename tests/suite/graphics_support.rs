@@ -18,7 +18,10 @@ pub fn kitty_images(bytes: &[u8]) -> Vec<Rgb> {
     let mut images = Vec::new();
     let mut current: Option<(usize, usize, String)> = None;
     for command in text.split("\x1b_G").skip(1) {
-        let command = command.split("\x1b\\").next().unwrap_or("");
+        // A command still being written is left for the next look.
+        let Some((command, _)) = command.split_once("\x1b\\") else {
+            break;
+        };
         let (keys, payload) = command.split_once(';').unwrap_or((command, ""));
         let key = |name: &str| {
             keys.split(',')
@@ -56,14 +59,16 @@ pub fn kitty_images(bytes: &[u8]) -> Vec<Rgb> {
     images
 }
 
-/// Every sixel image in `bytes`, decoded (colour registers in percent, raster attributes for
-/// the size, `!` repeats, `$` and `-`).
+/// Every whole sixel image in `bytes`, decoded (colour registers in percent, raster attributes
+/// for the size, `!` repeats, `$` and `-`); one still being written is left out.
 pub fn sixel_images(bytes: &[u8]) -> Vec<Rgb> {
     let mut images = Vec::new();
     let mut rest = bytes;
     while let Some(start) = find(rest, b"\x1bP") {
         let body = &rest[start + 2..];
-        let end = find(body, b"\x1b\\").expect("a sixel image ends");
+        let Some(end) = find(body, b"\x1b\\") else {
+            break;
+        };
         if let Some(q) = body[..end].iter().position(|&b| b == b'q') {
             images.push(decode_sixel(&body[q + 1..end]));
         }
