@@ -33,6 +33,11 @@ pub fn run(options: &WorkbenchOptions) -> Result<(), Error> {
     {
         return Err(error);
     }
+    let colors = options
+        .colors
+        .resolve_with_reason(|name| std::env::var(name).ok());
+    // Bad files and settings are told first, terminal or not.
+    let mut app = App::new(options, colors.mode)?;
     if !io::stdin().is_terminal() || !io::stdout().is_terminal() {
         return Err(Error::InvalidArgument(
             "the workbench needs a terminal, and its standard input or output is not one \
@@ -40,10 +45,6 @@ pub fn run(options: &WorkbenchOptions) -> Result<(), Error> {
                 .into(),
         ));
     }
-    let colors = options
-        .colors
-        .resolve_with_reason(|name| std::env::var(name).ok());
-    let mut app = App::new(options, colors.mode)?;
     app.message = Message::Info(format!(
         "{} colours ({}; --colors sets them)",
         colors_name(colors.mode),

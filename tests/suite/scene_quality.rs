@@ -142,3 +142,14 @@ fn the_workbench_takes_the_table_and_quality_settings_over_its_presets() {
     let refused = App::new(&options(&["quality.samples=0"]), ColorMode::TrueColor);
     assert!(refused.is_err_and(|e| e.to_string().contains("--set quality.samples=0")));
 }
+
+#[test]
+fn the_workbench_tells_a_bad_setting_before_it_asks_for_a_terminal() {
+    let output = bumpwork(&["view", "plane-dimples", "--set", "quality.samplez=2"]);
+    assert_user_error(
+        &output,
+        "--set quality.samplez=2: no quality knob 'samplez'",
+    );
+    let output = bumpwork(&["view", "plane-dimples"]);
+    assert_user_error(&output, "the workbench needs a terminal");
+}
