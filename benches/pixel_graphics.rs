@@ -60,7 +60,7 @@ fn main() {
         CELL.0, CELL.1
     );
     let mut settled_rgb = Vec::new();
-    for protocol in Protocol::ALL {
+    for &protocol in Protocol::ALL {
         let (mut app, mut screen) = app(protocol);
         settle(&mut app, &mut screen);
         let mut step_bytes = Vec::new();
@@ -119,7 +119,7 @@ fn kitty_rgb(bytes: &[u8]) -> Vec<u8> {
 
 /// Each encoder alone on the settled picture.
 fn encoders(rgb: &[u8], size: (u32, u32)) {
-    for protocol in Protocol::ALL {
+    for &protocol in Protocol::ALL {
         let mut bytes = 0;
         let time = Timing::measure(1, RUNS, || {
             bytes = protocol

@@ -451,7 +451,7 @@ fn override_settings(start: &Start, args: &RenderArgs) -> Result<StillSettings, 
         mode: args
             .mode
             .as_deref()
-            .and_then(|m| ShaderMode::ALL.into_iter().find(|v| v.name() == m))
+            .and_then(|m| ShaderMode::ALL.iter().copied().find(|v| v.name() == m))
             .unwrap_or(base.mode),
     })
 }

@@ -278,6 +278,23 @@ mod tests {
     use super::*;
 
     #[test]
+    fn every_preset_name_is_a_preset_and_no_other_is() {
+        for name in QUALITY_NAMES {
+            assert!(preset(name).is_some(), "{name}");
+        }
+        assert!(preset("fast").is_none());
+        let distinct: std::collections::HashSet<String> = QUALITY_NAMES
+            .iter()
+            .map(|n| format!("{:?}", preset(n)))
+            .collect();
+        assert_eq!(
+            distinct.len(),
+            QUALITY_NAMES.len(),
+            "each name its own preset"
+        );
+    }
+
+    #[test]
     fn every_preset_parses_by_name_and_they_differ() {
         let presets: Vec<Quality> = QUALITY_NAMES.iter().map(|n| preset(n).unwrap()).collect();
         for (i, a) in presets.iter().enumerate() {

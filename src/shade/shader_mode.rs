@@ -1,7 +1,7 @@
 //! What the shader outputs: the lit picture, or the height, normals, (u,v) or depth behind it.
 
 /// What the shading stage shows: the lit picture, or one of the quantities behind it.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, strum::VariantArray)]
 pub enum ShaderMode {
     #[default]
     Shaded,
@@ -16,13 +16,7 @@ pub enum ShaderMode {
 }
 
 impl ShaderMode {
-    pub const ALL: [ShaderMode; 5] = [
-        ShaderMode::Shaded,
-        ShaderMode::Height,
-        ShaderMode::Normals,
-        ShaderMode::Uv,
-        ShaderMode::Depth,
-    ];
+    pub const ALL: &'static [ShaderMode] = <ShaderMode as strum::VariantArray>::VARIANTS;
 
     pub fn name(self) -> &'static str {
         match self {

@@ -196,7 +196,8 @@ impl Recipe {
         let filter = ResolveFilter::parse(&self.filter)
             .ok_or_else(|| format!("unknown filter '{}'", self.filter))?;
         let mode = ShaderMode::ALL
-            .into_iter()
+            .iter()
+            .copied()
             .find(|m| m.name() == self.mode)
             .ok_or_else(|| format!("unknown view mode '{}'", self.mode))?;
         Ok(StillSettings {

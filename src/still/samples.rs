@@ -6,7 +6,7 @@ use crate::raster::SUBPIXEL_BITS;
 use glam::Vec2;
 
 /// How samples are combined into a pixel, in linear light.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, strum::VariantArray)]
 pub enum ResolveFilter {
     /// Equal weights over the pixel's own square.
     Box,
@@ -149,6 +149,20 @@ fn tent(u: f32) -> f32 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_filter_names_are_every_filters_name() {
+        let names: Vec<&str> = <ResolveFilter as strum::VariantArray>::VARIANTS
+            .iter()
+            .map(|f| f.name())
+            .collect();
+        assert_eq!(names, ResolveFilter::NAMES);
+        assert!(
+            names
+                .iter()
+                .all(|n| ResolveFilter::parse(n).is_some_and(|f| f.name() == *n))
+        );
+    }
 
     /// The fraction of samples left of a line through the pixel approximates the true area for
     /// lines at every angle and place: the property antialiased edges depend on.

@@ -37,7 +37,7 @@ use signal_hook::iterator::backend::Handle;
 use super::guard::restore_terminal;
 
 /// A signal asking the workbench to end.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, strum::VariantArray)]
 pub enum ShutdownSignal {
     Interrupt,
     Terminate,
@@ -53,19 +53,7 @@ pub enum ShutdownSignal {
 }
 
 impl ShutdownSignal {
-    pub const ALL: [ShutdownSignal; 11] = [
-        ShutdownSignal::Interrupt,
-        ShutdownSignal::Terminate,
-        ShutdownSignal::HangUp,
-        ShutdownSignal::Quit,
-        ShutdownSignal::User1,
-        ShutdownSignal::User2,
-        ShutdownSignal::Alarm,
-        ShutdownSignal::VirtualAlarm,
-        ShutdownSignal::Profiling,
-        ShutdownSignal::CpuTimeLimit,
-        ShutdownSignal::FileSizeLimit,
-    ];
+    pub const ALL: &'static [ShutdownSignal] = <ShutdownSignal as strum::VariantArray>::VARIANTS;
 
     pub fn number(self) -> i32 {
         match self {
@@ -90,7 +78,8 @@ impl ShutdownSignal {
 
     fn from_number(number: usize) -> Option<ShutdownSignal> {
         Self::ALL
-            .into_iter()
+            .iter()
+            .copied()
             .find(|s| s.number() as usize == number)
     }
 }
@@ -196,7 +185,10 @@ const TERMINAL_WATCH: Duration = Duration::from_millis(250);
 /// A thread that, on the first shutdown signal, gives the event loop `grace` to exit and then restores
 /// the terminal and exits itself; it stands down when `cancelled` disconnects.
 fn spawn_watchdog(grace: Duration, cancelled: mpsc::Receiver<()>) -> io::Result<Handle> {
-    let numbers = ShutdownSignal::ALL.map(ShutdownSignal::number);
+    let numbers = ShutdownSignal::ALL
+        .iter()
+        .copied()
+        .map(ShutdownSignal::number);
     let mut signals = Signals::new(numbers)?;
     let handle = signals.handle();
     thread::Builder::new()

@@ -6,7 +6,7 @@ use crate::quality::Quality;
 use crate::raster::{FrameStats, Framebuffer, PreparedScene, RenderTarget, render_into};
 use crate::shade::ShaderMode;
 
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, strum::VariantArray)]
 pub enum ViewMode {
     #[default]
     Shaded,
@@ -24,15 +24,7 @@ pub enum ViewMode {
 }
 
 impl ViewMode {
-    pub const ALL: [ViewMode; 7] = [
-        ViewMode::Shaded,
-        ViewMode::Height,
-        ViewMode::Normals,
-        ViewMode::Uv,
-        ViewMode::Depth,
-        ViewMode::Wireframe,
-        ViewMode::Error,
-    ];
+    pub const ALL: &'static [ViewMode] = <ViewMode as strum::VariantArray>::VARIANTS;
 
     pub fn name(self) -> &'static str {
         match self {

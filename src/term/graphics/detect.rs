@@ -171,7 +171,11 @@ pub fn decide(
             }
             (Some(p), format!("--graphics {}", p.name()))
         }
-        GraphicsChoice::Auto => match Protocol::ALL.into_iter().find(|p| supported.contains(p)) {
+        GraphicsChoice::Auto => match Protocol::ALL
+            .iter()
+            .copied()
+            .find(|p| supported.contains(p))
+        {
             Some(p) => (Some(p), why.join(", ")),
             None if blocked_by_tmux => (
                 None,

@@ -12,16 +12,16 @@ pub use detect::{GraphicsFound, Replies, decide, query_terminal};
 pub use sixel_palette::MAX_COLOURS as SIXEL_MAX_COLOURS;
 
 /// A way of sending pixels.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, strum::VariantArray)]
 pub enum Protocol {
     Kitty,
-    Sixel,
     Iterm2,
+    Sixel,
 }
 
 impl Protocol {
-    /// In the order `auto` prefers them: exact colours first.
-    pub const ALL: [Protocol; 3] = [Protocol::Kitty, Protocol::Iterm2, Protocol::Sixel];
+    /// In the order `auto` prefers them: exact colours first (the order of the enum).
+    pub const ALL: &'static [Protocol] = <Protocol as strum::VariantArray>::VARIANTS;
 
     pub fn name(self) -> &'static str {
         match self {
@@ -68,7 +68,8 @@ impl GraphicsChoice {
             "auto" => Ok(GraphicsChoice::Auto),
             "blocks" => Ok(GraphicsChoice::Blocks),
             _ => Protocol::ALL
-                .into_iter()
+                .iter()
+                .copied()
                 .find(|p| p.name() == name)
                 .map(GraphicsChoice::Only)
                 .ok_or_else(|| {
@@ -94,4 +95,34 @@ pub fn tmux_passthrough(sequence: &[u8]) -> Vec<u8> {
     }
     out.extend_from_slice(b"\x1b\\");
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_choice_name_parses_and_every_protocol_has_one() {
+        for name in GraphicsChoice::NAMES {
+            assert!(GraphicsChoice::parse(name).is_ok(), "{name}");
+        }
+        for &protocol in Protocol::ALL {
+            assert!(GraphicsChoice::NAMES.contains(&protocol.name()));
+            assert_eq!(
+                GraphicsChoice::parse(protocol.name()),
+                Ok(GraphicsChoice::Only(protocol))
+            );
+        }
+        assert_eq!(GraphicsChoice::NAMES.len(), Protocol::ALL.len() + 2);
+        assert!(GraphicsChoice::parse("pixels").is_err());
+    }
+
+    #[test]
+    fn tmux_passthrough_doubles_every_escape() {
+        let wrapped = tmux_passthrough(b"\x1b_Gm=0;AA\x1b\\");
+        assert_eq!(
+            wrapped,
+            b"\x1bPtmux;\x1b\x1b_Gm=0;AA\x1b\x1b\\\x1b\\".to_vec()
+        );
+    }
 }
