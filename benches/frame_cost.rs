@@ -14,14 +14,13 @@
 
 mod bench_support;
 
+use bench_support::render_into;
 use bench_support::{
     pov_peer_files, pov_peer_settings, textured_sphere_scene, time_png_stills, write_pov_peer_scene,
 };
 use bumpwork::export::StillRequest;
 use bumpwork::quality::Quality;
-use bumpwork::raster::{
-    FragmentShader, Framebuffer, PreparedScene, RenderTarget, Viewport, render_into,
-};
+use bumpwork::raster::{FragmentShader, Framebuffer, PreparedScene, RenderTarget, Viewport};
 use bumpwork::scene::Camera;
 use bumpwork::scene::load_scene_file;
 use bumpwork::still::{

@@ -8,11 +8,10 @@
 
 mod bench_support;
 
+use bench_support::render_into;
 use bench_support::{bilinear, textured_sphere_scene};
 use bumpwork::measure::Timing;
-use bumpwork::raster::{
-    Framebuffer, PreparedScene, RenderTarget, Viewport, linear_to_srgb8, render_into,
-};
+use bumpwork::raster::{Framebuffer, PreparedScene, RenderTarget, Viewport, linear_to_srgb8};
 use bumpwork::scene::Light;
 use bumpwork::shade::LitShader;
 use bumpwork::surface::{Mesh, Tessellation};

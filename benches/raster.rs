@@ -6,11 +6,12 @@
 
 mod bench_support;
 
+use bench_support::render_into;
 use bench_support::sphere_scene;
 use bumpwork::measure::Timing;
 use bumpwork::raster::{
     Fragment, FrameObject, Framebuffer, PerFragment, PreparedScene, RenderTarget, Viewport,
-    frame_objects, render_into, screen_triangles,
+    frame_objects, screen_triangles,
 };
 use bumpwork::shade::LitShader;
 use bumpwork::surface::Tessellation;

@@ -4,7 +4,10 @@
 //!
 //! Run: `cargo bench --bench reference` (release; a few minutes on two cores).
 
-use bumpwork::raster::{Framebuffer, PreparedScene, RenderTarget, Viewport, render_with};
+mod bench_support;
+
+use bench_support::render_with;
+use bumpwork::raster::{Framebuffer, PreparedScene, RenderTarget, Viewport};
 use bumpwork::reference::{FrameError, frame_error, render_reference};
 use bumpwork::scene::{PRESET_NAMES, Scene, preset};
 use bumpwork::shade::{LitShader, ShaderMode};

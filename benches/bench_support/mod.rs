@@ -139,3 +139,25 @@ pub fn time_png_stills(request: &StillRequest, out: &Path, runs: usize) -> Timin
         write_still(request, out, StillFormat::Png, &mut |_| {}, &|| None).expect("still");
     })
 }
+
+/// One pass rendered into `framebuffer`.
+pub fn render_into(
+    prepared: &bumpwork::raster::PreparedScene,
+    target: &bumpwork::raster::RenderTarget,
+    shader: &impl bumpwork::raster::FragmentShader,
+    framebuffer: &mut bumpwork::raster::Framebuffer,
+) -> bumpwork::raster::FrameStats {
+    let output = bumpwork::raster::FrameOutput::Framebuffer(framebuffer);
+    bumpwork::raster::render(prepared, std::slice::from_ref(target), shader, output, None)
+}
+
+/// One pass rendered into a new framebuffer.
+pub fn render_with(
+    prepared: &bumpwork::raster::PreparedScene,
+    target: &bumpwork::raster::RenderTarget,
+    shader: &impl bumpwork::raster::FragmentShader,
+) -> (bumpwork::raster::Framebuffer, bumpwork::raster::FrameStats) {
+    let mut framebuffer = bumpwork::raster::Framebuffer::new(0, 0, Vec3::ZERO);
+    let stats = render_into(prepared, target, shader, &mut framebuffer);
+    (framebuffer, stats)
+}

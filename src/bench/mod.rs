@@ -12,7 +12,7 @@ pub use variants::{Variant, VariantKind, variants};
 
 use crate::measure::Timing;
 use crate::quality::Quality;
-use crate::raster::{Framebuffer, PreparedScene, RenderTarget, Viewport, render_into};
+use crate::raster::{FrameOutput, Framebuffer, PreparedScene, RenderTarget, Viewport, render};
 use crate::reference::{FrameError, ShadedAndNormals, ViewRays, render_rays_into};
 use crate::scene::Camera;
 use crate::scene::Scene;
@@ -228,7 +228,8 @@ fn render_frame(
     framebuffer: &mut Framebuffer,
 ) {
     if samples <= 1 {
-        render_into(prepared, target, shader, framebuffer);
+        let output = FrameOutput::Framebuffer(framebuffer);
+        render(prepared, std::slice::from_ref(target), shader, output, None);
         return;
     }
     let job = BandJob {

@@ -25,9 +25,8 @@ pub use clip::{ClipVertex, clip_triangle};
 pub use fragment::{Fragment, FragmentShader, FrameObject, PerFragment};
 pub use framebuffer::{Blend, Framebuffer, encode_srgb8, linear_to_srgb8};
 pub use pipeline::{
-    FrameStats, Interpolation, PreparedObject, PreparedScene, RenderTarget, Srgb8Strips,
-    frame_objects, render_into, render_passes_into, render_refining_passes_into, render_with,
-    screen_triangles,
+    FrameOutput, FrameStats, Interpolation, PreparedObject, PreparedScene, RenderTarget,
+    Srgb8Strips, frame_objects, render, screen_triangles,
 };
 pub use refine::{RefineRule, Refinement};
 pub use scan::{PixelRect, scan_shifted, scan_triangle};

@@ -15,7 +15,7 @@ use crate::scene::Camera;
 use crate::scene::{Material, Scene};
 use crate::surface::{Mesh, Surface, Tessellation};
 use bytemuck::Zeroable;
-use glam::{Mat4, Vec3, Vec4};
+use glam::{Mat4, Vec4};
 use rayon::prelude::*;
 
 /// A scene's objects tessellated once, reused for every frame until the scene or density changes.
@@ -81,11 +81,18 @@ pub struct RenderTarget<'a> {
     /// depth nobody reads skips the stores, and a fresh framebuffer's depth is never touched
     /// (so never mapped).
     pub writes_depth: bool,
-    /// Where each strip of `STRIP_ROWS` rows goes as 8-bit sRGB once this render has finished
-    /// it: a still encodes its rows while the rest of the frame renders. A lone pass that
-    /// replaces every pixel and writes no depth then leaves the framebuffer as it was: the
-    /// strips are its only output.
-    pub finished_strips: Option<&'a Srgb8Strips<'a>>,
+}
+
+/// Where a render's pixels go.
+pub enum FrameOutput<'o> {
+    /// Into the framebuffer (resized to the viewport).
+    Framebuffer(&'o mut Framebuffer),
+    /// Into the framebuffer, and each strip of `STRIP_ROWS` rows handed on as 8-bit sRGB once
+    /// every pass has finished it: a still encodes its rows while the rest renders.
+    FramebufferAndStrips(&'o mut Framebuffer, &'o Srgb8Strips<'o>),
+    /// Only as 8-bit sRGB strips, no framebuffer at all (none is allocated, zeroed or touched):
+    /// for one pass that replaces every pixel, unmasked, keeping no depth.
+    Strips(&'o Srgb8Strips<'o>),
 }
 
 /// A render's strips handed on as 8-bit sRGB (3 bytes a pixel, row-major), each tile converted
@@ -110,7 +117,6 @@ impl<'a> RenderTarget<'a> {
             mask: None,
             blend: Blend::Replace,
             writes_depth: true,
-            finished_strips: None,
         }
     }
 
@@ -198,56 +204,28 @@ fn join_in_order<T: Copy + Zeroable + Send + Sync>(mut lists: Vec<Vec<T>>) -> Ve
     joined
 }
 
-/// Renders a frame with any fragment program into a new framebuffer.
-pub fn render_with(
+/// Renders `passes` of a frame with any fragment program into `output`: transform, cull, clip,
+/// set up, bin, then per tile resolve visibility and run the program once for each visible
+/// pixel. Every pixel ends shaded or background, so no separate clear pass is needed; tiles that
+/// were all background in the last render into a framebuffer, and still are, are not
+/// rewritten.
+///
+/// Several passes come out as rendering them one after another would, to the bit, but tile by
+/// tile: every pass of a tile before the next tile, so the tile's pixels (which supersampling
+/// passes add into) and the texels its fragments read stay in cache from pass to pass. The
+/// passes share the viewport, camera, mask, window position and interpolation, so the triangles
+/// are set up once for them all; they differ in where they sample (the window's offset),
+/// footprint, blend and depth writes. With a `refinement`, the passes from its `from_pass` on
+/// render only the pixels the earlier passes moved (see `Refinement`), decided tile by tile as
+/// each tile's earlier passes finish.
+pub fn render(
     prepared: &PreparedScene,
-    target: &RenderTarget,
+    passes: &[RenderTarget],
     shader: &impl FragmentShader,
-) -> (Framebuffer, FrameStats) {
-    let mut framebuffer = Framebuffer::new(0, 0, Vec3::ZERO);
-    let stats = render_into(prepared, target, shader, &mut framebuffer);
-    (framebuffer, stats)
-}
-
-/// Renders a frame into `framebuffer`, reusing its memory: transform, cull, clip, set up, bin,
-/// then per tile resolve visibility and run the program once for each visible pixel. Every
-/// pixel ends shaded or background, so no separate clear pass is needed; tiles that were all
-/// background in the last render into this framebuffer, and still are, are not rewritten.
-pub fn render_into(
-    prepared: &PreparedScene,
-    target: &RenderTarget,
-    shader: &impl FragmentShader,
-    framebuffer: &mut Framebuffer,
-) -> FrameStats {
-    render_passes_into(prepared, std::slice::from_ref(target), shader, framebuffer)
-}
-
-/// Renders several passes into `framebuffer` as `render_into` would one after another, with the
-/// same result to the bit, but tile by tile: every pass of a tile before the next tile, so the
-/// tile's pixels (which supersampling passes add into) and the texels its fragments read stay
-/// in cache from pass to pass. The targets share the viewport, camera, mask, window position and
-/// interpolation, so the triangles are set up once for them all; they differ in where they
-/// sample (the window's offset), footprint, blend and depth writes. Only the last pass's
-/// `finished_strips` is told of the strips, once every pass has finished them.
-pub fn render_passes_into(
-    prepared: &PreparedScene,
-    targets: &[RenderTarget],
-    shader: &impl FragmentShader,
-    framebuffer: &mut Framebuffer,
-) -> FrameStats {
-    render_refining_passes_into(prepared, targets, shader, framebuffer, None)
-}
-
-/// `render_passes_into`, the passes from `refinement.from_pass` on rendering only the pixels
-/// the earlier passes moved (see `Refinement`), decided tile by tile as each tile's earlier
-/// passes finish.
-pub fn render_refining_passes_into(
-    prepared: &PreparedScene,
-    targets: &[RenderTarget],
-    shader: &impl FragmentShader,
-    framebuffer: &mut Framebuffer,
+    output: FrameOutput,
     refinement: Option<Refinement>,
 ) -> FrameStats {
+    let targets = passes;
     let Some(last) = targets.last() else {
         return FrameStats::default();
     };
@@ -269,6 +247,19 @@ pub fn render_refining_passes_into(
         targets.iter().all(shared),
         "passes rendered together share viewport, camera, mask, window and interpolation"
     );
+    let (framebuffer, finished_strips) = match output {
+        FrameOutput::Framebuffer(framebuffer) => (Some(framebuffer), None),
+        FrameOutput::FramebufferAndStrips(framebuffer, strips) => (Some(framebuffer), Some(strips)),
+        FrameOutput::Strips(strips) => (None, Some(strips)),
+    };
+    if framebuffer.is_none() {
+        let alone = targets.len() == 1 && refinement.is_none();
+        let replaces = last.mask.is_none() && last.blend == Blend::Replace && !last.writes_depth;
+        assert!(
+            alone && replaces,
+            "strips alone come of one unmasked pass that keeps no depth"
+        );
+    }
     let viewport = last.viewport;
     let objects = frame_objects(prepared, last.camera);
     let derivatives: Vec<bool> = objects
@@ -288,30 +279,27 @@ pub fn render_refining_passes_into(
         viewport,
         background: prepared.scene.background,
         tiles_x,
-        // A lone pass that replaces every pixel, keeps no depth and hands its strips on needs
-        // no framebuffer: its colours go straight into the strips' bytes (and a fresh
-        // framebuffer is never allocated, zeroed or touched).
-        bytes_only: targets.len() == 1
-            && last.finished_strips.is_some()
-            && last.mask.is_none()
-            && last.blend == Blend::Replace
-            && !last.writes_depth,
+        finished_strips,
+        bytes_only: framebuffer.is_none(),
         refinement: refinement.as_ref().map(|r| r.rule),
     };
     let mut no_framebuffer_known = Vec::new();
-    let (strips, known_background) = if job.bytes_only {
-        no_framebuffer_known.resize((tiles_x * strips_y) as usize, false);
-        let nothing = (0..strips_y).map(|_| (&mut [][..], &mut [][..])).collect();
-        (nothing, &mut no_framebuffer_known[..])
-    } else {
-        framebuffer.resize(viewport.width, viewport.height);
-        let (color, depth, known) = framebuffer.tiles_mut((tiles_x, strips_y), job.background);
-        let pixels = (STRIP_ROWS * viewport.width) as usize;
-        let strips: Vec<_> = color
-            .chunks_mut(pixels)
-            .zip(depth.chunks_mut(pixels))
-            .collect();
-        (strips, known)
+    let (strips, known_background) = match framebuffer {
+        None => {
+            no_framebuffer_known.resize((tiles_x * strips_y) as usize, false);
+            let nothing = (0..strips_y).map(|_| (&mut [][..], &mut [][..])).collect();
+            (nothing, &mut no_framebuffer_known[..])
+        }
+        Some(framebuffer) => {
+            framebuffer.resize(viewport.width, viewport.height);
+            let (color, depth, known) = framebuffer.tiles_mut((tiles_x, strips_y), job.background);
+            let pixels = (STRIP_ROWS * viewport.width) as usize;
+            let strips: Vec<_> = color
+                .chunks_mut(pixels)
+                .zip(depth.chunks_mut(pixels))
+                .collect();
+            (strips, known)
+        }
     };
     let mut refined: Vec<&mut [bool]> = match refinement {
         Some(refinement) => {

@@ -4,11 +4,12 @@
 use super::tile::TileRows;
 use glam::Vec3;
 
-/// Adaptive refinement within one group of passes (`render_refining_passes_into`): the passes
-/// from `from_pass` on render only those of the wanted pixels whose colour the earlier passes
-/// moved by more than `threshold` (in √colour, per channel, as the contrast mask measures) from
-/// what the framebuffer held before the group (a still's centre sample). The wanted pixels
-/// that stop there are settled as a mix of the two: `centre_weight` of what was before.
+/// Adaptive refinement within one group of passes (`raster::render` with a `Refinement`): the
+/// passes from `from_pass` on render only those of the wanted pixels whose colour the earlier
+/// passes moved by more than `threshold` (in √colour, per channel, as the contrast mask
+/// measures) from what the framebuffer held before the group (a still's centre sample). The
+/// wanted pixels that stop there are settled as a mix of the two: `centre_weight` of what was
+/// before.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RefineRule {
     pub from_pass: usize,

@@ -4,7 +4,7 @@
 use super::bin::{TILE_SIZE, TileBins};
 use super::fragment::{FragmentShader, FrameObject};
 use super::framebuffer::{Blend, encode_srgb8};
-use super::pipeline::{Interpolation, RenderTarget, shifted_screen_triangles};
+use super::pipeline::{Interpolation, RenderTarget, Srgb8Strips, shifted_screen_triangles};
 use super::refine::{RefineRule, keep_before, mark_none, mark_refined};
 use super::scan::PixelRect;
 use super::setup::{SampleShift, ScreenTriangle, ShiftSpan, Viewport};
@@ -29,14 +29,16 @@ fn strip_tile_rect(viewport: Viewport, tx: u32, strip: u32) -> PixelRect {
     }
 }
 
-/// What every strip of `render_passes_into` shares.
+/// What every strip of a render shares.
 pub(super) struct StripJob<'a, S> {
     pub passes: &'a [Pass<'a, S>],
     pub last: &'a RenderTarget<'a>,
     pub viewport: Viewport,
     pub background: Vec3,
     pub tiles_x: u32,
-    /// Whether the strips' colours go only into their sRGB bytes (see `render_passes_into`).
+    /// Where finished strips go as 8-bit sRGB, if anywhere.
+    pub finished_strips: Option<&'a Srgb8Strips<'a>>,
+    /// Whether the strips' colours go only into their sRGB bytes (`FrameOutput::Strips`).
     pub bytes_only: bool,
     /// The rule the passes refine by, if they do.
     pub refinement: Option<RefineRule>,
@@ -66,7 +68,7 @@ impl<S: FragmentShader> StripJob<'_, S> {
         let first = (index * STRIP_ROWS * width) as usize;
         let pixels = (rows * width) as usize;
         let mask = self.last.mask.map(|m| &m[first..first + pixels]);
-        let mut bytes = self.last.finished_strips.map(|strips| {
+        let mut bytes = self.finished_strips.map(|strips| {
             let mut bytes = (strips.buffer)();
             bytes.resize(pixels * 3, 0);
             bytes
@@ -126,7 +128,7 @@ impl<S: FragmentShader> StripJob<'_, S> {
                 encode_tile(color, width, &rect, bytes);
             }
         }
-        if let (Some(strips), Some(bytes)) = (self.last.finished_strips, bytes) {
+        if let (Some(strips), Some(bytes)) = (self.finished_strips, bytes) {
             (strips.finished)(index as usize, bytes);
         }
         counts

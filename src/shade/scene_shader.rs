@@ -674,13 +674,36 @@ fn single_object(fragments: &[Fragment]) -> Option<u32> {
 /// Renders a lit frame, shaded as the scene asks, on the current rayon pool.
 pub fn render_lit(prepared: &PreparedScene, target: &RenderTarget) -> (Framebuffer, FrameStats) {
     let shader = LitShader::new(&prepared.scene, target.camera);
-    crate::raster::render_with(prepared, target, &shader)
+    let mut framebuffer = Framebuffer::new(0, 0, Vec3::ZERO);
+    let output = crate::raster::FrameOutput::Framebuffer(&mut framebuffer);
+    let stats = crate::raster::render(
+        prepared,
+        std::slice::from_ref(target),
+        &shader,
+        output,
+        None,
+    );
+    (framebuffer, stats)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::raster::{PreparedScene, RenderTarget, Viewport, frame_objects, render_with};
+    use crate::raster::{
+        FrameOutput, PreparedScene, RenderTarget, Viewport, frame_objects, render,
+    };
+
+    /// A frame rendered into a new framebuffer.
+    fn render_with(
+        prepared: &PreparedScene,
+        target: &RenderTarget,
+        shader: &impl FragmentShader,
+    ) -> (Framebuffer, FrameStats) {
+        let mut framebuffer = Framebuffer::new(0, 0, Vec3::ZERO);
+        let output = FrameOutput::Framebuffer(&mut framebuffer);
+        let stats = render(prepared, std::slice::from_ref(target), shader, output, None);
+        (framebuffer, stats)
+    }
     use crate::scene::{ImageTexture, preset};
     use crate::surface::Tessellation;
     use crate::texture::{Filter, Sampler, TexelGrid, Texture};

@@ -4,9 +4,9 @@
 use super::contrast::contrast_mask;
 use super::samples::Supersampling;
 use crate::raster::{
-    Blend, FragmentShader, FrameStats, Framebuffer, ImageWindow, Interpolation, PreparedScene,
-    RefineRule, Refinement, RenderTarget, ScreenTriangle, Srgb8Strips, TILE_SIZE, Viewport,
-    render_into, render_passes_into, render_refining_passes_into,
+    Blend, FragmentShader, FrameOutput, FrameStats, Framebuffer, ImageWindow, Interpolation,
+    PreparedScene, RefineRule, Refinement, RenderTarget, ScreenTriangle, Srgb8Strips, TILE_SIZE,
+    Viewport, render,
 };
 use crate::scene::Camera;
 use glam::{Vec2, Vec3};
@@ -21,7 +21,7 @@ pub const BAND_BUDGET_BYTES: u64 = 128 << 20;
 /// still peaks at 134–141 MB).
 const BYTES_PER_BAND_PIXEL: u64 = 18;
 
-/// Supersampling passes are rendered a group at a time, tile by tile (`render_passes_into`): the
+/// Supersampling passes are rendered a group at a time, tile by tile (`raster::render`): the
 /// more passes a group holds, the less often a tile's pixels and texels leave the cache, but
 /// passes are cancelled and reported a group at a time, and each pass of a group holds its set-up
 /// triangles. A group renders at most this many pixels times passes (eight passes of a 1080p
@@ -109,7 +109,7 @@ impl<S: FragmentShader> BandJob<'_, S> {
     /// supersampling passes a group at a time (`passes_per_group`), calling `on_pass` once per
     /// pass as each group ends. `keep_going` is asked before every group; when it says no, the
     /// band is abandoned and `None` returned. `finished_strips` hears each strip of the band
-    /// as the last pass finishes it (see `RenderTarget::finished_strips`); a caller that takes
+    /// as the last pass finishes it (see `FrameOutput`); a caller that takes
     /// the strips does not get the band's depth (no pass writes it but an adaptive centre pass,
     /// whose depth the contrast mask reads). Otherwise the depth is the last pass's: the only
     /// supersampling pass that writes it is the last.
@@ -141,7 +141,6 @@ impl<S: FragmentShader> BandJob<'_, S> {
         // The pass that finishes the band hands its strips on and, when nobody takes them,
         // leaves the band's depth; supersampling passes before it write no depth.
         let finishing = |target| RenderTarget {
-            finished_strips,
             writes_depth: finished_strips.is_none(),
             ..target
         };
@@ -152,7 +151,12 @@ impl<S: FragmentShader> BandJob<'_, S> {
             }
             let footprint = self.supersampling.footprint();
             let target = finishing(target(offsets[0], footprint, None, Blend::Replace));
-            let stats = render_into(self.prepared, &target, self.shader, &mut buffers.frame);
+            // One pass handing its strips on needs no framebuffer.
+            let output = match finished_strips {
+                Some(strips) => FrameOutput::Strips(strips),
+                None => FrameOutput::Framebuffer(&mut buffers.frame),
+            };
+            let stats = render(self.prepared, &[target], self.shader, output, None);
             on_pass();
             return Some(stats);
         }
@@ -170,7 +174,8 @@ impl<S: FragmentShader> BandJob<'_, S> {
             // footprint. The tent's samples spread over two pixels' width.
             let centre_footprint = if refining.is_some() { footprint } else { 1.0 };
             let centre = target(Vec2::ZERO, centre_footprint, None, Blend::Replace);
-            stats = render_into(self.prepared, &centre, self.shader, &mut buffers.frame);
+            let output = FrameOutput::Framebuffer(&mut buffers.frame);
+            stats = render(self.prepared, &[centre], self.shader, output, None);
             contrast_mask(&buffers.frame, threshold, &mut mask);
             // A band's outer rows cannot see across the band's border: sample them fully
             // where another band lies beyond (at most 2 rows in 64).
@@ -222,6 +227,10 @@ impl<S: FragmentShader> BandJob<'_, S> {
             let end = (start + size).min(count);
             let mut group: Vec<RenderTarget> = (start..end).map(pass).collect();
             let (prepared, shader, frame) = (self.prepared, self.shader, &mut buffers.frame);
+            let output = match finished_strips.filter(|_| end == count) {
+                Some(strips) => FrameOutput::FramebufferAndStrips(frame, strips),
+                None => FrameOutput::Framebuffer(frame),
+            };
             let done = match first_samples {
                 Some(first) if start == 0 => {
                     group.iter_mut().for_each(|pass| pass.mask = only);
@@ -233,7 +242,7 @@ impl<S: FragmentShader> BandJob<'_, S> {
                         },
                         refined: &mut refined,
                     };
-                    render_refining_passes_into(prepared, &group, shader, frame, Some(refinement))
+                    render(prepared, &group, shader, output, Some(refinement))
                 }
                 later => {
                     // Groups after a refining one render the pixels it refined.
@@ -243,7 +252,7 @@ impl<S: FragmentShader> BandJob<'_, S> {
                         only
                     };
                     group.iter_mut().for_each(|pass| pass.mask = mask);
-                    render_passes_into(prepared, &group, shader, frame)
+                    render(prepared, &group, shader, output, None)
                 }
             };
             stats = add_stats(stats, done);

@@ -1,5 +1,6 @@
 //! A still streamed band by band into a sink of 8-bit sRGB rows, which the render's last pass
-//! hands on strip by strip (`RenderTarget::finished_strips`) once the samples are resolved.
+//! hands on strip by strip (`FrameOutput::FramebufferAndStrips`, or `Strips` alone) once the
+//! samples are resolved.
 
 use super::bands::{BandBuffers, BandJob, band_rows};
 use super::in_order::{InOrderWriter, SpareRows};

@@ -4,7 +4,7 @@
 //! same reference `bumpwork bench` measures against.
 
 use crate::quality::Quality;
-use crate::raster::{FrameStats, Framebuffer, PreparedScene, RenderTarget, render_into};
+use crate::raster::{FrameOutput, FrameStats, Framebuffer, PreparedScene, RenderTarget, render};
 use crate::reference::{error_heat_map, metrics::psnr, render_reference};
 
 /// 8-bit sRGB steps of error drawn as white; smaller errors are red to yellow, none black.
@@ -21,7 +21,14 @@ pub fn render_error_view(
 ) -> (FrameStats, f64) {
     let mut shader = quality.shader(prepared, target.camera);
     shader.time = time;
-    let stats = render_into(prepared, target, &shader, framebuffer);
+    let output = FrameOutput::Framebuffer(framebuffer);
+    let stats = render(
+        prepared,
+        std::slice::from_ref(target),
+        &shader,
+        output,
+        None,
+    );
     let mut exact = Quality::exact().shader(prepared, target.camera);
     exact.time = time;
     let (reference, _) = render_reference(prepared, target.camera, target.viewport, &exact);

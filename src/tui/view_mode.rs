@@ -3,7 +3,7 @@
 
 use super::error_view::render_error_view;
 use crate::quality::Quality;
-use crate::raster::{FrameStats, Framebuffer, PreparedScene, RenderTarget, render_into};
+use crate::raster::{FrameOutput, FrameStats, Framebuffer, PreparedScene, RenderTarget, render};
 use crate::shade::ShaderMode;
 
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, strum::VariantArray)]
@@ -80,7 +80,13 @@ pub fn render_view_mode(
     shader.mode = mode.shader_mode();
     shader.time = time;
     RenderedFrame {
-        stats: render_into(prepared, target, &shader, framebuffer),
+        stats: render(
+            prepared,
+            std::slice::from_ref(target),
+            &shader,
+            FrameOutput::Framebuffer(framebuffer),
+            None,
+        ),
         psnr_db: None,
     }
 }

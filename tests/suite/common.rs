@@ -4,7 +4,7 @@
 use bumpwork::raster::{
     ClipVertex, Fragment, FrameObject, Framebuffer, Interpolation, PerFragment, PixelRect,
     PreparedScene, RenderTarget, SampleShift, ScreenTriangle, ShiftSpan, TrianglePlanes, Viewport,
-    render_with, scan_shifted,
+    scan_shifted,
 };
 use bumpwork::scene::Camera;
 use bumpwork::scene::Scene;
@@ -100,4 +100,26 @@ pub fn camera(eye: [f64; 3], target: [f64; 3], fov: f32) -> Camera {
         near: 0.01,
         far: 1e5,
     }
+}
+
+/// One pass rendered into a new framebuffer.
+pub fn render_with(
+    prepared: &bumpwork::raster::PreparedScene,
+    target: &bumpwork::raster::RenderTarget,
+    shader: &impl bumpwork::raster::FragmentShader,
+) -> (bumpwork::raster::Framebuffer, bumpwork::raster::FrameStats) {
+    let mut framebuffer = bumpwork::raster::Framebuffer::new(0, 0, Vec3::ZERO);
+    let stats = render_into(prepared, target, shader, &mut framebuffer);
+    (framebuffer, stats)
+}
+
+/// One pass rendered into `framebuffer`.
+pub fn render_into(
+    prepared: &bumpwork::raster::PreparedScene,
+    target: &bumpwork::raster::RenderTarget,
+    shader: &impl bumpwork::raster::FragmentShader,
+    framebuffer: &mut bumpwork::raster::Framebuffer,
+) -> bumpwork::raster::FrameStats {
+    let output = bumpwork::raster::FrameOutput::Framebuffer(framebuffer);
+    bumpwork::raster::render(prepared, std::slice::from_ref(target), shader, output, None)
 }

@@ -1,8 +1,9 @@
 //! Each quality knob changes what it claims to, by a stated amount, against the exact reference
 //! or the exact setting of the same knob.
 
+use crate::common::render_with;
 use bumpwork::quality::{NormalSource, Quality};
-use bumpwork::raster::{Framebuffer, Interpolation, Viewport, render_with};
+use bumpwork::raster::{Framebuffer, Interpolation, Viewport};
 use bumpwork::reference::metrics::normal_angle_error;
 use bumpwork::reference::render_reference;
 use bumpwork::scene::{Scene, Texturing, preset};

@@ -100,9 +100,8 @@ fn affine_uv_fails_the_same_check() {
 
 #[test]
 fn screen_derivatives_of_uv_match_neighbouring_pixels() {
-    use bumpwork::raster::{
-        Fragment, FrameObject, PerFragment, PreparedScene, RenderTarget, render_with,
-    };
+    use crate::common::render_with;
+    use bumpwork::raster::{Fragment, FrameObject, PerFragment, PreparedScene, RenderTarget};
     use bumpwork::surface::Tessellation;
     let viewport = Viewport {
         width: 320,

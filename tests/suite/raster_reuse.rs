@@ -3,10 +3,10 @@
 //! must hold exactly what a fresh framebuffer would. Renders restricted to a mask, or adding
 //! weighted colours into what is there (supersampling's passes), touch only their pixels.
 
+use crate::common::render_into;
 use bumpwork::raster::{
-    Blend, Framebuffer, ImageWindow, PreparedScene, RefineRule, Refinement, RenderTarget,
-    STRIP_ROWS, Srgb8Strips, Viewport, render_into, render_passes_into,
-    render_refining_passes_into,
+    Blend, FrameOutput, Framebuffer, ImageWindow, PreparedScene, RefineRule, Refinement,
+    RenderTarget, STRIP_ROWS, Srgb8Strips, Viewport, render,
 };
 use bumpwork::scene::{Scene, preset};
 use bumpwork::shade::LitShader;
@@ -316,7 +316,13 @@ fn passes_rendered_tile_by_tile_equal_the_passes_one_after_another() {
             render_into(&far, pass, &shader, &mut want);
         }
         let mut got = rendered_once(&far);
-        let stats = render_passes_into(&far, &passes, &shader, &mut got);
+        let stats = render(
+            &far,
+            &passes,
+            &shader,
+            FrameOutput::Framebuffer(&mut got),
+            None,
+        );
         let what = format!("masked {}", mask.is_some());
         assert_same(&got, &want, &what);
         assert!(stats.fragments > 0, "{what}: nothing shaded");
@@ -350,22 +356,18 @@ fn hearing_strips<R>(render: impl FnOnce(&Srgb8Strips) -> R) -> (R, Vec<usize>, 
 }
 
 #[test]
-fn a_lone_replacing_pass_hands_on_its_strips_and_leaves_the_framebuffer_alone() {
+fn a_lone_pass_into_strips_alone_hands_on_each_strip_as_the_renders_pixels() {
     // A background that is not grey, so background runs are encoded channel by channel.
     let far = far_sphere(Vec3::new(0.05, 0.2, 0.6));
     let camera = &far.scene.camera;
-    let before = scribbled(SMALL);
-    let mut framebuffer = before.clone();
     let (stats, indices, bytes) = hearing_strips(|strips| {
         let target = RenderTarget {
             writes_depth: false,
-            finished_strips: Some(strips),
             ..RenderTarget::new(camera, SMALL)
         };
         let shader = LitShader::new(&far.scene, camera);
-        render_into(&far, &target, &shader, &mut framebuffer)
+        render(&far, &[target], &shader, FrameOutput::Strips(strips), None)
     });
-    assert_same(&framebuffer, &before, "the framebuffer");
     assert_eq!(indices, every_strip(), "each strip once");
     let want = fresh(&far, SMALL);
     let expected: Vec<u8> = want.to_srgb8().into_iter().flatten().collect();
@@ -382,11 +384,9 @@ fn passes_rendered_tile_by_tile_hand_on_each_strip_once_finished_as_srgb() {
     for mask in [None, Some(&mask[..])] {
         let mut framebuffer = scribbled(SMALL);
         let ((), indices, bytes) = hearing_strips(|strips| {
-            let mut passes = shifted_passes(&far, mask);
-            if let Some(last) = passes.last_mut() {
-                last.finished_strips = Some(strips);
-            }
-            render_passes_into(&far, &passes, &shader, &mut framebuffer);
+            let passes = shifted_passes(&far, mask);
+            let output = FrameOutput::FramebufferAndStrips(&mut framebuffer, strips);
+            render(&far, &passes, &shader, output, None);
         });
         assert_eq!(indices, every_strip(), "each strip once");
         let expected: Vec<u8> = framebuffer.to_srgb8().into_iter().flatten().collect();
@@ -469,7 +469,8 @@ fn refining_passes_render_only_the_moved_pixels_as_separate_passes_would() {
                 },
                 refined: &mut refined,
             };
-            render_refining_passes_into(&far, &passes, &shader, &mut got, Some(refinement));
+            let output = FrameOutput::Framebuffer(&mut got);
+            render(&far, &passes, &shader, output, Some(refinement));
             assert!(refined == expected, "{what}: not the moved pixels");
             assert_same(&got, &want, &what);
             let count = expected.iter().filter(|&&r| r).count();

@@ -2,10 +2,9 @@
 //! top-left rule gives each shared edge and vertex to exactly one triangle. So do the sample
 //! points of a supersampling pass, which the rasteriser moves off the centres.
 
+use crate::common::render_with;
 use crate::common::*;
-use bumpwork::raster::{
-    Fragment, FrameObject, ImageWindow, PerFragment, PreparedScene, render_with,
-};
+use bumpwork::raster::{Fragment, FrameObject, ImageWindow, PerFragment, PreparedScene};
 use bumpwork::raster::{
     PixelRect, RenderTarget, SampleShift, ShiftSpan, Viewport, frame_objects, scan_shifted,
     screen_triangles,

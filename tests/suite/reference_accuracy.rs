@@ -2,10 +2,9 @@
 //! is exact (planes, triangles), within stated bounds on the curved presets at the default
 //! tessellation, and converging as the tessellation grows.
 
+use crate::common::render_with;
 use crate::reference_support::*;
-use bumpwork::raster::{
-    Fragment, FrameObject, PerFragment, PreparedScene, RenderTarget, render_with,
-};
+use bumpwork::raster::{Fragment, FrameObject, PerFragment, PreparedScene, RenderTarget};
 use bumpwork::reference::render_reference;
 use bumpwork::scene::preset;
 use bumpwork::surface::Tessellation;

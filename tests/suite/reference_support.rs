@@ -1,7 +1,8 @@
 //! Helpers shared by the reference renderer's tests: render a scene both ways, compare.
 #![allow(dead_code)]
 
-use bumpwork::raster::{Framebuffer, PreparedScene, RenderTarget, Viewport, render_with};
+use crate::common::render_with;
+use bumpwork::raster::{Framebuffer, PreparedScene, RenderTarget, Viewport};
 use bumpwork::reference::{FrameError, ShadedAndNormals, render_reference};
 use bumpwork::scene::Camera;
 use bumpwork::scene::Scene;

@@ -1,9 +1,10 @@
 //! Supersampled stills in bands: edges get intermediate values (and keep their area), a still
 //! streamed in bands matches the same still rendered whole, and no value is lost or made up.
 
+use crate::common::render_with;
 use bumpwork::raster::{
     Fragment, FrameObject, FrameStats, Framebuffer, ImageWindow, Interpolation, PerFragment,
-    PreparedScene, RenderTarget, Viewport, render_with,
+    PreparedScene, RenderTarget, Viewport,
 };
 use bumpwork::scene::Camera;
 use bumpwork::scene::{Material, Object, Scene};
