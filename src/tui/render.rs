@@ -155,19 +155,8 @@ pub fn render_picture_pass(
             rendered: RenderedFrame::default(),
         };
     }
-    let (render_w, render_h) = square_render_size(shape, cols, rows, supersampling);
-    let rendered = render_frame_at(
-        view,
-        render_w as u32,
-        render_h as u32,
-        sampling,
-        framebuffer,
-    );
-    PicturePass {
-        linear: resample_linear(framebuffer, size.0, size.1),
-        size,
-        rendered,
-    }
+    let render_size = square_render_size(shape, cols, rows, supersampling);
+    render_resampled(view, render_size, size, sampling, framebuffer)
 }
 
 /// Renders `view` at `size` square pixels, `supersampling` × `supersampling` rendered pixels to
@@ -187,7 +176,19 @@ pub fn render_pixels_pass(
             rendered: RenderedFrame::default(),
         };
     }
-    let (render_w, render_h) = (size.0 * supersampling, size.1 * supersampling);
+    let render_size = (size.0 * supersampling, size.1 * supersampling);
+    render_resampled(view, render_size, size, sampling, framebuffer)
+}
+
+/// Renders `view` at `render_size` square pixels and averages them over the areas of a `size`
+/// picture.
+fn render_resampled(
+    view: &View,
+    (render_w, render_h): (usize, usize),
+    size: (usize, usize),
+    sampling: Sampling,
+    framebuffer: &mut Framebuffer,
+) -> PicturePass {
     let rendered = render_frame_at(
         view,
         render_w as u32,

@@ -187,3 +187,29 @@ pub fn psnr(a: &[u8], b: &[u8]) -> f64 {
         / a.len() as f64;
     10.0 * (255.0f64.powi(2) / mse).log10()
 }
+
+/// A still of `scene`'s own view at `size`, 64 samples box-filtered: what a settled picture of
+/// that size should show.
+pub fn settled_still(scene: &str, (width, height): (usize, usize)) -> Vec<u8> {
+    let dir = crate::cli_support::temp_dir("settled-still");
+    let path = dir.join("still.png");
+    let size = format!("{width}x{height}");
+    let output = crate::cli_support::bumpwork(&[
+        "render",
+        scene,
+        "--size",
+        &size,
+        "--samples",
+        "64",
+        "--filter",
+        "box",
+        "-o",
+        path.to_str().unwrap(),
+    ]);
+    assert!(
+        output.status.success(),
+        "{}",
+        crate::cli_support::stderr(&output)
+    );
+    crate::cli_support::decode_png(&path).2
+}

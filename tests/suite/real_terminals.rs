@@ -99,7 +99,7 @@ fn screenshot(terminal: &str, seconds: u32, dir: &Path) -> Shot {
 
 /// The picture on `shot` (all rows of the window but the status line's) against a still of
 /// the same view at its size: PSNR in dB.
-fn picture_against_still(shot: &Shot, dir: &Path) -> f64 {
+fn picture_against_still(shot: &Shot) -> f64 {
     let (width, height) = shot.window();
     assert!(
         width >= COLS && height >= ROWS,
@@ -107,64 +107,43 @@ fn picture_against_still(shot: &Shot, dir: &Path) -> f64 {
     );
     let (cell_w, cell_h) = (width / COLS, height / ROWS);
     let picture = (COLS * cell_w, (ROWS - 1) * cell_h);
-    let still = dir.join("still.png");
-    let size = format!("{}x{}", picture.0, picture.1);
-    let output = crate::cli_support::bumpwork(&[
-        "render",
-        SCENE,
-        "--size",
-        &size,
-        "--samples",
-        "64",
-        "--filter",
-        "box",
-        "-o",
-        still.to_str().unwrap(),
-    ]);
-    assert!(output.status.success());
-    let expected = crate::cli_support::decode_png(&still).2;
+    let expected = crate::graphics_support::settled_still(SCENE, picture);
     psnr(&expected, &shot.crop(picture.0, picture.1))
+}
+
+/// The workbench in the terminal `command` starts (it names the binary with `{bumpwork}`),
+/// when `tools` are there: its settled picture against the still, at least `bound` dB.
+fn shows_the_picture(name: &str, tools: &[&str], command: &str, bound: f64) {
+    if let Some(reason) = missing(tools) {
+        eprintln!("skipped: {reason}");
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let command = command.replace("{bumpwork}", env!("CARGO_BIN_EXE_bumpwork"));
+    let shot = screenshot(&format!("{command} view {SCENE}"), 8, dir.path());
+    let db = picture_against_still(&shot);
+    eprintln!("{name}: {db:.1} dB against the still");
+    assert!(db >= bound, "{name}'s picture is {db:.1} dB from the still");
 }
 
 #[test]
 fn kitty_shows_the_picture_in_its_own_pixels() {
-    if let Some(reason) = missing(&["xvfb-run", "kitty", "xwd"]) {
-        eprintln!("skipped: {reason}");
-        return;
-    }
-    let dir = tempfile::tempdir().unwrap();
     let kitty = format!(
         "kitty --config NONE -o font_size=10 -o remember_window_size=no \
          -o initial_window_width={COLS}c -o initial_window_height={ROWS}c \
          -o window_padding_width=0 -o placement_strategy=top-left -o enable_audio_bell=no \
-         {} view {SCENE}",
-        env!("CARGO_BIN_EXE_bumpwork")
+         {{bumpwork}}"
     );
-    let shot = screenshot(&kitty, 8, dir.path());
-    let db = picture_against_still(&shot, dir.path());
-    eprintln!("kitty: {db:.1} dB against the still");
-    assert!(db >= 40.0, "kitty's picture is {db:.1} dB from the still");
+    shows_the_picture("kitty", &["xvfb-run", "kitty", "xwd"], &kitty, 40.0);
 }
 
 #[test]
 fn xterm_as_a_vt340_shows_the_picture_in_sixels() {
-    if let Some(reason) = missing(&["xvfb-run", "xterm", "xwd"]) {
-        eprintln!("skipped: {reason}");
-        return;
-    }
-    let dir = tempfile::tempdir().unwrap();
     let xterm = format!(
         "xterm -ti vt340 -xrm 'XTerm*numColorRegisters: 256' -geometry {COLS}x{ROWS}+0+0 \
-         -bw 0 -b 0 -fa Monospace -fs 10 -e {} view {SCENE}",
-        env!("CARGO_BIN_EXE_bumpwork")
+         -bw 0 -b 0 -fa Monospace -fs 10 -e {{bumpwork}}"
     );
-    let shot = screenshot(&xterm, 8, dir.path());
-    let db = picture_against_still(&shot, dir.path());
-    eprintln!("xterm sixel: {db:.1} dB against the still");
-    assert!(
-        db >= 30.0,
-        "xterm's sixel picture is {db:.1} dB from the still"
-    );
+    shows_the_picture("xterm's sixel", &["xvfb-run", "xterm", "xwd"], &xterm, 30.0);
 }
 
 #[test]

@@ -24,8 +24,9 @@ fn app(scene: &str) -> App {
     App::new(&options, ColorMode::TrueColor).unwrap()
 }
 
-/// Everything a workbench in `protocol` writes until its picture has settled, in process.
-fn settled_output(scene: &str, protocol: Protocol) -> Vec<u8> {
+/// A workbench in `protocol` and everything it writes until its picture has settled, in
+/// process.
+fn settled(scene: &str, protocol: Protocol) -> (App, Screen, Vec<u8>) {
     let mut app = app(scene);
     app.graphics = Some(protocol);
     let mut screen = Screen::new(COLS, ROWS);
@@ -35,32 +36,17 @@ fn settled_output(scene: &str, protocol: Protocol) -> Vec<u8> {
     while screen.refining(&app) {
         screen.refine(&mut app, &mut out).unwrap();
     }
-    out
+    (app, screen, out)
 }
 
-/// A still of the scene's own view at the picture's size, 64 samples box-filtered.
+/// What a workbench in `protocol` writes until its picture has settled.
+fn settled_output(scene: &str, protocol: Protocol) -> Vec<u8> {
+    settled(scene, protocol).2
+}
+
+/// A still of the scene's own view at the picture's size.
 fn still(scene: &str) -> Vec<u8> {
-    let dir = crate::cli_support::temp_dir("graphics-still");
-    let path = dir.join("still.png");
-    let size = format!("{}x{}", PICTURE.0, PICTURE.1);
-    let output = crate::cli_support::bumpwork(&[
-        "render",
-        scene,
-        "--size",
-        &size,
-        "--samples",
-        "64",
-        "--filter",
-        "box",
-        "-o",
-        path.to_str().unwrap(),
-    ]);
-    assert!(
-        output.status.success(),
-        "{}",
-        crate::cli_support::stderr(&output)
-    );
-    crate::cli_support::decode_png(&path).2
+    crate::graphics_support::settled_still(scene, PICTURE)
 }
 
 #[test]
@@ -119,15 +105,7 @@ fn sixel_dithers_onto_256_colours_within_its_bound() {
 
 #[test]
 fn an_idle_pixel_picture_sends_nothing_and_leaving_kitty_deletes_its_image() {
-    let mut app = app("plane-dimples");
-    app.graphics = Some(Protocol::Kitty);
-    let mut screen = Screen::new(COLS, ROWS);
-    screen.set_pixel_route(route(false), &mut app);
-    let mut out = Vec::new();
-    screen.draw(&mut app, &mut out).unwrap();
-    while screen.refining(&app) {
-        screen.refine(&mut app, &mut out).unwrap();
-    }
+    let (mut app, mut screen, _) = settled("plane-dimples", Protocol::Kitty);
     let mut idle = Vec::new();
     screen.draw(&mut app, &mut idle).unwrap();
     screen.refine(&mut app, &mut idle).unwrap();
