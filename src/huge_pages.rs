@@ -1,14 +1,12 @@
-//! Large buffers on huge pages where the system allows. On this project's virtual machines a
-//! first touch of a 4 KiB page costs microseconds and a scattered write misses the TLB: a 1080p
-//! framebuffer is 8 000 such pages but 17 huge ones of 2 MiB. Measured on a 1080p still, process
-//! medians of alternating runs: 106 → 92–96 ms at one sample (two series of 12 and 16 runs),
-//! 377 → 341 ms at 16 adaptive samples (8 runs).
+//! Large buffers on huge pages where the system allows. On virtual machines a first touch of a
+//! 4 KiB page can cost microseconds and a scattered write misses the TLB: a 1080p framebuffer is
+//! 8 000 such pages but 17 huge ones of 2 MiB.
 
 /// A zeroed buffer of `n` values whose whole pages are marked for huge pages before anything
 /// touches them (Linux transparent huge pages in `madvise` mode; elsewhere a plain zeroed buffer).
 /// Zeroed by the rayon pool, a part a thread: once a process has freed a buffer this large,
-/// glibc serves the next from its heap, where `calloc` zeroes it in one serial `memset` (a
-/// 1080p adaptive still's band framebuffer: ~10 ms on one core while the other waited).
+/// glibc serves the next from its heap, where `calloc` zeroes it in one serial `memset` on one
+/// core while the other waits.
 pub fn zeroed_huge<T: bytemuck::Zeroable + Clone + Send + Sync>(n: usize) -> Vec<T> {
     use rayon::prelude::*;
     let mut values: Vec<T> = Vec::with_capacity(n);

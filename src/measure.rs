@@ -43,9 +43,9 @@ impl Timing {
 
     /// Runs `works` in turn, round after round: `warmup` unmeasured rounds, then `runs`
     /// measured ones. Side by side, so a machine whose speed drifts (as virtual machines' does,
-    /// by tens of per cent within minutes) slows them alike. Each work is a number of unmeasured
-    /// runs to settle before its measured one (this machine runs a short task at half speed
-    /// after an idle or a switch of task) and the work. Each work's times, in round order.
+    /// within minutes) slows them alike. Each work is a number of unmeasured runs to settle
+    /// before its measured one (a virtual machine may run a short task slowly after an idle or
+    /// a switch of task) and the work. Each work's times, in round order.
     pub fn interleaved(
         warmup: usize,
         runs: usize,

@@ -10,10 +10,10 @@ use std::io::Write;
 use std::path::Path;
 use std::sync::{Arc, Mutex, PoisonError};
 
-/// Compressed bytes per image-data chunk. The encoder's default, 4 KiB, made a 1080p still
-/// a thousand small writes, and on ext4 each write into a new page cache folio zeroed the rest
-/// of it (4 % of a one-sample still's CPU time). At 1 MiB a 1080p still (~1 MB) was one write,
-/// copied into the page cache after its last row while the other core idled.
+/// Compressed bytes per image-data chunk. The encoder's default, 4 KiB, makes a 1080p still a
+/// thousand small writes, and on ext4 each write into a new page cache folio zeroes the rest of
+/// it; a chunk as large as a whole still would be one write, copied into the page cache after
+/// its last row while the other core idles.
 const CHUNK_BYTES: usize = 1 << 17;
 
 /// A PNG being written: rows go in top first; `finish` completes it and makes it appear.

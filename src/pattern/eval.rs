@@ -241,8 +241,8 @@ fn run_instrs<T: Lane>(instrs: &[Instr], slots: &mut [T::Real]) {
 /// the widest SIMD the CPU has. Every instruction runs over all `CHUNK` lanes, also in a
 /// chunk of fewer fragments: the lanes past its end hold an earlier chunk's values (or the
 /// zeros scratch starts with), are computed and never stored. The fixed trip count lets each
-/// lane loop compile to straight SIMD with no remainder loop (2.8% fewer instructions a frame
-/// of the POV-Ray peer scene), at the cost of a part chunk per group.
+/// lane loop compile to straight SIMD with no remainder loop, at the cost of a part chunk per
+/// group.
 #[inline(always)]
 fn run_instrs_here<T: Lane>(instrs: &[Instr], slots: &mut [T::Real]) {
     for instr in instrs {

@@ -101,7 +101,7 @@ pub fn apply<T: Scalar>(op: Op, a: T, b: T, c: T) -> T {
 }
 
 /// `x.floor()` without the library call it compiles to on baseline x86-64 (no SSE4.1
-/// `roundsd`): checks and dimples floor twice per fragment, and the call was 8% of a frame.
+/// `roundsd`): checks and dimples floor twice per fragment, where a call per lane shows.
 /// Branch-free (selects only, no float → integer conversion, which SSE2 has no packed `f64`
 /// form of), so the lane loops of `mod`, `floor` and `fract` vectorise. Exact for every value:
 /// adding and taking away `WHOLE` rounds |x| < `WHOLE` to a whole number, and from `WHOLE` on

@@ -34,7 +34,7 @@ fn lanes<R: Real>(slots: &[R], index: usize, n: usize) -> &[R] {
 }
 
 /// `values` and true if all are finite, else zeros and false: selects, not branches, so the
-/// output loops vectorise (branching, they were 6% of a frame's instructions).
+/// output loops vectorise.
 #[inline(always)]
 fn finite_or_zero<const N: usize>(values: [f32; N]) -> ([f32; N], bool) {
     let finite = values.iter().fold(true, |all, v| all & v.is_finite());

@@ -83,10 +83,10 @@ impl Default for Quality {
 
 impl Quality {
     /// Coarse meshes and nearest texels, for slow machines and huge terminals. It keeps
-    /// perspective-correct (u,v): affine costs no measurable time here and is off by whole
-    /// pattern periods on the two-triangle planes (17.8 against 45.5 dB on sphere-on-plane-
-    /// dimples in `bumpwork bench`); and the exact frame: interpolated vertex normals measure
-    /// slower, a point location per fragment against two `sincos`.
+    /// perspective-correct (u,v): affine saves no measurable time and is off by whole pattern
+    /// periods on the two-triangle planes (`bumpwork bench` shows both); and the exact frame:
+    /// interpolated vertex normals are slower, a point location per fragment against two
+    /// `sincos`.
     pub fn draft() -> Quality {
         Quality {
             tessellation: 16,

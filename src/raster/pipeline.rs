@@ -183,9 +183,8 @@ pub(super) fn shifted_screen_triangles(
 
 /// The lists one after another. Screen triangles are large and there are many: a lone list is
 /// moved, and several are copied once, in parallel, into a list of the exact size zeroed in
-/// parallel (joined on one thread, object by object, the copies and their fresh pages' faults
-/// took ~1 ms of a 1080p still's set-up while the other core waited; `calloc`'s serial zeroing
-/// took most of that again).
+/// parallel: joined on one thread, object by object, the copies and their fresh pages' faults
+/// (and `calloc`'s serial zeroing) would keep the other core waiting.
 fn join_in_order<T: Copy + Zeroable + Send + Sync>(mut lists: Vec<Vec<T>>) -> Vec<T> {
     if lists.len() <= 1 {
         return lists.pop().unwrap_or_default();

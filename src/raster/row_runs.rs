@@ -46,8 +46,8 @@ const ROW: usize = RowBits::BITS as usize;
 
 /// The bit set of a row's positive elements (at most 64). A whole tile row, the usual case,
 /// takes one SSE2 compare and mask move per four: the compiler's own vectorisation of the
-/// loop moved each lane's bit separately, and two rows' bit sets took 6 % of an adaptive
-/// still's time (measured).
+/// loop moves each lane's bit separately, which shows in adaptive stills, whose masked passes
+/// make bit sets of every row.
 #[inline(always)]
 fn positive_bits(row: &[f32]) -> RowBits {
     #[cfg(target_arch = "x86_64")]

@@ -25,8 +25,8 @@ enum PointPartials {
 
 /// Reusable input and output buffers for one pattern evaluation at a time. They grow to the
 /// largest group seen and never shrink: each evaluation writes the first `group.len()` entries
-/// of those it uses (shrinking and regrowing them, as groups of two patterns alternated, zeroed
-/// them again each time: 3% of a frame's instructions).
+/// of those it uses (shrinking and regrowing them, as groups of two patterns alternate, would
+/// zero them again each time).
 #[derive(Default)]
 pub struct PatternBatch {
     /// The lanes the patterns are evaluated in.

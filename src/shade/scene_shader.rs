@@ -146,10 +146,10 @@ impl FragmentShader for LitShader {
 }
 
 /// How many of an object's fragments are shaded together. Without patterns, a chunk's working
-/// arrays (frames, texels, points, normals…) stay in L1 cache from stage to stage: 256 made the
-/// euc peer's frame 2-3% faster than whole tiles (64, 128 and 1024 gained less). The pattern
-/// interpreter instead spreads its per-instruction dispatch over every lane it gets, so
-/// patterned objects are shaded whole (chunks of 256 made the POV-Ray peer's frame 3-5% slower).
+/// arrays (frames, texels, points, normals…) stay in L1 cache from stage to stage; 256 was the
+/// fastest of the sizes tried on the euc peer's frame. The pattern interpreter instead spreads
+/// its per-instruction dispatch over every lane it gets, so patterned objects are shaded whole
+/// (chunks made the POV-Ray peer's frame slower).
 fn chunk_size(object: &FrameObject) -> usize {
     const IN_CACHE: usize = 256;
     let material = &object.prepared.material;
@@ -640,7 +640,7 @@ fn group_by_object(
     order.clear();
     if let Some(object) = single_object(fragments) {
         // Most batches (a tile's visible pixels) see one object: already in order. Counting
-        // them one by one was a chain of increments of one memory slot, ~4% of a frame.
+        // them one by one would be a chain of increments of one memory slot.
         let object = object as usize;
         starts.extend((0..=objects).map(|o| if o <= object { 0 } else { fragments.len() }));
         order.extend(0..fragments.len() as u32);

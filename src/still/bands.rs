@@ -17,8 +17,7 @@ pub const BAND_BUDGET_BYTES: u64 = 128 << 20;
 
 /// Bytes a band may hold per pixel: the framebuffer its passes add into (colour and depth), the
 /// adaptive mask and the refined pixels. Not counted: the band's 8-bit rows waiting for the
-/// still's writer, at most 3 more a pixel and in practice under half of that (an 8K adaptive
-/// still peaks at 134–141 MB).
+/// still's writer, at most 3 more a pixel and in practice under half of that.
 const BYTES_PER_BAND_PIXEL: u64 = 18;
 
 /// Supersampling passes are rendered a group at a time, tile by tile (`raster::render`): the
@@ -33,8 +32,8 @@ const TRIANGLE_BYTES_PER_GROUP: usize = 64 << 20;
 
 /// When adaptive supersampling refines (`Supersampling::refining_order`), a marked pixel gets
 /// the rest of its samples where its first samples' mean is more than this times the contrast
-/// from its centre. Simulated on the POV-Ray peer's frame, with the settled pixels' centre mix:
-/// from 0.15 to 0.6 of the contrast, the fewest samples for POV-Ray's error came at 0.35–0.45.
+/// from its centre: the value that took the fewest samples for POV-Ray's error in a
+/// simulation on the POV-Ray peer's frame.
 const REFINE_CONTRAST: f32 = 0.4;
 
 /// Rows per band for a `width`-wide image within `budget_bytes`: whole tiles, at least one.
@@ -169,9 +168,9 @@ impl<S: FragmentShader> BandJob<'_, S> {
                 return None;
             }
             // A refining still mixes the centre with its samples, and leaves it where it marks
-            // nothing as their stand-in: it samples textures as they do. Simulated on the
-            // POV-Ray peer's frame, that had 14 % less error at contrast 0.1 than a pixel-wide
-            // footprint. The tent's samples spread over two pixels' width.
+            // nothing as their stand-in: it samples textures as they do (less error than a
+            // pixel-wide footprint, simulated on the POV-Ray peer's frame). The tent's samples
+            // spread over two pixels' width.
             let centre_footprint = if refining.is_some() { footprint } else { 1.0 };
             let centre = target(Vec2::ZERO, centre_footprint, None, Blend::Replace);
             let output = FrameOutput::Framebuffer(&mut buffers.frame);
