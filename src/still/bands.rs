@@ -120,147 +120,285 @@ impl<S: FragmentShader> BandJob<'_, S> {
         on_pass: &mut dyn FnMut(),
         finished_strips: Option<&Srgb8Strips<'_>>,
     ) -> Option<FrameStats> {
-        let viewport = Viewport {
-            width: self.full.width,
-            height: rows.end - rows.start,
-        };
-        let offsets = self.supersampling.offsets();
-        let target = |offset, footprint, mask, blend| RenderTarget {
-            window: ImageWindow {
-                full: self.full,
-                x0: 0,
-                y0: rows.start,
-                offset,
+        let band = Band {
+            job: self,
+            viewport: Viewport {
+                width: self.full.width,
+                height: rows.end - rows.start,
             },
-            footprint,
-            mask,
-            blend,
-            ..RenderTarget::new(self.camera, viewport).with_interpolation(self.interpolation)
+            rows,
+            finished_strips,
         };
-        // The pass that finishes the band hands its strips on and, when nobody takes them,
-        // leaves the band's depth; supersampling passes before it write no depth.
-        let finishing = |target| RenderTarget {
-            writes_depth: finished_strips.is_none(),
-            ..target
-        };
-        let adaptive = self.adaptive_threshold();
-        if offsets.len() == 1 && adaptive.is_none() {
+        let samples = self.sample_order();
+        let mut stats = FrameStats::default();
+        let mut marked = None;
+        let first_steps = self.first_steps();
+        for step in &first_steps {
             if !keep_going() {
                 return None;
             }
-            let footprint = self.supersampling.footprint();
-            let target = finishing(target(offsets[0], footprint, None, Blend::Replace));
-            // One pass handing its strips on needs no framebuffer.
-            let output = match finished_strips {
-                Some(strips) => FrameOutput::Strips(strips),
-                None => FrameOutput::Framebuffer(&mut buffers.frame),
+            stats = match step {
+                BandStep::Single => band.single(samples.offsets[0], buffers),
+                BandStep::Centre { footprint } => {
+                    let (stats, count) = band.centre(*footprint, buffers);
+                    marked = Some(count);
+                    stats
+                }
+                BandStep::Passes { .. } => unreachable!("sample passes are planned after"),
             };
-            let stats = render(self.prepared, &[target], self.shader, output, None);
             on_pass();
+        }
+        if first_steps.contains(&BandStep::Single) {
             return Some(stats);
         }
-        let mut stats = FrameStats::default();
-        let mut mask = std::mem::take(&mut buffers.mask);
-        let refining = adaptive.and(self.supersampling.refining_order());
-        let footprint = self.supersampling.footprint();
-        if let Some(threshold) = adaptive {
+        let rendered =
+            marked.unwrap_or(band.viewport.width as usize * band.viewport.height as usize);
+        let per_group = passes_per_group(rendered, self.prepared.triangle_count());
+        for step in sample_steps(&samples, marked.is_some(), per_group) {
             if !keep_going() {
                 return None;
             }
+            let BandStep::Passes { passes, .. } = &step else {
+                unreachable!("sample steps are passes");
+            };
+            let count = passes.len();
+            stats = add_stats(stats, band.passes(&step, &samples, buffers));
+            (0..count).for_each(|_| on_pass());
+        }
+        Some(stats)
+    }
+
+    /// The sample passes' order and how they meet: the supersampling offsets, or the refining
+    /// order of adaptive supersampling that refines.
+    fn sample_order(&self) -> SampleOrder {
+        let refining = self
+            .adaptive_threshold()
+            .and(self.supersampling.refining_order());
+        match refining {
+            Some(order) => SampleOrder {
+                offsets: order.offsets,
+                first: Some(order.first),
+                centre_weight: order.centre_weight,
+            },
+            None => SampleOrder {
+                offsets: self.supersampling.offsets(),
+                first: None,
+                centre_weight: 0.0,
+            },
+        }
+    }
+
+    /// What comes before the sample passes: the whole band in one pass, or the centre pass of
+    /// adaptive supersampling, or nothing.
+    fn first_steps(&self) -> Vec<BandStep> {
+        let footprint = self.supersampling.footprint();
+        match self.adaptive_threshold() {
+            None if self.supersampling.offsets().len() == 1 => vec![BandStep::Single],
+            None => Vec::new(),
             // A refining still mixes the centre with its samples, and leaves it where it marks
             // nothing as their stand-in: it samples textures as they do (less error than a
             // pixel-wide footprint, simulated on the POV-Ray peer's frame). The tent's samples
             // spread over two pixels' width.
-            let centre_footprint = if refining.is_some() { footprint } else { 1.0 };
-            let centre = target(Vec2::ZERO, centre_footprint, None, Blend::Replace);
-            let output = FrameOutput::Framebuffer(&mut buffers.frame);
-            stats = render(self.prepared, &[centre], self.shader, output, None);
-            contrast_mask(&buffers.frame, threshold, &mut mask);
-            // A band's outer rows cannot see across the band's border: sample them fully
-            // where another band lies beyond (at most 2 rows in 64).
-            let (width, pixels) = (viewport.width as usize, mask.len());
-            if rows.start > 0 {
-                mask[..width].fill(true);
+            Some(_) if self.supersampling.refining_order().is_some() => {
+                vec![BandStep::Centre { footprint }]
             }
-            if rows.end < self.full.height {
-                mask[pixels - width..].fill(true);
-            }
-            on_pass();
+            Some(_) => vec![BandStep::Centre { footprint: 1.0 }],
         }
-        let (offsets, first_samples, centre_weight) = match refining {
-            Some(order) => (order.offsets, Some(order.first), order.centre_weight),
-            None => (offsets, None, 0.0),
+    }
+}
+
+/// One step of a band's render.
+#[derive(Clone, Debug, PartialEq)]
+enum BandStep {
+    /// One pass at the only sample, replacing every pixel: the whole band.
+    Single,
+    /// A pass at pixel centres, whose contrast marks the pixels the samples go to.
+    Centre { footprint: f32 },
+    /// Sample passes `passes` of the sample order, rendered together over `pixels`; with
+    /// `refine_from`, the passes from that one on take only the pixels the earlier ones moved.
+    Passes {
+        passes: Range<usize>,
+        pixels: Pixels,
+        refine_from: Option<usize>,
+    },
+}
+
+/// Which pixels a group of sample passes renders.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Pixels {
+    All,
+    /// Those the centre pass marked.
+    Marked,
+    /// Those an earlier group's refinement refined.
+    Refined,
+}
+
+/// The sample passes in the order they are rendered.
+struct SampleOrder {
+    offsets: Vec<Vec2>,
+    /// Refining: how many samples come before the decision to take the rest.
+    first: Option<usize>,
+    /// Refining: the centre's share in a pixel that stops after its first samples.
+    centre_weight: f32,
+}
+
+/// The groups of sample passes, `per_group` passes each (the first of a refining order holds
+/// its first samples and the pass after them, where the refinement is decided), over the
+/// marked pixels when `adaptive`.
+fn sample_steps(order: &SampleOrder, adaptive: bool, per_group: usize) -> Vec<BandStep> {
+    let count = order.offsets.len();
+    let mut steps = Vec::new();
+    let mut start = 0;
+    while start < count {
+        let size = match order.first {
+            Some(first) if start == 0 => per_group.max(first + 1),
+            _ => per_group,
         };
-        let count = offsets.len();
-        let only = adaptive.map(|_| &mask[..]);
-        let blend = |k: usize| pass_blend(k, count, first_samples);
-        let pass = |k: usize| {
-            let pass = target(offsets[k], footprint, None, blend(k));
-            if k == count - 1 {
-                finishing(pass)
-            } else {
-                RenderTarget {
-                    writes_depth: false,
-                    ..pass
-                }
-            }
+        let end = (start + size).min(count);
+        let (pixels, refine_from) = match (order.first, start) {
+            (Some(first), 0) => (Pixels::Marked, Some(first)),
+            (Some(_), _) => (Pixels::Refined, None),
+            (None, _) if adaptive => (Pixels::Marked, None),
+            (None, _) => (Pixels::All, None),
         };
-        // Passes render only the marked pixels when adaptive: groups are sized by those.
-        let rendered = match adaptive {
-            Some(_) => mask.iter().filter(|&&marked| marked).count(),
-            None => viewport.width as usize * viewport.height as usize,
-        };
-        let per_group = passes_per_group(rendered, self.prepared.triangle_count());
-        let mut refined = std::mem::take(&mut buffers.refined);
-        let mut start = 0;
-        while start < count {
-            if !keep_going() {
-                return None;
-            }
-            // A refinement is decided within the group that holds its first samples and the
-            // first of the rest; later groups refine the pixels it recorded.
-            let size = match first_samples {
-                Some(first) if start == 0 => per_group.max(first + 1),
-                _ => per_group,
-            };
-            let end = (start + size).min(count);
-            let mut group: Vec<RenderTarget> = (start..end).map(pass).collect();
-            let (prepared, shader, frame) = (self.prepared, self.shader, &mut buffers.frame);
-            let output = match finished_strips.filter(|_| end == count) {
-                Some(strips) => FrameOutput::FramebufferAndStrips(frame, strips),
-                None => FrameOutput::Framebuffer(frame),
-            };
-            let done = match first_samples {
-                Some(first) if start == 0 => {
-                    group.iter_mut().for_each(|pass| pass.mask = only);
-                    let refinement = Refinement {
-                        rule: RefineRule {
-                            from_pass: first,
-                            threshold: adaptive.unwrap_or_default() * REFINE_CONTRAST,
-                            centre_weight,
-                        },
-                        refined: &mut refined,
-                    };
-                    render(prepared, &group, shader, output, Some(refinement))
-                }
-                later => {
-                    // Groups after a refining one render the pixels it refined.
-                    let mask = if later.is_some() {
-                        Some(&refined[..])
-                    } else {
-                        only
-                    };
-                    group.iter_mut().for_each(|pass| pass.mask = mask);
-                    render(prepared, &group, shader, output, None)
-                }
-            };
-            stats = add_stats(stats, done);
-            (start..end).for_each(|_| on_pass());
-            start = end;
+        steps.push(BandStep::Passes {
+            passes: start..end,
+            pixels,
+            refine_from,
+        });
+        start = end;
+    }
+    steps
+}
+
+/// One band of a job, rendering its steps.
+struct Band<'a, 'j, S> {
+    job: &'a BandJob<'j, S>,
+    rows: Range<u32>,
+    viewport: Viewport,
+    finished_strips: Option<&'a Srgb8Strips<'a>>,
+}
+
+impl<S: FragmentShader> Band<'_, '_, S> {
+    /// A pass of the band sampling at `offset` with `footprint`.
+    fn target(&self, offset: Vec2, footprint: f32, blend: Blend) -> RenderTarget<'_> {
+        RenderTarget {
+            window: ImageWindow {
+                full: self.job.full,
+                x0: 0,
+                y0: self.rows.start,
+                offset,
+            },
+            footprint,
+            blend,
+            ..RenderTarget::new(self.job.camera, self.viewport)
+                .with_interpolation(self.job.interpolation)
         }
-        buffers.refined = refined;
-        buffers.mask = mask;
-        Some(stats)
+    }
+
+    /// The whole band in one pass: straight into the strips when they are asked for (no
+    /// framebuffer needed), else into the band's framebuffer with its depth.
+    fn single(&self, offset: Vec2, buffers: &mut BandBuffers) -> FrameStats {
+        let footprint = self.job.supersampling.footprint();
+        let target = RenderTarget {
+            writes_depth: self.finished_strips.is_none(),
+            ..self.target(offset, footprint, Blend::Replace)
+        };
+        let output = match self.finished_strips {
+            Some(strips) => FrameOutput::Strips(strips),
+            None => FrameOutput::Framebuffer(&mut buffers.frame),
+        };
+        render(self.job.prepared, &[target], self.job.shader, output, None)
+    }
+
+    /// The centre pass and its contrast mask (the band's outer rows marked wholly where another
+    /// band lies beyond: they cannot see across the border); the pixels marked.
+    fn centre(&self, footprint: f32, buffers: &mut BandBuffers) -> (FrameStats, usize) {
+        let threshold = self.job.adaptive_threshold().expect("adaptive");
+        let centre = self.target(Vec2::ZERO, footprint, Blend::Replace);
+        let output = FrameOutput::Framebuffer(&mut buffers.frame);
+        let stats = render(self.job.prepared, &[centre], self.job.shader, output, None);
+        contrast_mask(&buffers.frame, threshold, &mut buffers.mask);
+        let (width, pixels) = (self.viewport.width as usize, buffers.mask.len());
+        if self.rows.start > 0 {
+            buffers.mask[..width].fill(true);
+        }
+        if self.rows.end < self.job.full.height {
+            buffers.mask[pixels - width..].fill(true);
+        }
+        let marked = buffers.mask.iter().filter(|&&m| m).count();
+        (stats, marked)
+    }
+
+    /// A group of sample passes. Each adds its weighted sample (`pass_blend`); the band's last
+    /// pass hands its strips on and, when nobody takes them, leaves the band's depth.
+    fn passes(
+        &self,
+        step: &BandStep,
+        order: &SampleOrder,
+        buffers: &mut BandBuffers,
+    ) -> FrameStats {
+        let BandStep::Passes {
+            passes,
+            pixels,
+            refine_from,
+        } = step
+        else {
+            unreachable!("a group of passes");
+        };
+        let count = order.offsets.len();
+        let footprint = self.job.supersampling.footprint();
+        let BandBuffers {
+            frame,
+            mask,
+            refined,
+        } = buffers;
+        // The refinement writes its decisions into the reused buffer, which no pass of its own
+        // group reads (they are over the marked pixels).
+        let mut decided = match refine_from {
+            Some(_) => std::mem::take(refined),
+            None => Vec::new(),
+        };
+        let wanted = match pixels {
+            Pixels::All => None,
+            Pixels::Marked => Some(&mask[..]),
+            Pixels::Refined => Some(&refined[..]),
+        };
+        let group: Vec<RenderTarget> = passes
+            .clone()
+            .map(|k| RenderTarget {
+                mask: wanted,
+                writes_depth: k == count - 1 && self.finished_strips.is_none(),
+                ..self.target(
+                    order.offsets[k],
+                    footprint,
+                    pass_blend(k, count, order.first),
+                )
+            })
+            .collect();
+        let output = match self.finished_strips.filter(|_| passes.end == count) {
+            Some(strips) => FrameOutput::FramebufferAndStrips(frame, strips),
+            None => FrameOutput::Framebuffer(frame),
+        };
+        let refinement = refine_from.map(|from| Refinement {
+            rule: RefineRule {
+                from_pass: from,
+                threshold: self.job.adaptive_threshold().unwrap_or_default() * REFINE_CONTRAST,
+                centre_weight: order.centre_weight,
+            },
+            refined: &mut decided,
+        });
+        let stats = render(
+            self.job.prepared,
+            &group,
+            self.job.shader,
+            output,
+            refinement,
+        );
+        if refine_from.is_some() {
+            *refined = decided;
+        }
+        stats
     }
 }
 
@@ -315,6 +453,46 @@ pub fn render_supersampled<S: FragmentShader>(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn order(count: usize, first: Option<usize>) -> SampleOrder {
+        SampleOrder {
+            offsets: vec![Vec2::ZERO; count],
+            first,
+            centre_weight: 0.0,
+        }
+    }
+
+    fn groups(steps: &[BandStep]) -> Vec<(Range<usize>, Pixels, Option<usize>)> {
+        steps
+            .iter()
+            .map(|step| match step {
+                BandStep::Passes {
+                    passes,
+                    pixels,
+                    refine_from,
+                } => (passes.clone(), *pixels, *refine_from),
+                other => panic!("{other:?} among the sample passes"),
+            })
+            .collect()
+    }
+
+    #[test]
+    fn sample_passes_are_planned_in_groups_that_cover_every_sample_once() {
+        use Pixels::*;
+        // Full supersampling: groups of the size asked, over every pixel.
+        let full = groups(&sample_steps(&order(16, None), false, 6));
+        assert_eq!(full, [(0..6, All, None), (6..12, All, None), (12..16, All, None)]);
+        // Adaptive: the same groups over the marked pixels.
+        let marked = groups(&sample_steps(&order(16, None), true, 16));
+        assert_eq!(marked, [(0..16, Marked, None)]);
+        // Refining: the first group holds the first samples and the pass that decides, over
+        // the marked pixels; the rest go to the refined ones.
+        let refining = groups(&sample_steps(&order(16, Some(4)), true, 2));
+        assert_eq!(refining[0], (0..5, Marked, Some(4)));
+        assert!(refining[1..].iter().all(|(_, p, r)| *p == Refined && r.is_none()));
+        let covered: Vec<usize> = refining.iter().flat_map(|(r, _, _)| r.clone()).collect();
+        assert_eq!(covered, (0..16).collect::<Vec<_>>());
+    }
 
     #[test]
     fn groups_hold_fewer_passes_as_bands_and_meshes_grow() {
