@@ -28,7 +28,7 @@ pub use pipeline::{
     FrameOutput, FrameStats, Interpolation, PreparedObject, PreparedScene, RenderTarget,
     Srgb8Strips, frame_objects, render, screen_triangles,
 };
-pub use refine::{RefineRule, Refinement};
+pub use refine::{Refine, Refinement, TileRows};
 pub use scan::{PixelRect, scan_shifted, scan_triangle};
 pub use setup::{SUBPIXEL_BITS, SampleShift, ScreenTriangle, ShiftSpan, TrianglePlanes, Viewport};
 pub use strips::STRIP_ROWS;

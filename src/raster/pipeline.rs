@@ -231,7 +231,7 @@ pub fn render(
     assert!(
         refinement
             .as_ref()
-            .is_none_or(|r| r.rule.from_pass < targets.len()),
+            .is_none_or(|r| r.rule.first_decided_pass() < targets.len()),
         "a refinement starts at one of the group's passes"
     );
     let shared = |t: &RenderTarget| {

@@ -1,25 +1,32 @@
-//! Refinement inside a group of passes: a pixel's first samples, then the rest only where
-//! those moved it from what it held before the group.
+//! Refinement inside a group of passes: the later passes take only the pixels a rule decides
+//! on, tile by tile, from what the earlier passes did.
 
-use super::tile::TileRows;
+pub use super::tile::TileRows;
 use glam::Vec3;
 
-/// Adaptive refinement within one group of passes (`raster::render` with a `Refinement`): the
-/// passes from `from_pass` on render only those of the wanted pixels whose colour the earlier
-/// passes moved by more than `threshold` (in √colour, per channel, as the contrast mask
-/// measures) from what the framebuffer held before the group (a still's centre sample). The
-/// wanted pixels that stop there are settled as a mix of the two: `centre_weight` of what was
-/// before.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct RefineRule {
-    pub from_pass: usize,
-    pub threshold: f32,
-    pub centre_weight: f32,
+/// Which pixels the later passes of a group take, decided tile by tile while the tile is in
+/// cache: after the passes before `from_pass`, from the tile's colours then and before the
+/// group's first pass. The still's adaptive refinement is one (`still::RefineRule`).
+pub trait Refine: Sync {
+    /// The first pass that takes only the decided pixels.
+    fn first_decided_pass(&self) -> usize;
+
+    /// Records in `decided` which pixels of the tile at `rows` the later passes take, of those
+    /// `wanted` (all when `None`), from their colours now (`color`, which it may settle) and
+    /// `before` the group (row after row, as `keep_before` copied them).
+    fn decide(
+        &self,
+        color: &mut [Vec3],
+        before: &[Vec3],
+        wanted: Option<&[bool]>,
+        decided: &mut [bool],
+        rows: &TileRows,
+    );
 }
 
-/// A `RefineRule` and where it records its decisions.
+/// A `Refine` and where it records its decisions.
 pub struct Refinement<'a> {
-    pub rule: RefineRule,
+    pub rule: &'a dyn Refine,
     /// Which pixels were refined, row-major over the viewport; every entry is written. The
     /// mask of any later group that goes on refining the same pixels.
     pub refined: &'a mut Vec<bool>,
@@ -33,45 +40,9 @@ pub(super) fn keep_before(color: &[Vec3], rows: &TileRows, before: &mut Vec<Vec3
     }
 }
 
-/// Records in `refined` which pixels of the tile at `rows` are to be refined: those `wanted`
-/// (all when `None`) whose colour moved by more than the rule's threshold from `before`
-/// (`keep_before`'s copy). Settles the other wanted pixels (see `RefineRule`).
-pub(super) fn mark_refined(
-    color: &mut [Vec3],
-    before: &[Vec3],
-    wanted: Option<&[bool]>,
-    refined: &mut [bool],
-    rows: &TileRows,
-    rule: &RefineRule,
-) {
-    let mut before = before.iter();
-    for pixels in rows.each() {
-        for i in pixels {
-            let is_wanted = wanted.is_none_or(|wanted| wanted[i]);
-            let before = *before.next().expect("keep_before kept this tile");
-            refined[i] = is_wanted && moved(color[i], before, rule.threshold);
-            if is_wanted && !refined[i] {
-                color[i] = settled(color[i], before, rule.centre_weight);
-            }
-        }
-    }
-}
-
-/// A pixel that stops refining: its first samples' mean mixed with its centre sample.
-fn settled(mean: Vec3, centre: Vec3, centre_weight: f32) -> Vec3 {
-    mean * (1.0 - centre_weight) + centre * centre_weight
-}
-
 /// Marks every pixel of the tile at `rows` as not refined.
 pub(super) fn mark_none(refined: &mut [bool], rows: &TileRows) {
     for pixels in rows.each() {
         refined[pixels].fill(false);
     }
-}
-
-/// Whether any channel of `now` differs from `before` by more than `threshold` in √colour.
-fn moved(now: Vec3, before: Vec3, threshold: f32) -> bool {
-    let key = |c: Vec3| c.max(Vec3::ZERO).to_array().map(f32::sqrt);
-    let (now, before) = (key(now), key(before));
-    (0..3).any(|c| (now[c] - before[c]).abs() > threshold)
 }

@@ -5,7 +5,7 @@ use super::bin::{TILE_SIZE, TileBins};
 use super::fragment::{FragmentShader, FrameObject};
 use super::framebuffer::{Blend, encode_srgb8};
 use super::pipeline::{Interpolation, RenderTarget, Srgb8Strips, shifted_screen_triangles};
-use super::refine::{RefineRule, keep_before, mark_none, mark_refined};
+use super::refine::{Refine, keep_before, mark_none};
 use super::scan::PixelRect;
 use super::setup::{SampleShift, ScreenTriangle, ShiftSpan, Viewport};
 use super::tile::{StripOutput, TileBuffers, TileFrame, TileRows, any_wanted};
@@ -41,7 +41,7 @@ pub(super) struct StripJob<'a, S> {
     /// Whether the strips' colours go only into their sRGB bytes (`FrameOutput::Strips`).
     pub bytes_only: bool,
     /// The rule the passes refine by, if they do.
-    pub refinement: Option<RefineRule>,
+    pub refinement: Option<&'a dyn Refine>,
 }
 
 /// One strip's share of the framebuffer (empty colour and depth when `bytes_only`).
@@ -91,18 +91,17 @@ impl<S: FragmentShader> StripJob<'_, S> {
             if any_wanted(mask, &tile_rows) {
                 for (k, pass) in self.passes.iter().enumerate() {
                     let mut wanted = mask;
-                    if let Some(rule) = &self.refinement {
+                    if let Some(rule) = self.refinement {
                         if k == 0 {
                             keep_before(color, &tile_rows, &mut tile.before);
                         }
-                        if k == rule.from_pass {
-                            let before = &tile.before;
-                            mark_refined(color, before, mask, refined, &tile_rows, rule);
+                        if k == rule.first_decided_pass() {
+                            rule.decide(color, &tile.before, mask, refined, &tile_rows);
                             if !any_wanted(Some(refined), &tile_rows) {
                                 break;
                             }
                         }
-                        if k >= rule.from_pass {
+                        if k >= rule.first_decided_pass() {
                             wanted = Some(&*refined);
                         }
                     }

@@ -171,7 +171,7 @@ impl StripOutput<'_> {
 }
 
 /// Where a tile's pixels sit in a strip of `width`-pixel rows starting at row `first_row`.
-pub(super) struct TileRows<'r> {
+pub struct TileRows<'r> {
     pub width: u32,
     pub first_row: u32,
     pub rect: &'r PixelRect,

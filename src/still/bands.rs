@@ -2,11 +2,12 @@
 //! resolved in linear light: memory depends on the band, not on the image.
 
 use super::contrast::contrast_mask;
+use super::refine_rule::RefineRule;
 use super::samples::Supersampling;
 use crate::raster::{
     Blend, FragmentShader, FrameOutput, FrameStats, Framebuffer, ImageWindow, Interpolation,
-    PreparedScene, RefineRule, Refinement, RenderTarget, ScreenTriangle, Srgb8Strips, TILE_SIZE,
-    Viewport, render,
+    PreparedScene, Refinement, RenderTarget, ScreenTriangle, Srgb8Strips, TILE_SIZE, Viewport,
+    render,
 };
 use crate::scene::Camera;
 use glam::{Vec2, Vec3};
@@ -380,12 +381,13 @@ impl<S: FragmentShader> Band<'_, '_, S> {
             Some(strips) => FrameOutput::FramebufferAndStrips(frame, strips),
             None => FrameOutput::Framebuffer(frame),
         };
-        let refinement = refine_from.map(|from| Refinement {
-            rule: RefineRule {
-                from_pass: from,
-                threshold: self.job.adaptive_threshold().unwrap_or_default() * REFINE_CONTRAST,
-                centre_weight: order.centre_weight,
-            },
+        let rule = refine_from.map(|from| RefineRule {
+            from_pass: from,
+            threshold: self.job.adaptive_threshold().unwrap_or_default() * REFINE_CONTRAST,
+            centre_weight: order.centre_weight,
+        });
+        let refinement = rule.as_ref().map(|rule| Refinement {
+            rule,
             refined: &mut decided,
         });
         let stats = render(
@@ -481,7 +483,10 @@ mod tests {
         use Pixels::*;
         // Full supersampling: groups of the size asked, over every pixel.
         let full = groups(&sample_steps(&order(16, None), false, 6));
-        assert_eq!(full, [(0..6, All, None), (6..12, All, None), (12..16, All, None)]);
+        assert_eq!(
+            full,
+            [(0..6, All, None), (6..12, All, None), (12..16, All, None)]
+        );
         // Adaptive: the same groups over the marked pixels.
         let marked = groups(&sample_steps(&order(16, None), true, 16));
         assert_eq!(marked, [(0..16, Marked, None)]);
@@ -489,7 +494,11 @@ mod tests {
         // the marked pixels; the rest go to the refined ones.
         let refining = groups(&sample_steps(&order(16, Some(4)), true, 2));
         assert_eq!(refining[0], (0..5, Marked, Some(4)));
-        assert!(refining[1..].iter().all(|(_, p, r)| *p == Refined && r.is_none()));
+        assert!(
+            refining[1..]
+                .iter()
+                .all(|(_, p, r)| *p == Refined && r.is_none())
+        );
         let covered: Vec<usize> = refining.iter().flat_map(|(r, _, _)| r.clone()).collect();
         assert_eq!(covered, (0..16).collect::<Vec<_>>());
     }

@@ -5,6 +5,7 @@ mod bands;
 mod contrast;
 mod in_order;
 mod recipe;
+mod refine_rule;
 mod samples;
 mod saved_view;
 mod stream;
@@ -17,6 +18,7 @@ pub use recipe::{
     FileHash, MAX_SIDE, MAX_TIME_SECONDS, ObjectState, Recipe, RecipeCamera, StillSettings,
     source_directory,
 };
+pub use refine_rule::RefineRule;
 pub use samples::{RefiningOrder, ResolveFilter, Supersampling};
 pub use saved_view::saved_view;
 pub use stream::{RowSink, StillStop, stream_still};

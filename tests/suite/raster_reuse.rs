@@ -5,12 +5,13 @@
 
 use crate::common::render_into;
 use bumpwork::raster::{
-    Blend, FrameOutput, Framebuffer, ImageWindow, PreparedScene, RefineRule, Refinement,
-    RenderTarget, STRIP_ROWS, Srgb8Strips, Viewport, render,
+    Blend, FrameOutput, Framebuffer, ImageWindow, PreparedScene, Refinement, RenderTarget,
+    STRIP_ROWS, Srgb8Strips, Viewport, render,
 };
 use bumpwork::scene::{Scene, preset};
 use bumpwork::shade::LitShader;
 use bumpwork::shade::render_lit;
+use bumpwork::still::RefineRule;
 use bumpwork::surface::Tessellation;
 use glam::{DVec3, Vec2, Vec3};
 use std::sync::Mutex;
@@ -462,7 +463,7 @@ fn refining_passes_render_only_the_moved_pixels_as_separate_passes_would() {
             let mut got = before.clone();
             let mut refined = vec![true; 3];
             let refinement = Refinement {
-                rule: RefineRule {
+                rule: &RefineRule {
                     from_pass: 2,
                     threshold,
                     centre_weight: CENTRE_WEIGHT,
