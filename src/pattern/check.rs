@@ -4,7 +4,7 @@ use std::collections::HashMap;
 
 use super::ast::{Ast, BinaryOp, ExprId, ExprKind, OutputKind, Stmt, UnaryOp};
 use super::error::{PatternError, Span};
-use super::functions::{self, FUNCTIONS, Function};
+use super::functions::{self, Function};
 use super::parser::OUTPUT_NAMES;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -265,7 +265,7 @@ impl Checker<'_> {
             .keys()
             .map(String::as_str)
             .chain(INPUTS.iter().map(|(n, _)| *n))
-            .chain(FUNCTIONS.iter().map(|(n, _)| *n))
+            .chain(functions::names())
             .chain(["pi"]);
         closest(name, known).map_or(String::new(), |n| format!("; did you mean `{n}`?"))
     }
@@ -318,7 +318,7 @@ impl Checker<'_> {
         args: &[ExprId],
     ) -> Result<Type, PatternError> {
         let Some(function) = functions::lookup(name) else {
-            let hint = closest(name, FUNCTIONS.iter().map(|(n, _)| *n))
+            let hint = closest(name, functions::names())
                 .map_or(String::new(), |n| format!("; did you mean `{n}`?"));
             return Err(self.error(span, format!("unknown function `{name}`{hint}")));
         };

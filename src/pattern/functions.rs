@@ -2,7 +2,9 @@
 
 use super::check::Type;
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// A built-in function; its name in a pattern file is the variant's, in lower case.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, strum::VariantArray, strum::IntoStaticStr)]
+#[strum(serialize_all = "lowercase")]
 pub enum Function {
     Sin,
     Cos,
@@ -33,42 +35,27 @@ pub enum Function {
     Rgb,
 }
 
-/// Every function name, for lookup and "did you mean" suggestions.
-pub const FUNCTIONS: &[(&str, Function)] = &[
-    ("sin", Function::Sin),
-    ("cos", Function::Cos),
-    ("tan", Function::Tan),
-    ("asin", Function::Asin),
-    ("acos", Function::Acos),
-    ("atan", Function::Atan),
-    ("atan2", Function::Atan2),
-    ("sqrt", Function::Sqrt),
-    ("abs", Function::Abs),
-    ("sign", Function::Sign),
-    ("floor", Function::Floor),
-    ("ceil", Function::Ceil),
-    ("fract", Function::Fract),
-    ("mod", Function::Mod),
-    ("min", Function::Min),
-    ("max", Function::Max),
-    ("clamp", Function::Clamp),
-    ("mix", Function::Mix),
-    ("step", Function::Step),
-    ("smoothstep", Function::Smoothstep),
-    ("exp", Function::Exp),
-    ("log", Function::Log),
-    ("pow", Function::Pow),
-    ("hypot", Function::Hypot),
-    ("length", Function::Length),
-    ("noise", Function::Noise),
-    ("rgb", Function::Rgb),
-];
+/// Every function's name as a pattern file writes it, for lookup and "did you mean"
+/// suggestions.
+pub fn names<'a>() -> impl Iterator<Item = &'a str> {
+    <Function as strum::VariantArray>::VARIANTS
+        .iter()
+        .map(|&f| -> &'a str { f.name() })
+}
 
 pub fn lookup(name: &str) -> Option<Function> {
-    FUNCTIONS.iter().find(|(n, _)| *n == name).map(|&(_, f)| f)
+    <Function as strum::VariantArray>::VARIANTS
+        .iter()
+        .copied()
+        .find(|f| f.name() == name)
 }
 
 impl Function {
+    /// The name a pattern file calls it by.
+    pub fn name(self) -> &'static str {
+        self.into()
+    }
+
     /// The argument counts this function accepts.
     pub fn arities(self) -> &'static [usize] {
         use Function::*;
@@ -109,5 +96,26 @@ impl Function {
         let n = counts.join(" or ");
         let plural = if self.arities() == [1] { "" } else { "s" };
         format!("{n} argument{plural}")
+    }
+}
+
+#[cfg(test)]
+mod name_tests {
+    use super::*;
+
+    #[test]
+    fn every_function_is_found_by_its_name_and_the_language_reference_lists_it() {
+        let reference = include_str!("../../patterns/README.md");
+        for name in names() {
+            let function = lookup(name).expect("a name finds its function");
+            assert_eq!(function.name(), name);
+            assert!(
+                reference.contains(name),
+                "patterns/README.md does not list `{name}`"
+            );
+        }
+        assert_eq!(lookup("atan2"), Some(Function::Atan2));
+        assert_eq!(lookup("smoothstep"), Some(Function::Smoothstep));
+        assert_eq!(lookup("Sin"), None, "names are lower case");
     }
 }
