@@ -247,15 +247,14 @@ impl Screen {
     fn draw_over_pixels(&mut self, app: &mut App, out: &mut impl Write) -> io::Result<usize> {
         let pixels = self.pixels.as_ref().expect("in pixel mode");
         let send = !pixels.on_screen;
-        let grid_now = |screen: &Screen, app: &App| screen.compose(app);
-        let grid = grid_now(self, app);
-        let picture_cells = self.layout.cols as usize * self.layout.picture_rows as usize;
+        // Before the status line is composed, so it shows the bytes of the picture it goes with.
+        app.report.picture_bytes = pixels.image().len();
+        let grid = self.compose(app);
         let over: Vec<Cell> = (0..self.layout.picture_rows as usize)
             .flat_map(|row| grid.row(row).iter().copied())
             .collect();
         let text_moved = over != self.text_over_pixels && pixels.protocol != Protocol::Kitty;
         let result = if send || text_moved {
-            app.report.picture_bytes = pixels.image().len();
             let under = self.compose_under(app);
             let written = self.writer.draw_around(out, &under, pixels.image(), &grid);
             if pixels.protocol == Protocol::Kitty {
@@ -266,7 +265,6 @@ impl Screen {
         } else {
             self.writer.draw(out, &grid)
         };
-        debug_assert_eq!(over.len(), picture_cells);
         self.text_over_pixels = over;
         app.mark_drawn();
         let bytes = result?;
