@@ -147,6 +147,35 @@ fn xterm_as_a_vt340_shows_the_picture_in_sixels() {
 }
 
 #[test]
+fn kitty_through_tmux_with_passthrough_shows_the_picture_in_pixels() {
+    let dir = tempfile::tempdir().unwrap();
+    let conf = dir.path().join("tmux.conf");
+    std::fs::write(&conf, "set -g allow-passthrough on\nset -g status off\n").unwrap();
+    let socket = format!("bumpwork-kitty-{}", std::process::id());
+    let _server = TmuxServer(socket.clone());
+    let kitty = format!(
+        "kitty --config NONE -o font_size=10 -o remember_window_size=no \
+         -o initial_window_width={COLS}c -o initial_window_height={ROWS}c \
+         -o window_padding_width=0 -o placement_strategy=top-left -o enable_audio_bell=no \
+         tmux -L {socket} -f {} new-session {{bumpwork}}",
+        conf.display()
+    );
+    let tools = ["xvfb-run", "kitty", "xwd", "tmux"];
+    shows_the_picture("kitty through tmux", &tools, &kitty, 40.0);
+}
+
+/// A tmux server of the test's own socket, ended however the test ends.
+struct TmuxServer(String);
+
+impl Drop for TmuxServer {
+    fn drop(&mut self) {
+        let _ = Command::new("tmux")
+            .args(["-L", &self.0, "kill-server"])
+            .output();
+    }
+}
+
+#[test]
 fn tmux_without_passthrough_gets_blocks_and_says_why() {
     if let Some(reason) = missing(&["tmux"]) {
         eprintln!("skipped: {reason}");

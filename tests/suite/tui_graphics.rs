@@ -185,9 +185,14 @@ fn auto_takes_the_terminals_answer_and_its_replies_never_reach_the_keys() {
     );
     session.send("q");
     assert_eq!(session.exit_within(Duration::from_secs(5)), Some(0));
+    // A reply that comes a moment after DA1's (as the outer terminal's do through tmux) is
+    // read with the replies: its `i` does not invert the bump.
     let plain = b"\x1b[?1;2c";
     let mut session = answered_session(&["view", "plane-dimples"], plain);
+    std::thread::sleep(Duration::from_millis(10));
+    session.send("\x1b_Gi=32;ENOENT:late\x1b\\");
     session.wait_for("blocks", status_contains("blocks (the terminal answered"));
+    session.wait_for("the bump as the file has it", status_contains("×1.00"));
     session.send("q");
     assert_eq!(session.exit_within(Duration::from_secs(5)), Some(0));
 }

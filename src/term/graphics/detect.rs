@@ -73,28 +73,47 @@ pub fn queries(through_tmux: bool) -> Vec<u8> {
     out
 }
 
+/// How long input must stay quiet after the replies before the key handler may read: a reply
+/// that comes late (through tmux, the outer terminal's answers follow tmux's own) is taken here,
+/// not as keys.
+const QUIET_AFTER_REPLIES: Duration = Duration::from_millis(40);
+
 /// Sends the queries to standard output and reads the replies from standard input (raw mode
-/// must be on) until DA1's reply or the time-out.
+/// must be on): until DA1's reply (through tmux, which answers DA1 itself, until the outer
+/// terminal's kitty reply too), then until input has been quiet a moment, within the time-out.
 pub fn query_terminal(through_tmux: bool) -> io::Result<Replies> {
     let mut out = io::stdout().lock();
     out.write_all(&queries(through_tmux))?;
     out.flush()?;
     let deadline = Instant::now() + REPLY_TIME_OUT;
     let mut bytes = Vec::new();
-    while bytes.len() < MAX_REPLY_BYTES && !Replies::parse(&bytes).attributes {
+    let answered = |bytes: &[u8]| {
+        let replies = Replies::parse(bytes);
+        replies.attributes && (!through_tmux || replies.kitty)
+    };
+    while bytes.len() < MAX_REPLY_BYTES {
         let left = deadline.saturating_duration_since(Instant::now());
-        if left.is_zero() || !readable(left)? {
+        let wait = match answered(&bytes) {
+            true => left.min(QUIET_AFTER_REPLIES),
+            false => left,
+        };
+        if wait.is_zero() || !readable(wait)? || !read_some(&mut bytes) {
             break;
         }
-        let mut buffer = [0u8; 512];
-        // SAFETY: reading into a buffer of the length given, from our own standard input.
-        let n = unsafe { libc::read(0, buffer.as_mut_ptr().cast(), buffer.len()) };
-        if n <= 0 {
-            break;
-        }
-        bytes.extend_from_slice(&buffer[..n as usize]);
     }
     Ok(Replies::parse(&bytes))
+}
+
+/// Appends what standard input holds now to `bytes`; false at its end or on an error.
+fn read_some(bytes: &mut Vec<u8>) -> bool {
+    let mut buffer = [0u8; 512];
+    // SAFETY: reading into a buffer of the length given, from our own standard input.
+    let n = unsafe { libc::read(0, buffer.as_mut_ptr().cast(), buffer.len()) };
+    if n <= 0 {
+        return false;
+    }
+    bytes.extend_from_slice(&buffer[..n as usize]);
+    true
 }
 
 /// Whether standard input has bytes within `wait`.
