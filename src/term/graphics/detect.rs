@@ -10,6 +10,10 @@ use std::time::{Duration, Instant};
 /// The longest wait for the replies: every terminal answers DA1, which comes last.
 pub const REPLY_TIME_OUT: Duration = Duration::from_millis(400);
 
+/// The longest wait over SSH, where the replies cross the link and back: a reply after the wait
+/// would reach the key handler.
+pub const REPLY_TIME_OUT_OVER_SSH: Duration = Duration::from_millis(1500);
+
 /// Bytes of replies read at most.
 const MAX_REPLY_BYTES: usize = 4096;
 
@@ -85,7 +89,13 @@ pub fn query_terminal(through_tmux: bool) -> io::Result<Replies> {
     let mut out = io::stdout().lock();
     out.write_all(&queries(through_tmux))?;
     out.flush()?;
-    let deadline = Instant::now() + REPLY_TIME_OUT;
+    let over_ssh =
+        std::env::var_os("SSH_TTY").is_some() || std::env::var_os("SSH_CONNECTION").is_some();
+    let time_out = match over_ssh {
+        true => REPLY_TIME_OUT_OVER_SSH,
+        false => REPLY_TIME_OUT,
+    };
+    let deadline = Instant::now() + time_out;
     let mut bytes = Vec::new();
     let answered = |bytes: &[u8]| {
         let replies = Replies::parse(bytes);
