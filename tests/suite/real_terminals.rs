@@ -111,6 +111,25 @@ fn picture_against_still(shot: &Shot) -> f64 {
     psnr(&expected, &shot.crop(picture.0, picture.1))
 }
 
+/// With `BUMPWORK_SAVE_SHOTS=DIR`, writes the terminal window of `shot` to
+/// `DIR/workbench-NAME.png` (how the README's picture of the workbench in pixels is made).
+fn save_if_asked(shot: &Shot, name: &str) {
+    let Some(dir) = std::env::var_os("BUMPWORK_SAVE_SHOTS") else {
+        return;
+    };
+    let (width, height) = shot.window();
+    let slug: String = name
+        .chars()
+        .map(|c| if c.is_ascii_alphanumeric() { c } else { '-' })
+        .collect();
+    let path = Path::new(&dir).join(format!("workbench-{slug}.png"));
+    let file = std::fs::File::create(&path).unwrap();
+    let mut encoder = png::Encoder::new(std::io::BufWriter::new(file), width as u32, height as u32);
+    encoder.set_color(png::ColorType::Rgb);
+    let mut writer = encoder.write_header().unwrap();
+    writer.write_image_data(&shot.crop(width, height)).unwrap();
+}
+
 /// The workbench in the terminal `command` starts (it names the binary with `{bumpwork}`),
 /// when `tools` are there: its settled picture against the still, at least `bound` dB.
 fn shows_the_picture(name: &str, tools: &[&str], command: &str, bound: f64) {
@@ -121,6 +140,7 @@ fn shows_the_picture(name: &str, tools: &[&str], command: &str, bound: f64) {
     let dir = tempfile::tempdir().unwrap();
     let command = command.replace("{bumpwork}", env!("CARGO_BIN_EXE_bumpwork"));
     let shot = screenshot(&format!("{command} view {SCENE}"), 8, dir.path());
+    save_if_asked(&shot, name);
     let db = picture_against_still(&shot);
     eprintln!("{name}: {db:.1} dB against the still");
     assert!(db >= bound, "{name}'s picture is {db:.1} dB from the still");
@@ -143,7 +163,7 @@ fn xterm_as_a_vt340_shows_the_picture_in_sixels() {
         "xterm -ti vt340 -xrm 'XTerm*numColorRegisters: 256' -geometry {COLS}x{ROWS}+0+0 \
          -bw 0 -b 0 -fa Monospace -fs 10 -e {{bumpwork}}"
     );
-    shows_the_picture("xterm's sixel", &["xvfb-run", "xterm", "xwd"], &xterm, 30.0);
+    shows_the_picture("xterm sixel", &["xvfb-run", "xterm", "xwd"], &xterm, 30.0);
 }
 
 #[test]
