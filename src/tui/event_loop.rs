@@ -155,8 +155,23 @@ fn suspend_until_continued(app: &mut App, screen: &mut Screen, mouse: bool) -> i
     crate::term::suspend_and_resume(mouse)?;
     let (cols, rows) = crossterm::terminal::size()?;
     screen.resize(cols, rows, app);
-    screen.set_cell_aspect(cell_aspect(app.cell_size), app);
+    follow_cell_size(app, screen);
     Ok(())
+}
+
+/// The cells' shape and size in pixels as the terminal reports them now: a new font size or
+/// zoom changes them with the window.
+fn follow_cell_size(app: &mut App, screen: &mut Screen) {
+    screen.set_cell_aspect(cell_aspect(app.cell_size), app);
+    let route = screen.pixel_route();
+    let cell_pixels = cell_pixels(app.cell_size, Some(route.cell_pixels));
+    screen.set_pixel_route(
+        PixelRoute {
+            cell_pixels,
+            ..route
+        },
+        app,
+    );
 }
 
 /// Until the next animation frame is due, or the signal poll interval.
@@ -191,8 +206,7 @@ fn handle_pending_events(
             }
             Input::Resize(cols, rows) => {
                 screen.resize(cols, rows, app);
-                // A new font size or zoom changes the cells' shape too.
-                screen.set_cell_aspect(cell_aspect(app.cell_size), app);
+                follow_cell_size(app, screen);
             }
             Input::Redraw => screen.invalidate(app),
             Input::Nothing => {}

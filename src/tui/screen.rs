@@ -79,6 +79,11 @@ impl Screen {
         }
     }
 
+    /// How pixel pictures reach the terminal now.
+    pub fn pixel_route(&self) -> PixelRoute {
+        self.pixel_route
+    }
+
     /// How pixel pictures reach the terminal.
     pub fn set_pixel_route(&mut self, route: PixelRoute, app: &mut App) {
         if route != self.pixel_route {

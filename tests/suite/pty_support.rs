@@ -14,6 +14,7 @@ const KEPT_OUTPUT: usize = 64 << 20;
 
 pub struct Session {
     pub screen: Arc<Mutex<vt100::Parser>>,
+    master: Box<dyn portable_pty::MasterPty + Send>,
     /// Everything the program wrote, as written.
     raw: Arc<Mutex<Vec<u8>>>,
     writer: Box<dyn Write + Send>,
@@ -70,10 +71,12 @@ impl Session {
                 }
             }
         });
+        let writer = pty.master.take_writer().unwrap();
         Session {
+            master: pty.master,
             raw,
             screen,
-            writer: pty.master.take_writer().unwrap(),
+            writer,
             child,
             rows,
             cols,
@@ -103,6 +106,18 @@ impl Session {
             }
             std::thread::sleep(Duration::from_millis(20));
         }
+    }
+
+    /// Gives the terminal a new size in cells and pixels (the program gets SIGWINCH); the
+    /// emulator keeps its size.
+    pub fn resize(&self, cols: u16, rows: u16, pixel_width: u16, pixel_height: u16) {
+        let size = PtySize {
+            rows,
+            cols,
+            pixel_width,
+            pixel_height,
+        };
+        self.master.resize(size).unwrap();
     }
 
     /// Everything the program has written so far.

@@ -278,3 +278,25 @@ fn route(through_tmux: bool) -> PixelRoute {
         sixel_limit: None,
     }
 }
+
+#[test]
+fn a_new_cell_size_with_the_window_gives_a_picture_of_the_new_size() {
+    let mut session = answered_session(
+        &["view", "plane-dimples", "--graphics", "kitty"],
+        b"\x1b[?62c",
+    );
+    session.wait_for("a picture at the usual 10x20 cells", |_| {
+        kitty_images(&session.output())
+            .iter()
+            .any(|i| (i.width, i.height) == (600, 380))
+    });
+    // The same cells, a smaller font: 8x16 pixels a cell.
+    session.resize(COLS, ROWS, COLS * 8, ROWS * 16);
+    session.wait_for("a picture at 8x16 cells", |_| {
+        kitty_images(&session.output())
+            .last()
+            .is_some_and(|i| (i.width, i.height) == PICTURE)
+    });
+    session.send("q");
+    assert_eq!(session.exit_within(Duration::from_secs(5)), Some(0));
+}
