@@ -133,38 +133,29 @@ impl<S: FragmentShader> BandJob<'_, S> {
         let samples = self.sample_order();
         let mut stats = FrameStats::default();
         let mut marked = None;
-        let first_steps = self.first_steps();
-        for step in &first_steps {
-            if !keep_going() {
-                return None;
+        match self.opening() {
+            Opening::Single | Opening::Centre { .. } if !keep_going() => return None,
+            Opening::Single => {
+                let stats = band.single(samples.offsets[0], buffers);
+                on_pass();
+                return Some(stats);
             }
-            stats = match step {
-                BandStep::Single => band.single(samples.offsets[0], buffers),
-                BandStep::Centre { footprint } => {
-                    let (stats, count) = band.centre(*footprint, buffers);
-                    marked = Some(count);
-                    stats
-                }
-                BandStep::Passes { .. } => unreachable!("sample passes are planned after"),
-            };
-            on_pass();
-        }
-        if first_steps.contains(&BandStep::Single) {
-            return Some(stats);
+            Opening::Centre { footprint } => {
+                let (centre, count) = band.centre(footprint, buffers);
+                (stats, marked) = (centre, Some(count));
+                on_pass();
+            }
+            Opening::SamplesOnly => {}
         }
         let rendered =
             marked.unwrap_or(band.viewport.width as usize * band.viewport.height as usize);
         let per_group = passes_per_group(rendered, self.prepared.triangle_count());
-        for step in sample_steps(&samples, marked.is_some(), per_group) {
+        for group in sample_groups(&samples, marked.is_some(), per_group) {
             if !keep_going() {
                 return None;
             }
-            let BandStep::Passes { passes, .. } = &step else {
-                unreachable!("sample steps are passes");
-            };
-            let count = passes.len();
-            stats = add_stats(stats, band.passes(&step, &samples, buffers));
-            (0..count).for_each(|_| on_pass());
+            stats = add_stats(stats, band.passes(&group, &samples, buffers));
+            group.passes.for_each(|_| on_pass());
         }
         Some(stats)
     }
@@ -189,39 +180,43 @@ impl<S: FragmentShader> BandJob<'_, S> {
         }
     }
 
-    /// What comes before the sample passes: the whole band in one pass, or the centre pass of
-    /// adaptive supersampling, or nothing.
-    fn first_steps(&self) -> Vec<BandStep> {
+    /// How the band's render begins: the whole band in one pass, the centre pass of adaptive
+    /// supersampling, or straight with the sample passes.
+    fn opening(&self) -> Opening {
         let footprint = self.supersampling.footprint();
         match self.adaptive_threshold() {
-            None if self.supersampling.offsets().len() == 1 => vec![BandStep::Single],
-            None => Vec::new(),
+            None if self.supersampling.offsets().len() == 1 => Opening::Single,
+            None => Opening::SamplesOnly,
             // A refining still mixes the centre with its samples, and leaves it where it marks
             // nothing as their stand-in: it samples textures as they do (less error than a
             // pixel-wide footprint, simulated on the POV-Ray peer's frame). The tent's samples
             // spread over two pixels' width.
             Some(_) if self.supersampling.refining_order().is_some() => {
-                vec![BandStep::Centre { footprint }]
+                Opening::Centre { footprint }
             }
-            Some(_) => vec![BandStep::Centre { footprint: 1.0 }],
+            Some(_) => Opening::Centre { footprint: 1.0 },
         }
     }
 }
 
-/// One step of a band's render.
-#[derive(Clone, Debug, PartialEq)]
-enum BandStep {
+/// How a band's render begins.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Opening {
     /// One pass at the only sample, replacing every pixel: the whole band.
     Single,
     /// A pass at pixel centres, whose contrast marks the pixels the samples go to.
     Centre { footprint: f32 },
-    /// Sample passes `passes` of the sample order, rendered together over `pixels`; with
-    /// `refine_from`, the passes from that one on take only the pixels the earlier ones moved.
-    Passes {
-        passes: Range<usize>,
-        pixels: Pixels,
-        refine_from: Option<usize>,
-    },
+    /// Nothing before the sample passes.
+    SamplesOnly,
+}
+
+/// Sample passes `passes` of the sample order, rendered together over `pixels`; with
+/// `refine_from`, the passes from that one on take only the pixels the earlier ones moved.
+#[derive(Clone, Debug, PartialEq)]
+struct SampleGroup {
+    passes: Range<usize>,
+    pixels: Pixels,
+    refine_from: Option<usize>,
 }
 
 /// Which pixels a group of sample passes renders.
@@ -246,9 +241,9 @@ struct SampleOrder {
 /// The groups of sample passes, `per_group` passes each (the first of a refining order holds
 /// its first samples and the pass after them, where the refinement is decided), over the
 /// marked pixels when `adaptive`.
-fn sample_steps(order: &SampleOrder, adaptive: bool, per_group: usize) -> Vec<BandStep> {
+fn sample_groups(order: &SampleOrder, adaptive: bool, per_group: usize) -> Vec<SampleGroup> {
     let count = order.offsets.len();
-    let mut steps = Vec::new();
+    let mut groups = Vec::new();
     let mut start = 0;
     while start < count {
         let size = match order.first {
@@ -262,14 +257,14 @@ fn sample_steps(order: &SampleOrder, adaptive: bool, per_group: usize) -> Vec<Ba
             (None, _) if adaptive => (Pixels::Marked, None),
             (None, _) => (Pixels::All, None),
         };
-        steps.push(BandStep::Passes {
+        groups.push(SampleGroup {
             passes: start..end,
             pixels,
             refine_from,
         });
         start = end;
     }
-    steps
+    groups
 }
 
 /// One band of a job, rendering its steps.
@@ -335,18 +330,15 @@ impl<S: FragmentShader> Band<'_, '_, S> {
     /// pass hands its strips on and, when nobody takes them, leaves the band's depth.
     fn passes(
         &self,
-        step: &BandStep,
+        group: &SampleGroup,
         order: &SampleOrder,
         buffers: &mut BandBuffers,
     ) -> FrameStats {
-        let BandStep::Passes {
+        let SampleGroup {
             passes,
             pixels,
             refine_from,
-        } = step
-        else {
-            unreachable!("a group of passes");
-        };
+        } = group;
         let count = order.offsets.len();
         let footprint = self.job.supersampling.footprint();
         let BandBuffers {
@@ -464,17 +456,10 @@ mod tests {
         }
     }
 
-    fn groups(steps: &[BandStep]) -> Vec<(Range<usize>, Pixels, Option<usize>)> {
+    fn groups(steps: &[SampleGroup]) -> Vec<(Range<usize>, Pixels, Option<usize>)> {
         steps
             .iter()
-            .map(|step| match step {
-                BandStep::Passes {
-                    passes,
-                    pixels,
-                    refine_from,
-                } => (passes.clone(), *pixels, *refine_from),
-                other => panic!("{other:?} among the sample passes"),
-            })
+            .map(|g| (g.passes.clone(), g.pixels, g.refine_from))
             .collect()
     }
 
@@ -482,17 +467,17 @@ mod tests {
     fn sample_passes_are_planned_in_groups_that_cover_every_sample_once() {
         use Pixels::*;
         // Full supersampling: groups of the size asked, over every pixel.
-        let full = groups(&sample_steps(&order(16, None), false, 6));
+        let full = groups(&sample_groups(&order(16, None), false, 6));
         assert_eq!(
             full,
             [(0..6, All, None), (6..12, All, None), (12..16, All, None)]
         );
         // Adaptive: the same groups over the marked pixels.
-        let marked = groups(&sample_steps(&order(16, None), true, 16));
+        let marked = groups(&sample_groups(&order(16, None), true, 16));
         assert_eq!(marked, [(0..16, Marked, None)]);
         // Refining: the first group holds the first samples and the pass that decides, over
         // the marked pixels; the rest go to the refined ones.
-        let refining = groups(&sample_steps(&order(16, Some(4)), true, 2));
+        let refining = groups(&sample_groups(&order(16, Some(4)), true, 2));
         assert_eq!(refining[0], (0..5, Marked, Some(4)));
         assert!(
             refining[1..]

@@ -309,12 +309,7 @@ impl FrameWriter {
         encode_frame(Some(under), grid, self.options, &mut part);
         self.scratch.extend_from_slice(unwrapped(&part));
         self.scratch.extend_from_slice(SYNC_END);
-        if let Err(error) = out.write_all(&self.scratch).and_then(|()| out.flush()) {
-            self.shown = None;
-            return Err(error);
-        }
-        self.shown = Some(grid.clone());
-        Ok(self.scratch.len())
+        self.send(out, grid)
     }
 
     /// Writes the changes from the last frame to `grid` in one write and flushes; returns the bytes
@@ -326,6 +321,12 @@ impl FrameWriter {
         if self.scratch.is_empty() {
             return Ok(0);
         }
+        self.send(out, grid)
+    }
+
+    /// Writes the frame in `scratch` in one write and flushes, then takes `grid` to be what is
+    /// on screen; after an error, nothing is (the next frame is drawn in full).
+    fn send(&mut self, out: &mut impl Write, grid: &CellGrid) -> io::Result<usize> {
         if let Err(error) = out.write_all(&self.scratch).and_then(|()| out.flush()) {
             self.shown = None;
             return Err(error);

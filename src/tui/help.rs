@@ -39,6 +39,19 @@ pub fn draw_help(area: Rect, style: Style, scroll: u16, buffer: &mut Buffer) {
             lines.len()
         ),
     };
+    draw_box(popup, &title, lines, scroll, style, buffer);
+}
+
+/// Draws `lines` from line `scroll` on in a bordered box titled `title`, over whatever `popup`
+/// covered.
+pub fn draw_box(
+    popup: Rect,
+    title: &str,
+    lines: Vec<Line>,
+    scroll: u16,
+    style: Style,
+    buffer: &mut Buffer,
+) {
     Clear.render(popup, buffer);
     Paragraph::new(lines)
         .style(style)
@@ -68,16 +81,8 @@ pub fn draw_diagnostic(area: Rect, style: Style, message: &str, buffer: &mut Buf
     let height = lines.len() as u16 + 2;
     let mut popup = centered(area, width, height);
     popup.y = area.y;
-    Clear.render(popup, buffer);
-    Paragraph::new(lines)
-        .style(style)
-        .block(
-            Block::default()
-                .borders(Borders::ALL)
-                .title(" the file does not load (Esc hides this) ")
-                .style(style),
-        )
-        .render(popup, buffer);
+    let title = " the file does not load (Esc hides this) ";
+    draw_box(popup, title, lines, 0, style, buffer);
 }
 
 fn centered(area: Rect, width: u16, height: u16) -> Rect {

@@ -9,7 +9,6 @@ use ratatui::buffer::Buffer;
 use ratatui::layout::{Position, Rect};
 use ratatui::style::{Modifier, Style};
 use ratatui::text::Line;
-use ratatui::widgets::{Block, Borders, Clear, Paragraph, Widget};
 
 /// The panel's widest, in cells (borders included).
 const MAX_WIDTH: u16 = 52;
@@ -60,8 +59,7 @@ fn row_text(row: &ParamRow, selected: bool) -> String {
 }
 
 /// Where the panel goes in `picture`: its top right corner.
-fn area(app: &App, picture: Rect) -> Rect {
-    let lines = lines(app);
+fn area(lines: &[PanelLine], picture: Rect) -> Rect {
     let widest = lines.iter().map(|l| l.text.chars().count()).max();
     let width = (widest.unwrap_or(0) as u16 + 4)
         .min(MAX_WIDTH)
@@ -77,8 +75,9 @@ fn area(app: &App, picture: Rect) -> Rect {
 
 /// Draws the panel over `picture`.
 pub fn draw_panel(app: &App, picture: Rect, style: Style, buffer: &mut Buffer) {
-    let popup = area(app, picture);
-    let shown: Vec<Line> = lines(app)
+    let lines = lines(app);
+    let popup = area(&lines, picture);
+    let shown: Vec<Line> = lines
         .into_iter()
         .map(|line| match line.param {
             Some(index) if index == app.param => {
@@ -87,31 +86,23 @@ pub fn draw_panel(app: &App, picture: Rect, style: Style, buffer: &mut Buffer) {
             _ => Line::styled(line.text, style),
         })
         .collect();
-    Clear.render(popup, buffer);
     let title = format!(" object {}: parameters (m closes) ", app.object + 1);
-    Paragraph::new(shown)
-        .style(style)
-        .block(
-            Block::default()
-                .borders(Borders::ALL)
-                .title(title)
-                .style(style),
-        )
-        .render(popup, buffer);
+    super::help::draw_box(popup, &title, shown, 0, style, buffer);
 }
 
 /// The parameter (its place in `param_rows`) on the panel's line at `column`, `row` of the
 /// screen, if the panel is open over `picture` and a parameter is there.
 pub fn param_at(app: &App, picture: Rect, column: u16, row: u16) -> Option<usize> {
-    let popup = area(app, picture);
+    let lines = lines(app);
+    let popup = area(&lines, picture);
     if !app.panel || !popup.contains(Position::new(column, row)) {
         return None;
     }
     let line = row.checked_sub(popup.y + 1)?;
-    lines(app).get(line as usize)?.param
+    lines.get(line as usize)?.param
 }
 
 /// Whether `column`, `row` is on the open panel.
 pub fn covers(app: &App, picture: Rect, column: u16, row: u16) -> bool {
-    app.panel && area(app, picture).contains(Position::new(column, row))
+    app.panel && area(&lines(app), picture).contains(Position::new(column, row))
 }
