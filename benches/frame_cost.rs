@@ -89,12 +89,12 @@ fn main() {
     match scene {
         "pov" => {
             let (prepared, camera, quality) = pov_peer_scene();
-            let shader = quality.shader(&prepared, &camera);
+            let shader = quality.shader(&prepared, &camera, VIEWPORT);
             frames(&prepared, &camera, &shader, n);
         }
         "pov16" => {
             let (prepared, camera, quality) = pov_peer_scene();
-            let shader = quality.shader(&prepared, &camera);
+            let shader = quality.shader(&prepared, &camera, VIEWPORT);
             let job = BandJob {
                 prepared: &prepared,
                 camera: &camera,

@@ -211,15 +211,16 @@ fn povray_error(dir: &std::path::Path) -> ChannelError {
 /// Adaptive supersampling at each of `CONTRASTS` against full supersampling at 16 samples.
 fn adaptive_errors(prepared: &PreparedScene, camera: &Camera) -> Vec<(f32, ChannelError)> {
     let base = pov_peer_settings(16, None);
-    let shader = base.quality.shader(prepared, camera);
+    let full = Viewport {
+        width: SIZE.0,
+        height: SIZE.1,
+    };
+    let shader = base.quality.shader(prepared, camera, full);
     let frame = |adaptive| {
         let job = BandJob {
             prepared,
             camera,
-            full: Viewport {
-                width: SIZE.0,
-                height: SIZE.1,
-            },
+            full,
             shader: &shader,
             supersampling: base.supersampling(),
             interpolation: base.quality.interpolation,

@@ -16,6 +16,7 @@ pub mod raster;
 pub mod reference;
 pub mod scene;
 pub mod shade;
+pub mod shadow;
 mod simd;
 pub mod still;
 pub mod surface;

@@ -4,7 +4,8 @@
 //! `tessellation`, `samples`, `normal-form`, `gradient`, …), and `[OBJECT.]bump.PARAM`,
 //! `[OBJECT.]texture.PARAM`, `[OBJECT.]bump.strength` (the bump's own factor) and
 //! `[OBJECT.]bump.params.PARAM` (a pattern parameter, also one called `strength`) for the
-//! objects' bindings (OBJECT counts from 1; without it, every object whose binding has PARAM).
+//! objects' bindings (OBJECT counts from 1; without it, every object whose binding has PARAM);
+//! and `shadows` (true or false), whether the scene's lights cast shadows.
 
 use crate::quality::Quality;
 use crate::scene::{BumpSource, KnobPlace, KnobSetting, PatternBinding, Scene, Texturing};
@@ -21,6 +22,7 @@ pub struct Override {
 #[derive(Clone, Debug, PartialEq)]
 enum Target {
     Quality(String),
+    Shadows,
     Binding {
         object: Option<usize>,
         slot: Slot,
@@ -62,6 +64,7 @@ impl Override {
         };
         let target = match parts.as_slice() {
             ["quality", knob] if object.is_none() => Some(Target::Quality(knob.to_string())),
+            ["shadows"] if object.is_none() => Some(Target::Shadows),
             [slot, "strength"] => binding(object, slot, Name::Strength),
             [slot, "params", name] | [slot, name] => {
                 binding(object, slot, Name::Param(name.to_string()))
@@ -70,8 +73,9 @@ impl Override {
         }
         .ok_or_else(|| {
             format!(
-                "unknown setting '{shown}'; the keys are quality.KNOB, [OBJECT.]bump.PARAM, \
-                 [OBJECT.]texture.PARAM, [OBJECT.]bump.strength and [OBJECT.]bump.params.PARAM"
+                "unknown setting '{shown}'; the keys are quality.KNOB, shadows, \
+                 [OBJECT.]bump.PARAM, [OBJECT.]texture.PARAM, [OBJECT.]bump.strength and \
+                 [OBJECT.]bump.params.PARAM"
             )
         })?;
         Ok(Override {
@@ -117,7 +121,7 @@ pub fn knob_settings(overrides: &[Override]) -> Vec<KnobSetting> {
                 value: toml_value(&o.value),
                 place: KnobPlace::CommandLine(o.shown()),
             }),
-            Target::Binding { .. } => None,
+            Target::Shadows | Target::Binding { .. } => None,
         })
         .collect()
 }
@@ -135,7 +139,7 @@ fn toml_value(value: &str) -> toml::Value {
 /// the parameters there are.
 pub fn apply_to_scene(overrides: &[Override], scene: &mut Scene) -> Result<(), String> {
     for o in overrides {
-        if let Applied::NoPlace(known) = apply_binding(o, scene)? {
+        if let Applied::NoPlace(known) = apply_to(o, scene)? {
             return Err(no_such_parameter(o, &known));
         }
     }
@@ -147,7 +151,7 @@ pub fn apply_to_scene(overrides: &[Override], scene: &mut Scene) -> Result<(), S
 pub fn apply_where_known(overrides: &[Override], scene: &mut Scene) -> Result<Vec<bool>, String> {
     overrides
         .iter()
-        .map(|o| Ok(apply_binding(o, scene)? == Applied::Taken))
+        .map(|o| Ok(apply_to(o, scene)? == Applied::Taken))
         .collect()
 }
 
@@ -168,6 +172,22 @@ enum Applied {
     Taken,
     /// No object took it; the parameters there were.
     NoPlace(Vec<String>),
+}
+
+/// Applies `o` if it is a setting of the scene (not of the quality).
+fn apply_to(o: &Override, scene: &mut Scene) -> Result<Applied, String> {
+    match o.target {
+        Target::Quality(_) => Ok(Applied::NotABinding),
+        Target::Shadows => {
+            scene.shadows = match o.value.as_str() {
+                "true" | "on" => true,
+                "false" | "off" => false,
+                _ => return Err(format!("--set {}: expected true or false", o.shown())),
+            };
+            Ok(Applied::Taken)
+        }
+        Target::Binding { .. } => apply_binding(o, scene),
+    }
 }
 
 /// Applies `o` if it is a binding override; an error for a value out of range or an object past

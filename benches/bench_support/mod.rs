@@ -40,6 +40,7 @@ pub fn sphere_scene() -> Scene {
         }],
         time: 0.0,
         quality: Vec::new(),
+        shadows: true,
         objects: vec![Object {
             surface: Surface::Sphere(Sphere {
                 center: DVec3::ZERO,

@@ -11,9 +11,8 @@ pub use pareto::pareto_front;
 pub use variants::{Variant, VariantKind, variants};
 
 use crate::measure::Timing;
-use crate::quality::Quality;
 use crate::raster::{FrameOutput, Framebuffer, PreparedScene, RenderTarget, Viewport, render};
-use crate::reference::{FrameError, ShadedAndNormals, ViewRays, render_rays_into};
+use crate::reference::{FrameError, ShadedAndNormals, ViewRays, exact_shader, render_rays_into};
 use crate::scene::Camera;
 use crate::scene::Scene;
 use crate::shade::LitShader;
@@ -58,11 +57,10 @@ impl Reference {
     /// sample's, as `render_supersampled` keeps the last pass's depth. So a variant with more
     /// samples is measured against the same filtered picture, not a point-sampled one.
     pub fn render(scene: &Scene, viewport: Viewport, samples: u32) -> Reference {
-        let quality = Quality::exact();
         // The reference ignores the tessellation; a coarse one serves to build the scene.
         let coarse = crate::surface::Tessellation { density: 4 };
         let prepared = PreparedScene::new(scene.clone(), coarse);
-        let mut shader = quality.shader(&prepared, &scene.camera);
+        let mut shader = exact_shader(&prepared, &scene.camera);
         let frames = ShadedAndNormals::render(&mut shader, |s| {
             supersampled_reference(&prepared, &scene.camera, viewport, s, samples)
         });
@@ -142,7 +140,7 @@ pub fn measure_scene(
                 * u64::from(viewport.height)
                 * Framebuffer::BYTES_PER_PIXEL;
             let prepared = quality.prepare(scene.clone(), camera, viewport, output_bytes)?;
-            let shader = quality.shader(&prepared, camera);
+            let shader = quality.shader(&prepared, camera, viewport);
             let target = quality.target(camera, viewport);
             Ok(Ready {
                 variant,

@@ -83,6 +83,11 @@ fn knob_variations() -> Vec<(&'static str, Quality)> {
             "uv=affine",
             with(|q| q.interpolation = Interpolation::Affine),
         ),
+        ("shadow-map=512", with(|q| q.shadow_map = 512)),
+        ("shadow-map=4096", with(|q| q.shadow_map = 4096)),
+        ("shadow-taps=1", with(|q| q.shadow_taps = 1)),
+        ("shadow-taps=16", with(|q| q.shadow_taps = 16)),
+        ("shadow-bias=2", with(|q| q.shadow_bias = 2.0)),
     ]
 }
 
@@ -104,6 +109,9 @@ mod tests {
                 q.normal_form != base.normal_form,
                 q.normals != base.normals,
                 q.interpolation != base.interpolation,
+                q.shadow_map != base.shadow_map,
+                q.shadow_taps != base.shadow_taps,
+                q.shadow_bias != base.shadow_bias,
             ];
             let count = changed.iter().filter(|&&c| c).count();
             assert_eq!(count, 1, "{name} changes {count} knobs");

@@ -106,19 +106,21 @@ fn write_header(
         pov(camera.up.as_dvec3()),
         hfov.to_degrees()
     )?;
+    // POV-Ray's lights cast shadows unless told not to, as ours do unless the scene says not.
+    let shadowless = if scene.shadows { "" } else { " shadowless" };
     for light in &scene.lights {
         match *light {
             Light::Point { position, color } => {
                 writeln!(
                     sdl,
-                    "light_source {{ {} {} shadowless }}",
+                    "light_source {{ {} {}{shadowless} }}",
                     pov(position),
                     rgb(color)
                 )
             }
             Light::Directional { towards, color } => writeln!(
                 sdl,
-                "light_source {{ {} {} parallel point_at <0, 0, 0> shadowless }}",
+                "light_source {{ {} {} parallel point_at <0, 0, 0>{shadowless} }}",
                 pov(towards.as_dvec3() * 1e6),
                 rgb(color)
             ),

@@ -44,16 +44,19 @@ pub fn write_still(
     interrupted: &dyn Fn() -> Option<i32>,
 ) -> Result<FrameStats, Error> {
     let settings = &request.settings;
-    let mut shader = settings.quality.shader(request.prepared, request.camera);
+    let full = Viewport {
+        width: settings.size.0,
+        height: settings.size.1,
+    };
+    let mut shader = settings
+        .quality
+        .shader(request.prepared, request.camera, full);
     shader.mode = settings.mode;
     shader.time = settings.time;
     let job = BandJob {
         prepared: request.prepared,
         camera: request.camera,
-        full: Viewport {
-            width: settings.size.0,
-            height: settings.size.1,
-        },
+        full,
         shader: &shader,
         supersampling: settings.supersampling(),
         interpolation: settings.quality.interpolation,

@@ -9,6 +9,11 @@ use crate::shade::GradientMethod;
 pub const MAX_SAMPLES: u32 = 1024;
 /// The largest tessellation density (cells per half turn).
 pub const MAX_DENSITY: u32 = 4096;
+pub use crate::shadow::MAP_SIZES as SHADOW_MAP_SIZES;
+/// The depth comparisons a shadow lookup may make: a square of taps.
+pub const SHADOW_TAPS: [u32; 4] = [1, 4, 9, 16];
+/// The largest normal offset of a shadow lookup, in texels.
+pub const MAX_SHADOW_BIAS: f32 = 16.0;
 
 impl Quality {
     /// This quality with each setting applied in turn (the value `"none"` clears an optional
@@ -84,6 +89,29 @@ pub fn check_quality(quality: &Quality) -> Result<(), String> {
         && !positive(step)
     {
         return Err("the central-difference step must be positive".into());
+    }
+    check_shadow_knobs(quality)
+}
+
+fn check_shadow_knobs(quality: &Quality) -> Result<(), String> {
+    if !SHADOW_MAP_SIZES.contains(&quality.shadow_map) {
+        return Err(format!(
+            "shadow-map {} is outside {}..={} texels",
+            quality.shadow_map,
+            SHADOW_MAP_SIZES.start(),
+            SHADOW_MAP_SIZES.end()
+        ));
+    }
+    if !SHADOW_TAPS.contains(&quality.shadow_taps) {
+        return Err(format!(
+            "shadow-taps must be one of 1, 4, 9 or 16, not {}",
+            quality.shadow_taps
+        ));
+    }
+    if !(0.0..=MAX_SHADOW_BIAS).contains(&quality.shadow_bias) {
+        return Err(format!(
+            "shadow-bias must be from 0 to {MAX_SHADOW_BIAS} texels"
+        ));
     }
     Ok(())
 }

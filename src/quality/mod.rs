@@ -9,14 +9,18 @@ mod adaptive;
 mod knob_settings;
 
 pub use adaptive::{MAX_ADAPTIVE_DENSITY, adaptive_density, projected_chord_error};
-pub use knob_settings::{MAX_DENSITY, MAX_SAMPLES, check_quality, knob_names};
+pub use knob_settings::{
+    MAX_DENSITY, MAX_SAMPLES, MAX_SHADOW_BIAS, SHADOW_MAP_SIZES, SHADOW_TAPS, check_quality,
+    knob_names,
+};
 
 use crate::memory_budget::{MemoryUse, OverBudget};
 use crate::pattern::Precision;
 use crate::raster::{Interpolation, PreparedObject, PreparedScene, RenderTarget, Viewport};
 use crate::scene::Camera;
 use crate::scene::{Scene, Texturing};
-use crate::shade::{GradientMethod, LitShader, NormalForm, VertexNormals};
+use crate::shade::{GradientMethod, LitShader, NormalForm, Shadowing, VertexNormals};
+use crate::shadow::{ShadowMaps, ShadowSettings};
 use crate::surface::Tessellation;
 use crate::texture::Filter;
 use rayon::prelude::*;
@@ -59,6 +63,31 @@ pub struct Quality {
     pub normal_form: NormalForm,
     pub normals: NormalSource,
     pub interpolation: Interpolation,
+    /// Texels on a side of each light's shadow map (each of a point light's cube faces, when it
+    /// needs a cube, has half as many).
+    #[serde(default = "interactive_shadow_map")]
+    pub shadow_map: u32,
+    /// Depth comparisons per shadow lookup: 1 (the nearest texel, a hard stair-stepped edge),
+    /// 4 (bilinear), 9 or 16 (wider, softer filters).
+    #[serde(default = "interactive_shadow_taps")]
+    pub shadow_taps: u32,
+    /// How far a lookup moves off its surface before comparing, in texels beyond the filter's
+    /// reach: too little and surfaces shadow themselves in specks (acne), too much and shadows
+    /// come loose from their casters.
+    #[serde(default = "interactive_shadow_bias")]
+    pub shadow_bias: f32,
+}
+
+fn interactive_shadow_map() -> u32 {
+    Quality::interactive().shadow_map
+}
+
+fn interactive_shadow_taps() -> u32 {
+    Quality::interactive().shadow_taps
+}
+
+fn interactive_shadow_bias() -> f32 {
+    Quality::interactive().shadow_bias
 }
 
 /// The preset names, cheapest first.
@@ -91,6 +120,8 @@ impl Quality {
         Quality {
             tessellation: 16,
             filter: Some(Filter::Nearest),
+            shadow_map: 512,
+            shadow_taps: 1,
             ..Quality::interactive()
         }
     }
@@ -109,6 +140,9 @@ impl Quality {
             normal_form: NormalForm::Blinn,
             normals: NormalSource::ExactFrame,
             interpolation: Interpolation::PerspectiveCorrect,
+            shadow_map: 1024,
+            shadow_taps: 4,
+            shadow_bias: 0.5,
         }
     }
 
@@ -120,6 +154,7 @@ impl Quality {
             adaptive_tolerance_px: Some(0.5),
             samples: 16,
             normal_form: NormalForm::Full,
+            shadow_map: 2048,
             ..Quality::interactive()
         }
     }
@@ -134,6 +169,7 @@ impl Quality {
             adaptive_tolerance_px: Some(0.1),
             samples: 64,
             pattern_precision: Precision::Double,
+            shadow_map: 4096,
             ..Quality::high()
         }
     }
@@ -179,7 +215,8 @@ impl Quality {
             image_bytes: scene.image_bytes(),
             triangles,
             lights: scene.lights.len() as u64,
-            output_bytes,
+            output_bytes: output_bytes
+                .saturating_add(crate::shadow::map_bytes(&scene, self.shadow_map)),
         }
         .check(crate::memory_budget::budget_bytes())?;
         let objects = scene
@@ -216,11 +253,37 @@ impl Quality {
         RenderTarget::new(camera, viewport).with_interpolation(self.interpolation)
     }
 
-    /// The scene's fragment program with this quality's shading knobs.
-    pub fn shader(&self, prepared: &PreparedScene, camera: &Camera) -> LitShader {
+    /// The scene's fragment program with this quality's shading knobs, and its shadow maps for
+    /// the camera's view of a full image of `viewport`'s size.
+    pub fn shader(
+        &self,
+        prepared: &PreparedScene,
+        camera: &Camera,
+        viewport: Viewport,
+    ) -> LitShader {
+        let maps = ShadowMaps::build(prepared, camera, viewport, self.shadow_settings());
+        self.shader_with_maps(prepared, camera, maps.map(Arc::new))
+    }
+
+    /// `shader` with shadow maps already drawn (kept from an earlier frame: `ShadowCache`).
+    pub fn shader_with_maps(
+        &self,
+        prepared: &PreparedScene,
+        camera: &Camera,
+        maps: Option<Arc<ShadowMaps>>,
+    ) -> LitShader {
         let mut shader = LitShader::new(&prepared.scene, camera);
         self.configure(&mut shader, prepared);
+        shader.shadows = maps.map(|maps| maps as Arc<dyn Shadowing>);
         shader
+    }
+
+    pub fn shadow_settings(&self) -> ShadowSettings {
+        ShadowSettings {
+            map_size: self.shadow_map,
+            taps: self.shadow_taps,
+            bias_texels: self.shadow_bias,
+        }
     }
 
     /// Sets the shading knobs of an existing program (keeping its mode and time).
@@ -244,14 +307,17 @@ impl Quality {
             .filter
             .map_or("scene".to_string(), |f| format!("{f:?}"));
         format!(
-            "{tessellation}, {} spp, filter {}, gradient {}, patterns {}, {:?} normal, {:?}, {:?}",
+            "{tessellation}, {} spp, filter {}, gradient {}, patterns {}, {:?} normal, {:?}, {:?}, \
+             shadow map {} × {} taps",
             self.samples,
             filter.to_lowercase(),
             self.gradient.name(),
             self.pattern_precision.name(),
             self.normal_form,
             self.normals,
-            self.interpolation
+            self.interpolation,
+            self.shadow_map,
+            self.shadow_taps,
         )
     }
 }

@@ -8,6 +8,7 @@
 
 mod bin;
 mod clip;
+mod depth_map;
 mod fragment;
 mod framebuffer;
 mod pipeline;
@@ -22,6 +23,7 @@ mod window;
 
 pub use bin::{TILE_SIZE, TileBins};
 pub use clip::{ClipVertex, clip_triangle};
+pub use depth_map::{DepthMap, DepthView, render_depth};
 pub use fragment::{Fragment, FragmentShader, FrameObject, PerFragment};
 pub use framebuffer::{Blend, Framebuffer, encode_srgb8, linear_to_srgb8};
 pub use pipeline::{

@@ -185,7 +185,7 @@ pub(super) fn shifted_screen_triangles(
 /// moved, and several are copied once, in parallel, into a list of the exact size zeroed in
 /// parallel: joined on one thread, object by object, the copies and their fresh pages' faults
 /// (and `calloc`'s serial zeroing) would keep the other core waiting.
-fn join_in_order<T: Copy + Zeroable + Send + Sync>(mut lists: Vec<Vec<T>>) -> Vec<T> {
+pub(super) fn join_in_order<T: Copy + Zeroable + Send + Sync>(mut lists: Vec<Vec<T>>) -> Vec<T> {
     if lists.len() <= 1 {
         return lists.pop().unwrap_or_default();
     }

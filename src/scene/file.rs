@@ -34,6 +34,9 @@ pub struct SceneFile {
     /// The scene time a still shows when none is asked for, in seconds.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub time: Option<SceneTime>,
+    /// Whether lights cast shadows; they do unless this is false.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub shadows: Option<bool>,
     /// Quality knobs over the chosen preset, applied by the quality module.
     #[serde(default, skip_serializing_if = "QualityTable::is_empty")]
     pub quality: QualityTable,
@@ -326,6 +329,7 @@ impl SceneFile {
             objects,
             time: self.time.map_or(0.0, |t| t.0),
             quality: Vec::new(),
+            shadows: self.shadows.unwrap_or(true),
         })
     }
 }

@@ -41,6 +41,8 @@ pub struct Scene {
     pub time: f64,
     /// The scene file's `[quality]` settings, applied over the chosen preset.
     pub quality: Vec<KnobSetting>,
+    /// Whether lights cast shadows (they do unless the scene file says `shadows = false`).
+    pub shadows: bool,
 }
 
 #[derive(Clone, Debug, PartialEq)]

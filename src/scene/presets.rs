@@ -255,6 +255,7 @@ fn scene(camera: CameraFile, lights: Vec<LightFile>, objects: Vec<ObjectFile>) -
         lights,
         objects,
         time: None,
+        shadows: None,
         quality: Default::default(),
     }
 }

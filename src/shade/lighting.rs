@@ -93,17 +93,20 @@ pub fn blinn_phong(
 /// light at a time, which the compiler turns into SIMD: the normalisations and the highlight's
 /// power run four fragments at once (eight where the CPU has AVX2). `surface(range)` gives
 /// those of fragments `range` (a lane's worth at a time), read straight into the lanes: callers
-/// need not store points and normals first.
+/// need not store points and normals first. `reach` holds, light by light, the fraction of each
+/// light reaching each fragment (a row of `colors.len()` per light: shadows); empty, every light
+/// reaches every fragment whole.
 pub fn blinn_phong_many<Pairs: Iterator<Item = (Vec3, Vec3)>>(
     lights: &FrameLights,
     material: &Material,
     colors: &[Vec3],
     surface: impl Fn(Range<usize>) -> Pairs,
+    reach: &[f32],
     out: &mut [Vec3],
 ) {
     crate::simd::widest(
         #[inline(always)]
-        || blinn_phong_lanes(lights, material, colors, surface, out),
+        || blinn_phong_lanes(lights, material, colors, surface, reach, out),
     );
 }
 
@@ -115,8 +118,11 @@ fn blinn_phong_lanes<Pairs: Iterator<Item = (Vec3, Vec3)>>(
     material: &Material,
     colors: &[Vec3],
     surface: impl Fn(Range<usize>) -> Pairs,
+    reach: &[f32],
     out: &mut [Vec3],
 ) {
+    let fragments = colors.len();
+    debug_assert!(reach.is_empty() || reach.len() == fragments * lights.lights.len());
     let chunks = colors.chunks(LANES).zip(out.chunks_mut(LANES));
     for (chunk, (colors, out)) in chunks.enumerate() {
         let first = chunk * LANES;
@@ -125,7 +131,11 @@ fn blinn_phong_lanes<Pairs: Iterator<Item = (Vec3, Vec3)>>(
         let to_eye = Lanes::from_fn(|k| crate::surface::normalize_or(-p.at(k), n.at(k)));
         let mut diffuse = Lanes::splat(lights.ambient);
         let mut specular = Lanes::splat(Vec3::ZERO);
-        for light in &lights.lights {
+        for (index, light) in lights.lights.iter().enumerate() {
+            let reaching = |k: usize| match reach.get(index * fragments + first + k) {
+                Some(&fraction) => fraction,
+                None => 1.0,
+            };
             let (mut lambert, mut highlight) = ([0.0f32; LANES], [0.0f32; LANES]);
             let color = match *light {
                 RelativeLight::Point { position, color } => {
@@ -147,8 +157,10 @@ fn blinn_phong_lanes<Pairs: Iterator<Item = (Vec3, Vec3)>>(
                 // As `blinn_phong`'s `continue`: a light behind the surface adds nothing
                 // (and a NaN term is added, as there).
                 if lambert[k] > 0.0 || lambert[k].is_nan() {
-                    diffuse.set(k, diffuse.at(k) + color * lambert[k]);
-                    specular.set(k, specular.at(k) + color * highlight[k]);
+                    // Times 1 when the light is unblocked: exact, so the same bits as above.
+                    let reaching = reaching(k);
+                    diffuse.set(k, diffuse.at(k) + color * (lambert[k] * reaching));
+                    specular.set(k, specular.at(k) + color * (highlight[k] * reaching));
                 }
             }
         }
@@ -276,9 +288,9 @@ mod tests {
                     .copied()
                     .zip(normals[range].iter().copied())
             };
-            blinn_phong_many(&lights, &material, &colors, surface, &mut batch);
+            blinn_phong_many(&lights, &material, &colors, surface, &[], &mut batch);
             let mut portable = vec![Vec3::NAN; n];
-            blinn_phong_lanes(&lights, &material, &colors, surface, &mut portable);
+            blinn_phong_lanes(&lights, &material, &colors, surface, &[], &mut portable);
             for k in 0..n {
                 let one = blinn_phong(&lights, &material, colors[k], points[k], normals[k]);
                 for (lit, build) in [(batch[k], "dispatched"), (portable[k], "portable")] {

@@ -9,6 +9,7 @@ mod lighting;
 mod pattern_batch;
 mod scene_shader;
 mod shader_mode;
+mod shadowing;
 mod vertex_normals;
 
 pub use bake::{bake_color, bake_height};
@@ -17,4 +18,5 @@ pub use gradient::GradientMethod;
 pub use lighting::{FrameLights, blinn_phong, facing_sign};
 pub use scene_shader::{LitShader, ShadeScratch, render_lit};
 pub use shader_mode::ShaderMode;
+pub use shadowing::Shadowing;
 pub use vertex_normals::{Interpolated, VertexNormals};

@@ -7,6 +7,7 @@ use super::gradient::{GradientMethod, central_difference, shifted_fragments};
 use super::lighting::{FrameLights, blinn_phong_many, facing_sign};
 use super::pattern_batch::{PatternBatch, Sites};
 use super::shader_mode::ShaderMode;
+use super::shadowing::Shadowing;
 use super::vertex_normals::VertexNormals;
 use crate::pattern::{OutputKind, Precision};
 use crate::raster::{
@@ -35,6 +36,8 @@ pub struct LitShader {
     pub vertex_normals: Option<Arc<[VertexNormals]>>,
     /// Depth that the depth view shows as mid-grey.
     pub depth_scale: f32,
+    /// What blocks the lights (`None`: nothing does).
+    pub shadows: Option<Arc<dyn Shadowing>>,
 }
 
 impl LitShader {
@@ -48,6 +51,7 @@ impl LitShader {
             pattern_precision: Precision::Fastest,
             vertex_normals: None,
             depth_scale: (camera.target - camera.eye).length() as f32,
+            shadows: None,
         }
     }
 }
@@ -64,6 +68,11 @@ pub struct ShadeScratch {
     points: Vec<Vec3>,
     normals: Vec<Vec3>,
     lit: Vec<Vec3>,
+    /// Per light, per fragment, the fraction of the light reaching it; empty without shadows.
+    reach: Vec<f32>,
+    /// The fragments' camera-relative points and facing geometric normals, for shadows.
+    shadow_points: Vec<Vec3>,
+    shadow_normals: Vec<Vec3>,
     heights: Vec<f32>,
     gradients: Vec<Vec2>,
     patterns: PatternBatch,
@@ -188,6 +197,9 @@ impl LitShader {
         }
         let mut flattened = self.base_colors(object, fragments, group, scratch);
         flattened += self.bump_gradients(object, fragments, group, scratch);
+        if self.mode == ShaderMode::Shaded {
+            self.light_reach(object_index, object, scratch);
+        }
         if self.mode == ShaderMode::Shaded && material.bump.is_none() {
             // The frames' own points and normals, read straight into the lighting's lanes.
             let (frames, origin) = (&scratch.frames, object.origin);
@@ -197,7 +209,7 @@ impl LitShader {
                     (p, frame.n * facing_sign(p, frame.n))
                 })
             };
-            self.lighting(material, group, &scratch.colors)
+            self.lighting(material, group, &scratch.colors, &scratch.reach)
                 .light(surface, &mut scratch.lit, out);
             return flattened;
         }
@@ -208,7 +220,7 @@ impl LitShader {
                 let points = points[range.clone()].iter().copied();
                 points.zip(normals[range].iter().copied())
             };
-            self.lighting(material, group, &scratch.colors)
+            self.lighting(material, group, &scratch.colors, &scratch.reach)
                 .light(surface, &mut scratch.lit, out);
         } else {
             for (k, &i) in group.iter().enumerate() {
@@ -226,12 +238,42 @@ impl LitShader {
         material: &'a Material,
         group: &'a [u32],
         colors: &'a [Vec3],
+        reach: &'a [f32],
     ) -> GroupLighting<'a> {
         GroupLighting {
             lights: &self.lights,
             material,
             group,
             colors,
+            reach,
+        }
+    }
+
+    /// How much of each light reaches the group's fragments, into `scratch.reach` (left empty
+    /// when no light is blocked anywhere). Shadows follow the geometric surface, not the bumps.
+    fn light_reach(&self, object_index: usize, object: &FrameObject, scratch: &mut ShadeScratch) {
+        scratch.reach.clear();
+        let Some(shadows) = &self.shadows else {
+            return;
+        };
+        let lights = self.lights.lights.len();
+        if !(0..lights).any(|light| shadows.casts(light)) {
+            return;
+        }
+        let (points, normals) = (&mut scratch.shadow_points, &mut scratch.shadow_normals);
+        points.clear();
+        normals.clear();
+        for frame in &scratch.frames {
+            let p = object.origin + frame.p;
+            points.push(p);
+            normals.push(frame.n * facing_sign(p, frame.n));
+        }
+        let count = points.len();
+        scratch.reach.resize(lights * count, 1.0);
+        for (light, reach) in scratch.reach.chunks_mut(count.max(1)).enumerate() {
+            if shadows.casts(light) {
+                shadows.reaching(light, object_index, points, normals, reach);
+            }
         }
     }
 
@@ -576,6 +618,7 @@ struct GroupLighting<'a> {
     material: &'a Material,
     group: &'a [u32],
     colors: &'a [Vec3],
+    reach: &'a [f32],
 }
 
 impl GroupLighting<'_> {
@@ -588,13 +631,14 @@ impl GroupLighting<'_> {
         lit: &mut Vec<Vec3>,
         out: &mut [Vec3],
     ) {
-        let (lights, material, colors) = (self.lights, self.material, self.colors);
+        let (lights, material, colors, reach) =
+            (self.lights, self.material, self.colors, self.reach);
         if let Some(range) = consecutive(self.group) {
-            blinn_phong_many(lights, material, colors, surface, &mut out[range]);
+            blinn_phong_many(lights, material, colors, surface, reach, &mut out[range]);
             return;
         }
         lit.resize(self.group.len(), Vec3::ZERO);
-        blinn_phong_many(lights, material, colors, surface, lit);
+        blinn_phong_many(lights, material, colors, surface, reach, lit);
         for (&i, &color) in self.group.iter().zip(lit.iter()) {
             out[i as usize] = color;
         }

@@ -38,6 +38,9 @@ pub struct Recipe {
     /// Every speed/accuracy knob, samples per pixel included.
     pub quality: Quality,
     pub camera: RecipeCamera,
+    /// Whether the lights cast shadows (`--set shadows` and the workbench change it).
+    #[serde(default = "shadows_by_default")]
+    pub shadows: bool,
     /// The lights as they were (the workbench moves them).
     #[serde(default, rename = "light")]
     pub lights: Vec<LightFile>,
@@ -45,6 +48,10 @@ pub struct Recipe {
     pub objects: Vec<ObjectState>,
     #[serde(default, rename = "file")]
     pub files: Vec<FileHash>,
+}
+
+fn shadows_by_default() -> bool {
+    true
 }
 
 /// The camera exactly: f64 eye and target, f32 the rest (TOML round-trips both exactly).
@@ -150,6 +157,7 @@ impl Recipe {
             time: settings.time,
             mode: settings.mode.name().into(),
             camera: RecipeCamera::of(camera),
+            shadows: scene.shadows,
             lights: scene.lights.iter().map(LightFile::of).collect(),
             files: file_hashes(scene, &base),
             objects,
@@ -243,6 +251,7 @@ impl Recipe {
         }
         scene.camera = self.camera.to_camera()?;
         scene.lights = self.lights.iter().map(LightFile::to_light).collect();
+        scene.shadows = self.shadows;
         Ok(scene)
     }
 

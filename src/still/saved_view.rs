@@ -27,6 +27,7 @@ pub fn saved_view(
     let base = source_directory(source);
     file.camera = camera_file(camera)?;
     file.lights = scene.lights.iter().map(LightFile::of).collect();
+    file.shadows = (!scene.shadows).then_some(false);
     file.quality = written_table(toml::Table::try_from(quality).expect("a quality is a table"));
     file.time = Some(SceneTime::try_from(time).map_err(Error::InvalidArgument)?);
     for (written, shown) in file.objects.iter_mut().zip(&scene.objects) {

@@ -24,6 +24,9 @@ pub struct Mesh {
     pub positions: Vec<Vec3>,
     pub uvs: Vec<Vec2>,
     pub indices: Vec<[u32; 3]>,
+    /// The farthest a triangle's centroid lies from the surface at its centroid's (u,v): how far
+    /// the chords stray from the true surface (0 for planar surfaces).
+    pub chord_error: f32,
 }
 
 pub(super) struct GridShape {
@@ -96,16 +99,23 @@ fn is_collapsed(shape: &GridShape, row: u32) -> bool {
 }
 
 /// Makes every triangle wind counter-clockwise around the surface normal at its centre, whatever
-/// the handedness of the surface's (u,v), so back faces can be told by winding alone.
+/// the handedness of the surface's (u,v), so back faces can be told by winding alone; and
+/// measures the mesh's chord error at the same centres.
 fn orient_along_normals(surface: &Surface, mesh: &mut Mesh) {
+    let mut chord_error: f32 = 0.0;
     for tri in &mut mesh.indices {
         let [a, b, c] = tri.map(|i| mesh.positions[i as usize]);
         let centre_uv = tri.iter().map(|&i| mesh.uvs[i as usize]).sum::<Vec2>() / 3.0;
-        let n = surface.frame(centre_uv.x, centre_uv.y).n;
-        if (b - a).cross(c - a).dot(n) < 0.0 {
+        let frame = surface.frame(centre_uv.x, centre_uv.y);
+        if (b - a).cross(c - a).dot(frame.n) < 0.0 {
             tri.swap(1, 2);
         }
+        let gap = frame.p.distance((a + b + c) / 3.0);
+        if gap.is_finite() {
+            chord_error = chord_error.max(gap);
+        }
     }
+    mesh.chord_error = chord_error;
 }
 
 #[cfg(test)]
@@ -166,6 +176,27 @@ mod tests {
                 );
             }
         }
+    }
+
+    #[test]
+    fn the_chord_error_follows_the_circle_sag_and_shrinks_as_the_square_of_density() {
+        // A cell of a radius-2 sphere spans π/density each way. A chord across it sags
+        // r(1 − cos(π/2d)); a triangle's centroid, curved away from in both directions, sits
+        // deeper, but by less than three such sags.
+        for density in [8, 16, 32] {
+            let error = sphere().tessellate(Tessellation { density }).chord_error;
+            let half_cell = std::f32::consts::PI / (2 * density) as f32;
+            let sag = 2.0 * (1.0 - half_cell.cos());
+            assert!(
+                error > sag && error < 3.0 * sag,
+                "density {density}: {error} vs {sag}"
+            );
+        }
+        let coarse = sphere().tessellate(Tessellation { density: 8 }).chord_error;
+        let fine = sphere()
+            .tessellate(Tessellation { density: 32 })
+            .chord_error;
+        assert!((coarse / fine - 16.0).abs() < 3.0, "{coarse} / {fine}");
     }
 
     #[test]

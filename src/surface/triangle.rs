@@ -58,6 +58,7 @@ impl Triangle {
             positions,
             uvs: self.corners_uv.to_vec(),
             indices: vec![[0, 1, 2]],
+            chord_error: 0.0,
         }
     }
 }

@@ -20,6 +20,8 @@ pub enum Action {
     MoveLight(f64, f64),
     /// The lights back where the scene file puts them.
     ResetLights,
+    /// Shadows on or off (the scene file's `shadows`, until it is saved or reloaded).
+    ToggleShadows,
     /// Every material value changed with the keys back to the file's (patterns, parameters,
     /// strengths).
     DropLiveValues,

@@ -17,6 +17,7 @@ use crate::quality::Quality;
 use crate::raster::{FrameStats, Framebuffer, PreparedScene, Viewport};
 use crate::scene::Camera;
 use crate::scene::{Material, Scene};
+use crate::shadow::ShadowCache;
 use crate::surface::Surface;
 use crate::term::graphics::Protocol;
 use crate::term::{ColorMode, GlyphSet};
@@ -39,6 +40,8 @@ pub struct App {
     /// What is rendered: the preset with the scene file's `[quality]` settings and the `--set`
     /// ones over it.
     pub quality_in_use: Quality,
+    /// The shadow maps of the last frame, drawn again when the view or the lights change.
+    pub shadow_cache: ShadowCache,
     pub glyphs: GlyphSet,
     /// The pixel protocol the picture is sent in; `None` draws it in `glyphs`.
     pub graphics: Option<Protocol>,
@@ -144,6 +147,7 @@ impl App {
             prepared,
             orbit,
             view_mode: ViewMode::default(),
+            shadow_cache: ShadowCache::default(),
             quality,
             quality_in_use,
             glyphs: options.glyphs,
@@ -233,6 +237,12 @@ impl App {
                 Ok(saved) => self.prepared.scene.lights = saved.lights,
                 Err(e) => self.message = Message::Error(e.to_string()),
             },
+            Action::ToggleShadows => {
+                let scene = &mut self.prepared.scene;
+                scene.shadows = !scene.shadows;
+                let state = if scene.shadows { "on" } else { "off" };
+                self.message = Message::Info(format!("shadows {state}"));
+            }
             Action::DropLiveValues => self.drop_live_values(),
             Action::NextViewMode => self.view_mode = self.view_mode.cycled(1),
             Action::PreviousViewMode => self.view_mode = self.view_mode.cycled(-1),

@@ -5,7 +5,9 @@
 
 use crate::quality::Quality;
 use crate::raster::{FrameOutput, FrameStats, Framebuffer, PreparedScene, RenderTarget, render};
-use crate::reference::{error_heat_map, metrics::psnr, render_reference};
+use crate::reference::{error_heat_map, exact_shader, metrics::psnr, render_reference};
+use crate::shadow::ShadowMaps;
+use std::sync::Arc;
 
 /// 8-bit sRGB steps of error drawn as white; smaller errors are red to yellow, none black.
 const FULL_SCALE_STEPS: f32 = 32.0;
@@ -15,11 +17,11 @@ const FULL_SCALE_STEPS: f32 = 32.0;
 pub fn render_error_view(
     time: f64,
     quality: &Quality,
-    prepared: &PreparedScene,
+    (prepared, maps): (&PreparedScene, Option<Arc<ShadowMaps>>),
     target: &RenderTarget,
     framebuffer: &mut Framebuffer,
 ) -> (FrameStats, f64) {
-    let mut shader = quality.shader(prepared, target.camera);
+    let mut shader = quality.shader_with_maps(prepared, target.camera, maps);
     shader.time = time;
     let output = FrameOutput::Framebuffer(framebuffer);
     let stats = render(
@@ -29,7 +31,7 @@ pub fn render_error_view(
         output,
         None,
     );
-    let mut exact = Quality::exact().shader(prepared, target.camera);
+    let mut exact = exact_shader(prepared, target.camera);
     exact.time = time;
     let (reference, _) = render_reference(prepared, target.camera, target.viewport, &exact);
     let psnr_db = psnr(framebuffer, &reference);

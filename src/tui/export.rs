@@ -145,12 +145,14 @@ fn export_picture(order: ExportOrder) -> Result<(), Error> {
     let prepared = order
         .settings
         .prepare_with_output(order.scene, &order.camera, output_bytes)?;
+    let shadows = crate::shadow::ShadowCache::default();
     let view = View {
         prepared: &prepared,
         camera: order.camera,
         mode: order.mode,
         time: order.settings.time,
         quality: order.settings.quality,
+        shadows: &shadows,
     };
     let mut framebuffer = empty_framebuffer();
     render_frame(&view, width, height, &mut framebuffer);

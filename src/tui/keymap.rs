@@ -88,6 +88,7 @@ pub const BINDINGS: &[Binding] = &[
     ),
     bind("", "", &[Char('f')], Action::MoveLight(0.0, -LIGHT_STEP)),
     bind("R", "reset lights", &[Char('R')], Action::ResetLights),
+    bind("S", "shadows on / off", &[Char('S')], Action::ToggleShadows),
     bind(
         "v V",
         "next / previous view mode",

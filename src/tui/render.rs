@@ -7,6 +7,7 @@ use super::wireframe::draw_wireframe;
 use crate::quality::Quality;
 use crate::raster::{Framebuffer, PreparedScene, Viewport};
 use crate::scene::Camera;
+use crate::shadow::ShadowCache;
 use crate::term::{CellGrid, EncodeOptions, GlyphSet, Picture, encode};
 use glam::{Vec2, Vec3};
 
@@ -19,6 +20,8 @@ pub struct View<'a> {
     pub time: f64,
     /// The shading and interpolation knobs (the mesh was made with the same quality).
     pub quality: Quality,
+    /// The shadow maps of the last pass, reused while they still hold.
+    pub shadows: &'a ShadowCache,
 }
 
 impl<'a> View<'a> {
@@ -29,6 +32,7 @@ impl<'a> View<'a> {
             mode: app.view_mode,
             time: app.clock.time(),
             quality: app.quality_in_use,
+            shadows: &app.shadow_cache,
         }
     }
 }
@@ -76,7 +80,7 @@ fn render_frame_at(
         view.mode,
         view.time,
         &view.quality,
-        view.prepared,
+        (view.prepared, view.shadows),
         &target,
         framebuffer,
     );

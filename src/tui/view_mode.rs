@@ -5,6 +5,7 @@ use super::error_view::render_error_view;
 use crate::quality::Quality;
 use crate::raster::{FrameOutput, FrameStats, Framebuffer, PreparedScene, RenderTarget, render};
 use crate::shade::ShaderMode;
+use crate::shadow::ShadowCache;
 
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, strum::VariantArray)]
 pub enum ViewMode {
@@ -65,18 +66,25 @@ pub fn render_view_mode(
     mode: ViewMode,
     time: f64,
     quality: &Quality,
-    prepared: &PreparedScene,
+    (prepared, shadows): (&PreparedScene, &ShadowCache),
     target: &RenderTarget,
     framebuffer: &mut Framebuffer,
 ) -> RenderedFrame {
+    let maps = shadows.maps(
+        prepared,
+        target.camera,
+        target.viewport,
+        quality.shadow_settings(),
+    );
     if mode == ViewMode::Error {
-        let (stats, psnr_db) = render_error_view(time, quality, prepared, target, framebuffer);
+        let (stats, psnr_db) =
+            render_error_view(time, quality, (prepared, maps), target, framebuffer);
         return RenderedFrame {
             stats,
             psnr_db: Some(psnr_db),
         };
     }
-    let mut shader = quality.shader(prepared, target.camera);
+    let mut shader = quality.shader_with_maps(prepared, target.camera, maps);
     shader.mode = mode.shader_mode();
     shader.time = time;
     RenderedFrame {

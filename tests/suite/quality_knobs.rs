@@ -24,7 +24,7 @@ fn render(scene: &Scene, quality: &Quality, mode: ShaderMode) -> Framebuffer {
     let prepared = quality
         .prepare(scene.clone(), &scene.camera, VIEW, 0)
         .unwrap();
-    let mut shader = quality.shader(&prepared, &scene.camera);
+    let mut shader = quality.shader(&prepared, &scene.camera, VIEW);
     shader.mode = mode;
     render_with(&prepared, &quality.target(&scene.camera, VIEW), &shader).0
 }
@@ -34,7 +34,7 @@ fn reference(scene: &Scene, quality: &Quality, mode: ShaderMode) -> Framebuffer 
     let prepared = quality
         .prepare(scene.clone(), &scene.camera, VIEW, 0)
         .unwrap();
-    let mut shader = quality.shader(&prepared, &scene.camera);
+    let mut shader = quality.shader(&prepared, &scene.camera, VIEW);
     shader.mode = mode;
     render_reference(&prepared, &scene.camera, VIEW, &shader).0
 }
@@ -276,7 +276,7 @@ fn passes_at(scene: &Scene, offset: glam::Vec2) -> (Framebuffer, Framebuffer) {
     let prepared = quality
         .prepare(scene.clone(), &scene.camera, VIEW, 0)
         .unwrap();
-    let shader = quality.shader(&prepared, &scene.camera);
+    let shader = quality.shader(&prepared, &scene.camera, VIEW);
     let target = RenderTarget {
         window: ImageWindow {
             offset,

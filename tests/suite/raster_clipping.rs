@@ -23,6 +23,7 @@ fn scene_of(camera: Camera, surface: Surface) -> Scene {
         lights: vec![],
         time: 0.0,
         quality: Vec::new(),
+        shadows: true,
         objects: vec![Object {
             surface,
             material: Material {

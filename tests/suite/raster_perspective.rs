@@ -28,6 +28,7 @@ fn grazing_plane_scene() -> (Scene, Plane) {
         lights: vec![],
         time: 0.0,
         quality: Vec::new(),
+        shadows: true,
         objects: vec![Object {
             surface: Surface::Plane(plane.clone()),
             material: Material {

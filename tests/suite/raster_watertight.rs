@@ -271,6 +271,7 @@ fn sphere_scene(radius: f32) -> Scene {
         }],
         time: 0.0,
         quality: Vec::new(),
+        shadows: true,
         objects: vec![Object {
             surface: Surface::Sphere(Sphere {
                 center: DVec3::ZERO,

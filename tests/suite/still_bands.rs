@@ -24,6 +24,7 @@ fn triangle_scene() -> (PreparedScene, Camera) {
         lights: vec![],
         time: 0.0,
         quality: Vec::new(),
+        shadows: true,
         objects: vec![Object {
             surface: Surface::Triangle(Triangle::new(
                 DVec3::new(-2.5, -1.7, 0.0),

@@ -1,0 +1,245 @@
+//! Shadows on the rasterizer. Each light's shadow maps are depth maps of the scene drawn by the
+//! frames' own scan converter (`raster::render_depth`), fitted to what the camera sees (see
+//! `light_views`); a lookup moves off its surface along the geometric normal by the filter's
+//! reach plus the bias (normal offset, which neither specks lit surfaces nor lifts contact
+//! shadows off their casters), then filters depth comparisons (`filter`). Bumps shade but do not
+//! move geometry, so they cast no shadows. Numerics: f32 in each map's own light-relative space,
+//! whose origin is subtracted from the camera's in f64.
+
+mod bounds;
+mod cache;
+mod casting;
+mod filter;
+mod light_views;
+
+pub use bounds::{Bounds, scene_bounds, seen_bounds};
+pub use cache::ShadowCache;
+pub use casting::can_shadow;
+pub use filter::DepthFilter;
+
+use crate::raster::{DepthMap, PreparedScene, Viewport, render_depth};
+use crate::scene::{Camera, Light, Scene};
+use crate::shade::Shadowing;
+use glam::Vec3;
+use light_views::{MapView, cube_face_of, directional_view, point_views};
+use rayon::prelude::*;
+
+/// The texels on a side a shadow map may have.
+pub const MAP_SIZES: std::ops::RangeInclusive<u32> = 16..=8192;
+
+/// The shadow knobs of a quality.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ShadowSettings {
+    /// Texels on a side of a light's map (a cube's faces get half).
+    pub map_size: u32,
+    /// Depth comparisons per lookup: 1, 4, 9 or 16.
+    pub taps: u32,
+    /// Normal offset past the filter's reach, in texels.
+    pub bias_texels: f32,
+}
+
+/// Every light's shadow maps for one view of a prepared scene.
+pub struct ShadowMaps {
+    /// Per light of the scene, its maps; `None` where it shadows nothing the camera sees.
+    lights: Vec<Option<LightMaps>>,
+    /// Per object, its mesh's chord error: how far its true surface may lie behind the chords
+    /// the maps were drawn from.
+    chord_errors: Vec<f32>,
+    filter: DepthFilter,
+    /// Texels a lookup moves off its surface.
+    offset_texels: f32,
+}
+
+/// One light's maps: one, or a cube's six faces.
+struct LightMaps {
+    faces: Vec<ShadowFace>,
+}
+
+struct ShadowFace {
+    view: MapView,
+    map: DepthMap,
+    /// The camera's eye relative to the map's origin, so camera-relative points become
+    /// map-relative by one f32 addition.
+    from_camera: Vec3,
+}
+
+/// The part of a texel every lookup moves off its surface, even where the light meets it head on:
+/// room for the f32 rounding of the map's depths and the lookup's.
+const DEPTH_ROUNDING_TEXELS: f32 = 0.1;
+
+/// The bytes the maps of `scene` take at `map_size`, counted before any is drawn: a point light's
+/// cube (6 faces of half the size) or single map, whichever is larger; none when nothing can
+/// shadow.
+pub fn map_bytes(scene: &Scene, map_size: u32) -> u64 {
+    if !scene.shadows || !can_shadow(scene) {
+        return 0;
+    }
+    let texels = u64::from(map_size).pow(2);
+    let per_light = |light: &Light| match light {
+        Light::Directional { .. } => texels,
+        Light::Point { .. } => texels.max(6 * u64::from(map_size / 2).pow(2)),
+    };
+    let texels: u64 = scene.lights.iter().map(per_light).sum();
+    texels.saturating_mul(DepthMap::BYTES_PER_TEXEL)
+}
+
+impl ShadowMaps {
+    /// The maps for the camera's view of a full image of `viewport`'s shape; `None` when the
+    /// scene has shadows off or nothing in it can shadow anything.
+    pub fn build(
+        prepared: &PreparedScene,
+        camera: &Camera,
+        viewport: Viewport,
+        settings: ShadowSettings,
+    ) -> Option<ShadowMaps> {
+        let scene = &prepared.scene;
+        if !scene.shadows || !can_shadow(scene) {
+            return None;
+        }
+        let whole = scene_bounds(prepared)?;
+        let seen = seen_bounds(camera, viewport.aspect(), &whole);
+        let filter = DepthFilter::new(settings.taps);
+        let offset_texels = filter.reach() + settings.bias_texels;
+        let lights = scene
+            .lights
+            .par_iter()
+            .map(|light| {
+                let seen = seen?;
+                let views = match *light {
+                    Light::Directional { towards, .. } => {
+                        vec![directional_view(towards, &seen, &whole, settings.map_size)]
+                    }
+                    Light::Point { position, .. } => {
+                        point_views(position, &seen, settings.map_size, offset_texels + 1.0)
+                    }
+                };
+                Some(LightMaps::draw(prepared, camera, views))
+            })
+            .collect();
+        Some(ShadowMaps {
+            lights,
+            chord_errors: prepared
+                .objects
+                .iter()
+                .map(|o| o.mesh.chord_error)
+                .collect(),
+            filter,
+            offset_texels,
+        })
+    }
+}
+
+impl LightMaps {
+    fn draw(prepared: &PreparedScene, camera: &Camera, views: Vec<MapView>) -> LightMaps {
+        let faces = views
+            .into_par_iter()
+            .map(|view| ShadowFace {
+                map: distances(render_depth(prepared, &view.view), &view),
+                from_camera: (camera.eye - view.view.origin).as_vec3(),
+                view,
+            })
+            .collect();
+        LightMaps { faces }
+    }
+
+    /// The face a camera-relative point falls in.
+    fn face_for(&self, p: Vec3) -> &ShadowFace {
+        match self.faces.as_slice() {
+            [only] => only,
+            faces => &faces[cube_face_of(p + faces[0].from_camera)],
+        }
+    }
+}
+
+/// A perspective map's depths turned into distances from the light, texel by texel (depth over
+/// the cosine of the texel's ray to the axis, exact). Compared by distance, a surface square to
+/// the light's ray keeps one value across texels wherever it is in the map, as in an orthographic
+/// map, so the normal offset that suffices at the map's centre suffices at its edges.
+fn distances(mut map: DepthMap, view: &MapView) -> DepthMap {
+    if !view.is_perspective() {
+        return map;
+    }
+    let size = map.size as usize;
+    let tan_half = view.texel_per_depth * size as f32 / 2.0;
+    let across = |i: usize| ((i as f32 + 0.5) / size as f32 * 2.0 - 1.0) * tan_half;
+    map.depth
+        .par_chunks_mut(size.max(1))
+        .enumerate()
+        .for_each(|(j, row)| {
+            let y = across(j);
+            for (i, depth) in row.iter_mut().enumerate() {
+                let x = across(i);
+                *depth *= (x * x + y * y + 1.0).sqrt();
+            }
+        });
+    map
+}
+
+impl ShadowFace {
+    /// The fraction of the light reaching camera-relative point `p` with facing geometric
+    /// normal `n`, lifted `lift` world units past the offset (the receiver's chord error).
+    fn reach(&self, p: Vec3, n: Vec3, maps: &ShadowMaps, lift: f32) -> f32 {
+        let view = &self.view.view;
+        let relative = p + self.from_camera;
+        let to_light = if self.view.is_perspective() {
+            -relative.normalize_or_zero()
+        } else {
+            -view.forward
+        };
+        let facing = n.dot(to_light);
+        if facing.is_nan() || facing <= 0.0 {
+            // The light is behind the side of the surface that is seen: the surface itself
+            // blocks it (exactly, with no map needed, so no band of light past the terminator).
+            return 0.0;
+        }
+        // A texel's depth varies most across it where the light grazes the surface, in
+        // proportion to the sine of the light's angle from the normal: so the offset.
+        let sine = (1.0 - facing * facing).max(0.0).sqrt();
+        let depth = view.forward.dot(relative);
+        let texels = maps.offset_texels * sine + DEPTH_ROUNDING_TEXELS;
+        let lifted = relative + n * (texels * self.view.texel(depth) + lift);
+        let clip = view.view_projection * lifted.extend(1.0);
+        if clip.w.is_nan() || clip.w <= 0.0 {
+            return 1.0;
+        }
+        let size = view.size as f32;
+        let x = (clip.x / clip.w * 0.5 + 0.5) * size - 0.5;
+        let y = (0.5 - clip.y / clip.w * 0.5) * size - 0.5;
+        let outside = -1.0..=size;
+        let on_map = outside.contains(&x) && outside.contains(&y);
+        if !self.view.cube_face && !on_map {
+            // Past a fitted map's edge: no point the camera sees, nothing to shadow it from.
+            return 1.0;
+        }
+        let distance = if self.view.is_perspective() {
+            lifted.length()
+        } else {
+            view.forward.dot(lifted)
+        };
+        maps.filter.fraction(&self.map, x, y, distance)
+    }
+}
+
+impl Shadowing for ShadowMaps {
+    fn casts(&self, light: usize) -> bool {
+        self.lights.get(light).is_some_and(Option::is_some)
+    }
+
+    fn reaching(
+        &self,
+        light: usize,
+        object: usize,
+        points: &[Vec3],
+        normals: &[Vec3],
+        out: &mut [f32],
+    ) {
+        let Some(Some(maps)) = self.lights.get(light) else {
+            out.fill(1.0);
+            return;
+        };
+        let lift = self.chord_errors.get(object).copied().unwrap_or(0.0);
+        for ((out, &p), &n) in out.iter_mut().zip(points).zip(normals) {
+            *out = maps.face_for(p).reach(p, n, self, lift);
+        }
+    }
+}
