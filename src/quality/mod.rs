@@ -63,17 +63,19 @@ pub struct Quality {
     pub normal_form: NormalForm,
     pub normals: NormalSource,
     pub interpolation: Interpolation,
-    /// Texels on a side of each light's shadow map (each of a point light's cube faces, when it
-    /// needs a cube, has half as many).
+    /// Texels on a side of each light's shadow map (and of each of a point light's six cube
+    /// faces, when it needs a cube, up to 2048).
     #[serde(default = "interactive_shadow_map")]
     pub shadow_map: u32,
     /// Depth comparisons per shadow lookup: 1 (the nearest texel, a hard stair-stepped edge),
     /// 4 (bilinear), 9 or 16 (wider, softer filters).
     #[serde(default = "interactive_shadow_taps")]
     pub shadow_taps: u32,
-    /// How far a lookup moves off its surface before comparing, in texels beyond the filter's
-    /// reach: too little and surfaces shadow themselves in specks (acne), too much and shadows
-    /// come loose from their casters.
+    /// How far a shadow lookup moves off its surface along the normal before comparing, in
+    /// texels, past what the mesh's chord error needs: room for a surface bending towards its
+    /// light between the filter's taps. Too little and such surfaces shadow themselves in
+    /// specks (acne); too much and shadows come loose from their casters, and lookups near a
+    /// contact move into the other object.
     #[serde(default = "interactive_shadow_bias")]
     pub shadow_bias: f32,
 }
@@ -142,7 +144,7 @@ impl Quality {
             interpolation: Interpolation::PerspectiveCorrect,
             shadow_map: 1024,
             shadow_taps: 4,
-            shadow_bias: 0.5,
+            shadow_bias: 0.0,
         }
     }
 
@@ -155,6 +157,7 @@ impl Quality {
             samples: 16,
             normal_form: NormalForm::Full,
             shadow_map: 2048,
+            shadow_taps: 1,
             ..Quality::interactive()
         }
     }

@@ -41,14 +41,14 @@ impl DepthMap {
     }
 }
 
-/// The depth map of every object of the prepared scene seen through `view`. No faces are culled:
-/// open surfaces cast shadows from either side.
-pub fn render_depth(prepared: &PreparedScene, view: &DepthView) -> DepthMap {
+/// The depth map of the prepared scene's objects numbered in `objects`, seen through `view`. No
+/// faces are culled: open surfaces cast shadows from either side.
+pub fn render_depth(prepared: &PreparedScene, objects: &[usize], view: &DepthView) -> DepthMap {
     let viewport = Viewport {
         width: view.size,
         height: view.size,
     };
-    let triangles = depth_triangles(prepared, view, viewport);
+    let triangles = depth_triangles(prepared, objects, view, viewport);
     let bins = TileBins::new(viewport, &triangles);
     let mut depth = vec![f32::INFINITY; (view.size as usize).pow(2)];
     let strip = (TILE_SIZE * view.size.max(1)) as usize;
@@ -112,14 +112,14 @@ fn depth_at(t: &ScreenTriangle, x: u32, y: u32) -> f32 {
 /// sees a sixth of the scene.
 fn depth_triangles(
     prepared: &PreparedScene,
+    objects: &[usize],
     view: &DepthView,
     viewport: Viewport,
 ) -> Vec<ScreenTriangle> {
     let guard = viewport.guard_band();
-    let pieces = prepared
-        .objects
+    let pieces = objects
         .iter()
-        .enumerate()
+        .map(|&index| (index, &prepared.objects[index]))
         .flat_map(|(index, object)| {
             let origin = (object.surface.origin() - view.origin).as_vec3();
             let vertices: Vec<(ClipVertex, u8)> = object
@@ -266,6 +266,7 @@ mod tests {
             glam::camera::rh::proj::directx::orthographic(-2.0, 2.0, -2.0, 2.0, 0.5, 9.0);
         let map = render_depth(
             &prepared,
+            &[0],
             &DepthView {
                 origin: DVec3::new(0.0, 3.0, 0.0),
                 view_projection: projection * view,
@@ -289,6 +290,7 @@ mod tests {
         let origin = DVec3::new(0.0, 2.0, 3.0);
         let map = render_depth(
             &prepared,
+            &[0],
             &DepthView {
                 origin,
                 view_projection: projection * view,

@@ -68,18 +68,23 @@ impl Bounds {
     }
 }
 
-/// The box around every object as tessellated, grown by each mesh's chord error so the true
-/// surfaces are inside it too.
-pub fn scene_bounds(prepared: &PreparedScene) -> Option<Bounds> {
+/// Each object's box as tessellated, grown by its mesh's chord error so the true surface is
+/// inside it too (`None` for an object with no finite vertex).
+pub fn object_bounds(prepared: &PreparedScene) -> Vec<Option<Bounds>> {
     prepared
         .objects
         .iter()
-        .filter_map(|object| {
+        .map(|object| {
             let origin = object.surface.origin();
             let points = object.mesh.positions.iter().map(|p| origin + p.as_dvec3());
             Bounds::around(points).map(|b| b.grown(f64::from(object.mesh.chord_error)))
         })
-        .reduce(Bounds::union)
+        .collect()
+}
+
+/// The box around every box of `boxes`.
+pub fn union_of(boxes: impl IntoIterator<Item = Option<Bounds>>) -> Option<Bounds> {
+    boxes.into_iter().flatten().reduce(Bounds::union)
 }
 
 /// The part of `scene` inside the camera's view (of the full image's `aspect`), boxed: the

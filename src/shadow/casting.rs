@@ -1,7 +1,11 @@
-//! Whether anything in a scene can shadow anything: not where the scene is one convex surface.
+//! Which objects can cast a shadow from a light onto anything: a map holds only those, so it is
+//! fitted to them alone (a floor under everything casts nothing and takes no texels).
 
-use crate::scene::Scene;
+use super::bounds::Bounds;
+use crate::raster::PreparedScene;
+use crate::scene::{Light, Scene};
 use crate::surface::Surface;
+use glam::DVec3;
 
 /// Whether a shadow can fall anywhere in the scene. One sphere, plane or triangle alone cannot
 /// shadow itself (its own back side is already turned from the light); a bowl, a cone's inside
@@ -12,10 +16,62 @@ pub fn can_shadow(scene: &Scene) -> bool {
     }
     match scene.objects.as_slice() {
         [] => false,
-        [only] => !matches!(
-            only.surface,
-            Surface::Sphere(_) | Surface::Plane(_) | Surface::Triangle(_)
-        ),
+        [only] => can_shadow_itself(&only.surface),
         _ => true,
+    }
+}
+
+/// Whether a surface can stand between a light and another part of itself. A sphere cannot
+/// (where it turns from the light it is already dark), nor can anything flat.
+fn can_shadow_itself(surface: &Surface) -> bool {
+    !matches!(
+        surface,
+        Surface::Sphere(_) | Surface::Plane(_) | Surface::Triangle(_)
+    )
+}
+
+/// The objects that may cast a shadow from `light` onto any object, by index, given each
+/// object's box. A flat object casts only onto what reaches past its plane on the side away
+/// from the light; a curved one onto itself or anything else.
+pub fn casters(prepared: &PreparedScene, boxes: &[Option<Bounds>], light: &Light) -> Vec<usize> {
+    let others = |index: usize| {
+        boxes
+            .iter()
+            .enumerate()
+            .filter(move |(other, b)| *other != index && b.is_some())
+            .filter_map(|(_, b)| *b)
+    };
+    (0..prepared.objects.len())
+        .filter(|&index| {
+            let surface = &prepared.objects[index].surface;
+            match flat_plane(surface) {
+                Some((point, normal)) => {
+                    let lit_side = match *light {
+                        Light::Point { position, .. } => normal.dot(position - point),
+                        Light::Directional { towards, .. } => normal.dot(towards.as_dvec3()),
+                    };
+                    // Past the plane by more than the box's own rounding (a sphere resting on a
+                    // floor touches it, its box grown by its chord error).
+                    let beyond = |b: Bounds| {
+                        let tolerance = 1e-3 * b.min.distance(b.max);
+                        let side = lit_side.signum();
+                        b.corners()
+                            .iter()
+                            .any(|c| normal.dot(*c - point) * side < -tolerance)
+                    };
+                    others(index).any(beyond)
+                }
+                None => can_shadow_itself(surface) || others(index).next().is_some(),
+            }
+        })
+        .collect()
+}
+
+/// A point on a flat surface's plane and its normal.
+fn flat_plane(surface: &Surface) -> Option<(DVec3, DVec3)> {
+    match surface {
+        Surface::Plane(s) => Some((s.origin, s.normal.as_dvec3())),
+        Surface::Triangle(s) => Some((s.a, s.normal.as_dvec3())),
+        _ => None,
     }
 }

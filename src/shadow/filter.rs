@@ -1,6 +1,9 @@
 //! Percentage-closer filtering: the fraction of a square of depth comparisons around a lookup
-//! that find it in front of the map, weighted so the fraction varies smoothly as the lookup
-//! moves (a box of the given width convolved with the bilinear tent).
+//! that find the receiver in front of the map, weighted so the fraction varies smoothly as the
+//! lookup moves (a box of the given width convolved with the bilinear tent). Each tap compares
+//! the map with the receiver's own depth along that tap's ray (its tangent plane's), not with
+//! the lookup's: a sloped receiver then matches the map at every tap, so no bias is needed for
+//! its slope, and no normal offset lifts the lookup into a neighbouring object.
 
 use crate::raster::DepthMap;
 
@@ -23,15 +26,15 @@ impl DepthFilter {
         self.side as f32 / 2.0
     }
 
-    /// The weighted fraction of comparisons in which `depth` is at most the map's, at map
-    /// position (x, y) in texels (texel (i, j) centred at (i, j)). Taps past the map's edge
-    /// read its edge texels.
-    pub fn fraction(&self, map: &DepthMap, x: f32, y: f32, depth: f32) -> f32 {
+    /// The weighted fraction of comparisons at map position (x, y) in texels (texel (i, j)
+    /// centred at (i, j)) in which the receiver's depth along the tap's ray, `depth(i, j)`, is at
+    /// most the map's there. Taps past the map's edge read its edge texels.
+    pub fn fraction(&self, map: &DepthMap, x: f32, y: f32, depth: impl Fn(u32, u32) -> f32) -> f32 {
         let (first_x, weights_x) = self.axis(x);
         let (first_y, weights_y) = self.axis(y);
         let last = map.size as i64 - 1;
         let side = self.side as usize;
-        let mut lit = 0.0;
+        let (mut lit, mut taps, mut lit_taps) = (0.0, 0, 0);
         for (j, weight_y) in weights_y[..side].iter().enumerate() {
             if *weight_y == 0.0 {
                 continue;
@@ -39,12 +42,16 @@ impl DepthFilter {
             let row = (first_y + j as i64).clamp(0, last) as u32;
             for (i, weight_x) in weights_x[..side].iter().enumerate() {
                 let column = (first_x + i as i64).clamp(0, last) as u32;
-                if depth <= map.at(column, row) {
+                taps += 1;
+                if depth(column, row) <= map.at(column, row) {
                     lit += weight_y * weight_x;
+                    lit_taps += 1;
                 }
             }
         }
-        lit
+        // All lit is exactly 1 (the weights' sum may round below it): a surface no shadow
+        // touches is lit to the bit as without shadows.
+        if lit_taps == taps { 1.0 } else { lit }
     }
 
     /// The first texel along an axis and the weights of it and the next `side − 1`.
@@ -125,21 +132,49 @@ mod tests {
             let mut last = 0.0;
             for k in 0..=200 {
                 let x = 10.0 + k as f32 * 0.06;
-                let lit = filter.fraction(&map, x, 8.0, 5.0);
+                let lit = filter.fraction(&map, x, 8.0, |_, _| 5.0);
                 assert!(lit >= last - 1e-6, "{taps} taps: {lit} after {last} at {x}");
                 last = lit;
             }
-            assert_eq!(filter.fraction(&map, 10.0, 8.0, 5.0), 0.0, "{taps} taps");
-            assert_eq!(filter.fraction(&map, 22.0, 8.0, 5.0), 1.0, "{taps} taps");
+            assert_eq!(
+                filter.fraction(&map, 10.0, 8.0, |_, _| 5.0),
+                0.0,
+                "{taps} taps"
+            );
+            assert_eq!(
+                filter.fraction(&map, 22.0, 8.0, |_, _| 5.0),
+                1.0,
+                "{taps} taps"
+            );
             // Half way across the edge (between texels 15 and 16), half lit.
-            let middle = filter.fraction(&map, 15.5, 8.0, 5.0);
+            let middle = filter.fraction(&map, 15.5, 8.0, |_, _| 5.0);
             assert!(
                 (middle - 0.5).abs() < 1e-5 || taps == 1,
                 "{taps} taps: {middle}"
             );
             // No weight past the reach.
             let reach = filter.reach();
-            assert_eq!(filter.fraction(&map, 15.5 - reach - 0.01, 8.0, 5.0), 0.0);
+            assert_eq!(
+                filter.fraction(&map, 15.5 - reach - 0.01, 8.0, |_, _| 5.0),
+                0.0
+            );
+        }
+    }
+
+    #[test]
+    fn a_sloped_receiver_compared_tap_by_tap_matches_a_map_of_itself() {
+        // The map holds a plane rising one unit a texel; the receiver lies on that plane.
+        let size = 16;
+        let plane = |i: u32, j: u32| 100.0 + i as f32 + 0.5 * j as f32;
+        let depth = (0..size * size)
+            .map(|k| plane(k % size, k / size))
+            .collect();
+        let map = DepthMap { size, depth };
+        for taps in [1, 4, 9, 16] {
+            let lit = DepthFilter::new(taps).fraction(&map, 7.3, 6.8, plane);
+            assert_eq!(lit, 1.0, "{taps} taps");
+            let behind = DepthFilter::new(taps).fraction(&map, 7.3, 6.8, |i, j| plane(i, j) + 0.01);
+            assert_eq!(behind, 0.0, "{taps} taps");
         }
     }
 
@@ -147,7 +182,7 @@ mod tests {
     fn taps_past_the_edge_read_the_edge() {
         let map = step_map(8, 8);
         let filter = DepthFilter::new(16);
-        assert_eq!(filter.fraction(&map, -0.5, -0.5, 0.5), 1.0);
-        assert_eq!(filter.fraction(&map, 7.9, 7.9, 5.0), 0.0);
+        assert_eq!(filter.fraction(&map, -0.5, -0.5, |_, _| 0.5), 1.0);
+        assert_eq!(filter.fraction(&map, 7.9, 7.9, |_, _| 5.0), 0.0);
     }
 }

@@ -16,6 +16,9 @@ pub struct MapView {
     /// A texel's width in world units at depth d along the view is `texel_at_zero + texel_per_depth · d`.
     pub texel_at_zero: f32,
     pub texel_per_depth: f32,
+    /// The world directions of the map's +x and +y (up the map), square to `view.forward`.
+    pub right: Vec3,
+    pub up: Vec3,
     /// Whether it is one of a cube's six faces (chosen by the major axis from the light).
     pub cube_face: bool,
 }
@@ -29,22 +32,53 @@ impl MapView {
     pub fn is_perspective(&self) -> bool {
         self.texel_per_depth > 0.0
     }
+
+    /// Where texel (i, j)'s centre lies across the map, from −1 to 1 (x right, y up).
+    fn across(&self, i: u32, j: u32) -> (f32, f32) {
+        let size = self.view.size as f32;
+        (
+            (i as f32 + 0.5) / size * 2.0 - 1.0,
+            1.0 - (j as f32 + 0.5) / size * 2.0,
+        )
+    }
+
+    /// How far along texel (i, j)'s ray the plane through `q` (map-relative) with normal `n`
+    /// lies, measured as the map measures (depth along the view for an orthographic map,
+    /// distance from the light for a perspective one); +∞ where the ray never meets the plane
+    /// ahead (it shows nothing of the receiver, so no light reaching it).
+    pub fn plane_along(&self, i: u32, j: u32, q: Vec3, n: Vec3) -> f32 {
+        let (x, y) = self.across(i, j);
+        let forward = self.view.forward;
+        if self.is_perspective() {
+            let tan_half = self.texel_per_depth * self.view.size as f32 / 2.0;
+            let ray = forward + self.right * (x * tan_half) + self.up * (y * tan_half);
+            let along = n.dot(ray);
+            if along >= 0.0 {
+                return f32::INFINITY;
+            }
+            n.dot(q) / along * ray.length()
+        } else {
+            let half = self.texel_at_zero * self.view.size as f32 / 2.0;
+            let across = self.right * (x * half) + self.up * (y * half);
+            n.dot(q - across) / n.dot(forward)
+        }
+    }
 }
 
 /// The map of a directional light shining `towards` (from the surface to the light) over the
-/// `seen` box, deep enough to hold every caster of the `scene`.
-pub fn directional_view(towards: Vec3, seen: &Bounds, scene: &Bounds, size: u32) -> MapView {
+/// `region` box: across it and through its depth.
+pub fn directional_view(towards: Vec3, region: &Bounds, size: u32) -> MapView {
     let forward = -crate::surface::normalize_or(towards, Vec3::Y).as_dvec3();
     let (right, up) = axes_across(forward);
-    let centre = seen.centre();
+    let centre = region.centre();
     let across = |c: &DVec3| ((*c - centre).dot(right), (*c - centre).dot(up));
     let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
-    for (x, y) in seen.corners().iter().map(across) {
+    for (x, y) in region.corners().iter().map(across) {
         (x0, x1, y0, y1) = (x0.min(x), x1.max(x), y0.min(y), y1.max(y));
     }
     let half = ((x1 - x0).max(y1 - y0) / 2.0).max(1e-6) * 1.001;
     let origin = centre + right * ((x0 + x1) / 2.0) + up * ((y0 + y1) / 2.0);
-    let along = scene.corners().map(|c| (c - origin).dot(forward));
+    let along = region.corners().map(|c| (c - origin).dot(forward));
     let (near, far) = along
         .iter()
         .fold((f64::MAX, f64::MIN), |(a, b), &d| (a.min(d), b.max(d)));
@@ -68,26 +102,33 @@ pub fn directional_view(towards: Vec3, seen: &Bounds, scene: &Bounds, size: u32)
         },
         texel_at_zero: 2.0 * h / size as f32,
         texel_per_depth: 0.0,
+        right: right.as_vec3(),
+        up: up.as_vec3(),
         cube_face: false,
     }
 }
 
-/// The maps of a point light at `position` lighting the `seen` box: one fitted perspective map
-/// of `size` texels, or six cube faces of half as many where the box surrounds the light or
+/// The maps of a point light at `position` over the `region` box: one fitted perspective map
+/// of `size` texels, or six cube faces (`cube_face_size`) where the box surrounds the light or
 /// spans too wide a view. `margin_texels` widens each cube face past 90° so the filter's taps
 /// at a face's edge stay on it.
-pub fn point_views(position: DVec3, seen: &Bounds, size: u32, margin_texels: f32) -> Vec<MapView> {
-    let corners = seen.corners();
+pub fn point_views(
+    position: DVec3,
+    region: &Bounds,
+    size: u32,
+    margin_texels: f32,
+) -> Vec<MapView> {
+    let corners = region.corners();
     let farthest = corners
         .iter()
         .map(|c| c.distance(position))
         .fold(0.0, f64::max)
         .max(1e-6)
         * 1.01;
-    if let Some(view) = fitted_view(position, seen, farthest, size) {
+    if let Some(view) = fitted_view(position, region, farthest, size) {
         return vec![view];
     }
-    let face_size = (size / 2).max(8);
+    let face_size = cube_face_size(size);
     let widen = 1.0 + 2.0 * margin_texels / face_size as f32;
     CUBE_FACES
         .iter()
@@ -105,13 +146,22 @@ pub fn point_views(position: DVec3, seen: &Bounds, size: u32, margin_texels: f32
         .collect()
 }
 
+/// The texels on a side of each cube face for maps of `size`: as many, up to `LARGEST_CUBE_FACE`
+/// (six faces of 4096² would take 400 MB).
+pub fn cube_face_size(size: u32) -> u32 {
+    size.min(LARGEST_CUBE_FACE)
+}
+
+/// The largest cube face, in texels on a side.
+const LARGEST_CUBE_FACE: u32 = 2048;
+
 /// One perspective map around the light's view of the box, if its half-angle is narrow enough.
-fn fitted_view(position: DVec3, seen: &Bounds, farthest: f64, size: u32) -> Option<MapView> {
-    if seen.grown(1e-9 * farthest).contains(position) {
+fn fitted_view(position: DVec3, region: &Bounds, farthest: f64, size: u32) -> Option<MapView> {
+    if region.grown(1e-9 * farthest).contains(position) {
         return None;
     }
-    let axis = (seen.centre() - position).normalize();
-    let half_angle = seen
+    let axis = (region.centre() - position).normalize();
+    let half_angle = region
         .corners()
         .iter()
         .map(|c| {
@@ -139,6 +189,8 @@ fn perspective_view(
     size: u32,
     cube_face: bool,
 ) -> MapView {
+    let right = forward.cross(up).normalize();
+    let up = right.cross(forward);
     let view = glam::camera::rh::view::look_to_mat4(Vec3::ZERO, forward.as_vec3(), up.as_vec3());
     // Depth is kept linear, so a near plane this close costs no precision.
     let (far, near) = (far as f32, (far * 1e-5) as f32);
@@ -152,6 +204,8 @@ fn perspective_view(
         },
         texel_at_zero: 0.0,
         texel_per_depth: 2.0 * (fov / 2.0).tan() / size as f32,
+        right: right.as_vec3(),
+        up: up.as_vec3(),
         cube_face,
     }
 }
@@ -192,14 +246,6 @@ fn axes_across(forward: DVec3) -> (DVec3, DVec3) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use glam::Vec4;
-
-    fn room() -> Bounds {
-        Bounds {
-            min: DVec3::new(-5.0, 0.0, -5.0),
-            max: DVec3::new(5.0, 3.0, 5.0),
-        }
-    }
 
     /// Where a world point lands in a map: texel coordinates and depth.
     fn project(view: &MapView, p: DVec3) -> (f32, f32, f32) {
@@ -225,17 +271,16 @@ mod tests {
             min: DVec3::new(-2.0, 0.0, -2.0),
             max: DVec3::new(2.0, 1.0, 2.0),
         };
-        let view = directional_view(Vec3::new(0.3, 1.0, 0.2), &seen, &room(), 256);
+        let view = directional_view(Vec3::new(0.3, 1.0, 0.2), &seen, 256);
         for c in seen.corners() {
             assert!(inside(&view, c), "{c}");
         }
-        // Depth from the whole room: a caster high above the seen box is in front of it.
-        let (_, _, high) = project(&view, DVec3::new(0.0, 3.0, 0.0));
+        // Nearer the light, nearer in depth.
+        let (_, _, high) = project(&view, DVec3::new(0.0, 1.0, 0.0));
         let (_, _, low) = project(&view, DVec3::new(0.0, 0.0, 0.0));
         assert!((0.0..low).contains(&high), "{high} {low}");
         let texel = view.texel(1.0);
         assert!(texel > 4.0 / 256.0 && texel < 8.0 / 256.0, "{texel}");
-        let _ = Vec4::ZERO;
     }
 
     #[test]
@@ -251,7 +296,7 @@ mod tests {
         }
         let within = point_views(DVec3::new(0.0, 0.5, 0.0), &seen, 512, 2.0);
         assert_eq!(within.len(), 6);
-        assert!(within.iter().all(|v| v.cube_face && v.view.size == 256));
+        assert!(within.iter().all(|v| v.cube_face && v.view.size == 512));
         // Every direction lands inside the face its major axis picks.
         for k in 0..200 {
             let t = k as f64 * 0.731;

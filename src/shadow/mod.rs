@@ -12,16 +12,16 @@ mod casting;
 mod filter;
 mod light_views;
 
-pub use bounds::{Bounds, scene_bounds, seen_bounds};
+pub use bounds::{Bounds, object_bounds, seen_bounds, union_of};
 pub use cache::ShadowCache;
-pub use casting::can_shadow;
+pub use casting::{can_shadow, casters};
 pub use filter::DepthFilter;
 
 use crate::raster::{DepthMap, PreparedScene, Viewport, render_depth};
 use crate::scene::{Camera, Light, Scene};
 use crate::shade::Shadowing;
 use glam::Vec3;
-use light_views::{MapView, cube_face_of, directional_view, point_views};
+use light_views::{MapView, cube_face_of, cube_face_size, directional_view, point_views};
 use rayon::prelude::*;
 
 /// The texels on a side a shadow map may have.
@@ -42,11 +42,14 @@ pub struct ShadowSettings {
 pub struct ShadowMaps {
     /// Per light of the scene, its maps; `None` where it shadows nothing the camera sees.
     lights: Vec<Option<LightMaps>>,
-    /// Per object, its mesh's chord error: how far its true surface may lie behind the chords
-    /// the maps were drawn from.
-    chord_errors: Vec<f32>,
+    /// Per object, how far a lookup on it moves off the surface along its normal before the
+    /// bias: twice its mesh's chord error, as the true surface may lie that far behind the
+    /// chords the maps were drawn from (inside a bowl), and bend towards the light between taps.
+    lifts: Vec<f32>,
+    /// Per object, its largest curvature: how far a receiver's tangent plane stays true to it.
+    curvatures: Vec<f32>,
     filter: DepthFilter,
-    /// Texels a lookup moves off its surface.
+    /// Texels a lookup moves off its surface along its normal, besides its lift.
     offset_texels: f32,
 }
 
@@ -63,13 +66,12 @@ struct ShadowFace {
     from_camera: Vec3,
 }
 
-/// The part of a texel every lookup moves off its surface, even where the light meets it head on:
-/// room for the f32 rounding of the map's depths and the lookup's.
-const DEPTH_ROUNDING_TEXELS: f32 = 0.1;
+/// How much nearer than the map a receiver must be to count as behind it, relative to its
+/// distance: room for the f32 rounding of the map's depths and the receiver's.
+const DEPTH_ROUNDING: f32 = 5e-5;
 
 /// The bytes the maps of `scene` take at `map_size`, counted before any is drawn: a point light's
-/// cube (6 faces of half the size) or single map, whichever is larger; none when nothing can
-/// shadow.
+/// cube of six faces or single map, whichever is larger; none when nothing can shadow.
 pub fn map_bytes(scene: &Scene, map_size: u32) -> u64 {
     if !scene.shadows || !can_shadow(scene) {
         return 0;
@@ -77,7 +79,7 @@ pub fn map_bytes(scene: &Scene, map_size: u32) -> u64 {
     let texels = u64::from(map_size).pow(2);
     let per_light = |light: &Light| match light {
         Light::Directional { .. } => texels,
-        Light::Point { .. } => texels.max(6 * u64::from(map_size / 2).pow(2)),
+        Light::Point { .. } => texels.max(6 * u64::from(cube_face_size(map_size)).pow(2)),
     };
     let texels: u64 = scene.lights.iter().map(per_light).sum();
     texels.saturating_mul(DepthMap::BYTES_PER_TEXEL)
@@ -96,32 +98,39 @@ impl ShadowMaps {
         if !scene.shadows || !can_shadow(scene) {
             return None;
         }
-        let whole = scene_bounds(prepared)?;
+        let boxes = object_bounds(prepared);
+        let whole = union_of(boxes.iter().copied())?;
         let seen = seen_bounds(camera, viewport.aspect(), &whole);
         let filter = DepthFilter::new(settings.taps);
-        let offset_texels = filter.reach() + settings.bias_texels;
+        let offset_texels = settings.bias_texels;
         let lights = scene
             .lights
             .par_iter()
             .map(|light| {
-                let seen = seen?;
+                let casters = casters(prepared, &boxes, light);
+                let region = shadowing_region(light, &seen?, &whole, &casters, &boxes)?;
                 let views = match *light {
                     Light::Directional { towards, .. } => {
-                        vec![directional_view(towards, &seen, &whole, settings.map_size)]
+                        vec![directional_view(towards, &region, settings.map_size)]
                     }
                     Light::Point { position, .. } => {
-                        point_views(position, &seen, settings.map_size, offset_texels + 1.0)
+                        point_views(position, &region, settings.map_size, filter.reach() + 1.0)
                     }
                 };
-                Some(LightMaps::draw(prepared, camera, views))
+                Some(LightMaps::draw(prepared, camera, &casters, views))
             })
             .collect();
         Some(ShadowMaps {
             lights,
-            chord_errors: prepared
+            lifts: prepared
                 .objects
                 .iter()
-                .map(|o| o.mesh.chord_error)
+                .map(|o| 2.0 * o.mesh.chord_error)
+                .collect(),
+            curvatures: prepared
+                .objects
+                .iter()
+                .map(|o| o.surface.max_curvature())
                 .collect(),
             filter,
             offset_texels,
@@ -129,12 +138,44 @@ impl ShadowMaps {
     }
 }
 
+/// The part of the scene a light's map must cover: its casters, as far as they lie between the
+/// light and what the camera sees (`seen`). `None` when no caster does.
+fn shadowing_region(
+    light: &Light,
+    seen: &Bounds,
+    whole: &Bounds,
+    casters: &[usize],
+    boxes: &[Option<Bounds>],
+) -> Option<Bounds> {
+    let casting = union_of(casters.iter().map(|&index| boxes[index]))?;
+    let towards_light = match *light {
+        Light::Point { position, .. } => Bounds {
+            min: position,
+            max: position,
+        },
+        Light::Directional { towards, .. } => {
+            let reach = whole.min.distance(whole.max);
+            let away = crate::surface::normalize_or(towards, Vec3::Y).as_dvec3() * reach;
+            Bounds {
+                min: seen.min + away,
+                max: seen.max + away,
+            }
+        }
+    };
+    casting.intersection(seen.union(towards_light))
+}
+
 impl LightMaps {
-    fn draw(prepared: &PreparedScene, camera: &Camera, views: Vec<MapView>) -> LightMaps {
+    fn draw(
+        prepared: &PreparedScene,
+        camera: &Camera,
+        casters: &[usize],
+        views: Vec<MapView>,
+    ) -> LightMaps {
         let faces = views
             .into_par_iter()
             .map(|view| ShadowFace {
-                map: distances(render_depth(prepared, &view.view), &view),
+                map: distances(render_depth(prepared, casters, &view.view), &view),
                 from_camera: (camera.eye - view.view.origin).as_vec3(),
                 view,
             })
@@ -175,10 +216,19 @@ fn distances(mut map: DepthMap, view: &MapView) -> DepthMap {
     map
 }
 
+/// What a lookup needs of the object it is on.
+#[derive(Clone, Copy)]
+struct Receiver {
+    /// See `ShadowMaps::lifts`.
+    lift: f32,
+    /// See `ShadowMaps::curvatures`.
+    curvature: f32,
+}
+
 impl ShadowFace {
     /// The fraction of the light reaching camera-relative point `p` with facing geometric
-    /// normal `n`, lifted `lift` world units past the offset (the receiver's chord error).
-    fn reach(&self, p: Vec3, n: Vec3, maps: &ShadowMaps, lift: f32) -> f32 {
+    /// normal `n` on `receiver`.
+    fn reach(&self, p: Vec3, n: Vec3, maps: &ShadowMaps, receiver: Receiver) -> f32 {
         let view = &self.view.view;
         let relative = p + self.from_camera;
         let to_light = if self.view.is_perspective() {
@@ -192,12 +242,8 @@ impl ShadowFace {
             // blocks it (exactly, with no map needed, so no band of light past the terminator).
             return 0.0;
         }
-        // A texel's depth varies most across it where the light grazes the surface, in
-        // proportion to the sine of the light's angle from the normal: so the offset.
-        let sine = (1.0 - facing * facing).max(0.0).sqrt();
-        let depth = view.forward.dot(relative);
-        let texels = maps.offset_texels * sine + DEPTH_ROUNDING_TEXELS;
-        let lifted = relative + n * (texels * self.view.texel(depth) + lift);
+        let texel = self.view.texel(view.forward.dot(relative));
+        let lifted = relative + n * (maps.offset_texels * texel + receiver.lift);
         let clip = view.view_projection * lifted.extend(1.0);
         if clip.w.is_nan() || clip.w <= 0.0 {
             return 1.0;
@@ -211,12 +257,29 @@ impl ShadowFace {
             // Past a fitted map's edge: no point the camera sees, nothing to shadow it from.
             return 1.0;
         }
-        let distance = if self.view.is_perspective() {
+        // Rounding grows with the distances compared and with the map's extent there (an
+        // orthographic map's depths are relative to its middle, so they pass through zero).
+        let extent = texel * size;
+        // A curved receiver departs from its tangent plane: where the light grazes it, the
+        // plane met by a tap's ray a texel away may lie far along the surface, and past an
+        // occluder the surface itself never reaches. So the plane is trusted only as far as
+        // the surface keeps within about a texel of it, √(2·texel/κ), twice over.
+        let trusted = match receiver.curvature {
+            0.0 => f32::INFINITY,
+            curvature => 2.0 * (2.0 * maps.filter.reach() * texel / curvature).sqrt(),
+        };
+        let centre = view.forward.dot(lifted);
+        let centre = if self.view.is_perspective() {
             lifted.length()
         } else {
-            view.forward.dot(lifted)
+            centre
         };
-        maps.filter.fraction(&self.map, x, y, distance)
+        let receiver = |i, j| {
+            let along = self.view.plane_along(i, j, lifted, n);
+            let along = along.clamp(centre - trusted, centre + trusted);
+            along - DEPTH_ROUNDING * (along.abs() + extent)
+        };
+        maps.filter.fraction(&self.map, x, y, receiver)
     }
 }
 
@@ -237,9 +300,12 @@ impl Shadowing for ShadowMaps {
             out.fill(1.0);
             return;
         };
-        let lift = self.chord_errors.get(object).copied().unwrap_or(0.0);
+        let receiver = Receiver {
+            lift: self.lifts.get(object).copied().unwrap_or(0.0),
+            curvature: self.curvatures.get(object).copied().unwrap_or(0.0),
+        };
         for ((out, &p), &n) in out.iter_mut().zip(points).zip(normals) {
-            *out = maps.face_for(p).reach(p, n, self, lift);
+            *out = maps.face_for(p).reach(p, n, self, receiver);
         }
     }
 }

@@ -113,6 +113,25 @@ impl Surface {
         }
     }
 
+    /// The largest normal curvature anywhere on the surface, 1/length (how far it can bend from
+    /// a tangent plane: by about κ·d²/2 at distance d). A cone's grows without bound towards
+    /// its apex; its value half way along the side is given.
+    pub fn max_curvature(&self) -> f32 {
+        match self {
+            Surface::Plane(_) | Surface::Triangle(_) => 0.0,
+            Surface::Sphere(s) => 1.0 / s.radius,
+            Surface::Paraboloid(s) => 2.0 * s.curvature,
+            Surface::Cone(s) => {
+                let radius_half_way = 0.5 * s.height * s.half_angle.tan();
+                s.half_angle.cos() / radius_half_way.max(f32::MIN_POSITIVE)
+            }
+            Surface::Wave(s) => {
+                let k = std::f32::consts::TAU / s.wavelength;
+                s.amplitude.abs() * k * k
+            }
+        }
+    }
+
     /// Whether the surface encloses a volume the camera can be outside of (so back faces may be culled).
     pub fn encloses(&self, eye: DVec3) -> Option<bool> {
         match self {

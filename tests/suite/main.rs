@@ -47,6 +47,7 @@ mod render_watch;
 mod scene_files;
 mod scene_quality;
 mod settings;
+mod shadows;
 mod source_layout;
 mod ssh_session;
 mod still_bands;

@@ -1,0 +1,431 @@
+//! Shadows: no acne, no detached contact shadows, lights that cannot reach, and shadow
+//! boundaries within a pixel of the reference's exact shadow rays.
+
+use crate::common::render_with;
+use bumpwork::quality::Quality;
+use bumpwork::raster::{Framebuffer, PreparedScene, Viewport};
+use bumpwork::reference::{exact_shader, render_reference};
+use bumpwork::scene::{Scene, parse_scene};
+use bumpwork::shade::LitShader;
+use glam::Vec3;
+
+const VIEW: Viewport = Viewport {
+    width: 160,
+    height: 120,
+};
+
+/// Ambient light of every test scene: a shadowed pixel is its colour times this.
+const AMBIENT: f32 = 0.1;
+
+/// A scene of a 20 × 20 floor (y = 0), the given objects and lights, seen from `eye`.
+fn scene(eye: [f64; 3], target: [f64; 3], lights: &str, objects: &str) -> Scene {
+    let text = format!(
+        "ambient = [{AMBIENT}, {AMBIENT}, {AMBIENT}]\n\
+         [camera]\neye = {eye:?}\ntarget = {target:?}\nfov = 40\n\
+         {lights}\n\
+         [[object]]\n\
+         surface = {{ plane = {{ origin = [-10, 0, 10], normal = [0, 1, 0], u-axis = [1, 0, 0], size = [20, 20] }} }}\n\
+         material = {{ color = [0.6, 0.6, 0.6], specular = 0 }}\n\
+         {objects}"
+    );
+    parse_scene(&text, "test scene").unwrap()
+}
+
+fn point_light(at: [f64; 3]) -> String {
+    format!("[[light]]\npoint = {{ position = {at:?}, color = [1, 1, 1] }}")
+}
+
+fn directional_light(towards: [f64; 3]) -> String {
+    format!("[[light]]\ndirectional = {{ towards = {towards:?}, color = [1, 1, 1] }}")
+}
+
+fn sphere(center: [f64; 3], radius: f64) -> String {
+    format!(
+        "[[object]]\nsurface = {{ sphere = {{ center = {center:?}, radius = {radius} }} }}\n\
+         material = {{ color = [0.8, 0.5, 0.3], specular = 0 }}"
+    )
+}
+
+/// The resting sphere of most tests: radius 1, touching the floor at the origin.
+fn resting_sphere() -> String {
+    sphere([0.0, 1.0, 0.0], 1.0)
+}
+
+fn without_shadows(scene: &Scene) -> Scene {
+    Scene {
+        shadows: false,
+        ..scene.clone()
+    }
+}
+
+/// The rasterizer's frame at `quality` (one sample a pixel).
+fn raster(scene: &Scene, quality: &Quality) -> Framebuffer {
+    let camera = &scene.camera;
+    let prepared = quality.prepare(scene.clone(), camera, VIEW, 0).unwrap();
+    let shader = quality.shader(&prepared, camera, VIEW);
+    render_with(&prepared, &quality.target(camera, VIEW), &shader).0
+}
+
+/// The reference's frame: exact surfaces and exact shadow rays.
+fn reference(scene: &Scene) -> Framebuffer {
+    let prepared = PreparedScene::new(
+        scene.clone(),
+        bumpwork::surface::Tessellation { density: 4 },
+    );
+    let shader: LitShader = exact_shader(&prepared, &scene.camera);
+    render_reference(&prepared, &scene.camera, VIEW, &shader).0
+}
+
+/// Per pixel: of the light that would reach it without shadows, the fraction that does, from
+/// `render`'s frames of the scene with shadows, without, and without lights; and the depth seen
+/// there. `None` where the lights add almost nothing or nothing is drawn.
+fn light_fractions(
+    scene: &Scene,
+    render: impl Fn(&Scene) -> Framebuffer,
+) -> Vec<Option<(f32, f32)>> {
+    let dark = Scene {
+        lights: Vec::new(),
+        ..scene.clone()
+    };
+    let (on, off, ambient) = (
+        render(scene),
+        render(&without_shadows(scene)),
+        render(&dark),
+    );
+    on.color()
+        .iter()
+        .zip(off.color())
+        .zip(ambient.color())
+        .zip(off.depth())
+        .map(|(((on, off), ambient), &depth)| {
+            let light = (*off - *ambient).max_element();
+            let reached = (*on - *ambient).max_element();
+            let fraction = (reached / light).clamp(0.0, 1.0);
+            (depth.is_finite() && light > 0.02).then_some((fraction, depth))
+        })
+        .collect()
+}
+
+/// Which pixels are in shadow (less than half the light reaches them), and their depth.
+fn shadowed(fractions: &[Option<(f32, f32)>]) -> Vec<Option<(bool, f32)>> {
+    fractions
+        .iter()
+        .map(|f| f.map(|(fraction, depth)| (fraction < 0.5, depth)))
+        .collect()
+}
+
+/// Pixels where `ours` says otherwise than `exact` with no pixel of `exact` within one pixel
+/// (8-neighbourhood) saying as `ours` does: boundary misplacements of more than a pixel. Only
+/// pixels where both see the same surface (depths within 1 %) are compared: where the mesh's
+/// outline and the true one part, they see different things, which is the tessellation's error.
+fn misplaced(ours: &[Option<(bool, f32)>], exact: &[Option<(bool, f32)>]) -> Vec<(u32, u32)> {
+    let (w, h) = (VIEW.width as i64, VIEW.height as i64);
+    let at = |x: i64, y: i64| exact[(y * w + x) as usize].map(|(s, _)| s);
+    let mut out = Vec::new();
+    for y in 1..h - 1 {
+        for x in 1..w - 1 {
+            let i = (y * w + x) as usize;
+            let (Some((mine, near_depth)), Some((theirs, depth))) = (ours[i], exact[i]) else {
+                continue;
+            };
+            if (near_depth - depth).abs() > 0.01 * depth {
+                continue;
+            }
+            let around = (-1..=1).flat_map(|dy| (-1..=1).map(move |dx| (dx, dy)));
+            let agreed = around
+                .into_iter()
+                .any(|(dx, dy)| at(x + dx, y + dy) == Some(mine));
+            if mine != theirs && !agreed {
+                out.push((x as u32, y as u32));
+            }
+        }
+    }
+    out
+}
+
+/// The raster's and the reference's shadows of `scene` at `quality`, compared pixel by pixel:
+/// returns how many pixels each says are in shadow, after asserting every difference lies on
+/// the reference's boundary.
+fn assert_boundary_within_a_pixel(scene: &Scene, quality: &Quality, what: &str) -> usize {
+    let ours = light_fractions(scene, |s| raster(s, quality));
+    let exact = light_fractions(scene, reference);
+    let wrong = misplaced(&shadowed(&ours), &shadowed(&exact));
+    let in_shadow = shadowed(&exact)
+        .iter()
+        .flatten()
+        .filter(|(s, _)| *s)
+        .count();
+    let shown: Vec<String> = wrong
+        .iter()
+        .take(6)
+        .map(|&(x, y)| {
+            let i = (y * VIEW.width + x) as usize;
+            format!("({x},{y}) {:?} vs exact {:?}", ours[i], exact[i])
+        })
+        .collect();
+    assert!(
+        wrong.is_empty(),
+        "{what}: {} pixels more than a pixel from the exact shadow boundary (of {in_shadow} in \
+         shadow): (fraction, depth) {shown:?}",
+        wrong.len(),
+    );
+    in_shadow
+}
+
+#[test]
+fn a_plane_lit_at_a_grazing_angle_is_nowhere_darker_than_without_shadows() {
+    // The sphere is below the floor: it can shadow nothing the camera sees, so every pixel of
+    // the floor must keep all its light, however low the light.
+    for elevation in [1.0f64, 3.0, 10.0, 30.0] {
+        let (s, c) = elevation.to_radians().sin_cos();
+        for lights in [
+            directional_light([c, s, 0.3]),
+            point_light([-30.0 * c, 30.0 * s, -4.0]),
+        ] {
+            let scene = scene(
+                [0.0, 4.0, 9.0],
+                [0.0, 0.0, 0.0],
+                &lights,
+                &sphere([0.0, -3.0, 0.0], 1.0),
+            );
+            for quality in [Quality::draft(), Quality::interactive(), Quality::high()] {
+                let with = raster(&scene, &quality);
+                let without = raster(&without_shadows(&scene), &quality);
+                let darker = with
+                    .color()
+                    .iter()
+                    .zip(without.color())
+                    .filter(|(a, b)| a.x < b.x - 1e-6)
+                    .count();
+                assert_eq!(darker, 0, "{darker} pixels acne at {elevation}° ({lights})");
+            }
+        }
+    }
+}
+
+#[test]
+fn a_resting_spheres_shadow_reaches_its_contact_with_the_floor() {
+    // Lit from behind and above, the sphere throws its shadow towards the camera. Down each
+    // column through the sphere, wherever the exact shadow touches the sphere's outline (the
+    // first floor pixel below it is in shadow), the rasterizer's does too: no lit gap between
+    // a shadow and its caster. (Not at `draft`: its 16-cell sphere is a cone near the floor,
+    // whose shadow stops short of the true sphere's.)
+    for lights in [
+        directional_light([0.0, 1.0, -1.5]),
+        point_light([0.0, 6.0, -8.0]),
+    ] {
+        let scene = scene([0.0, 2.5, 7.0], [0.0, 0.5, 0.0], &lights, &resting_sphere());
+        let exact_frame = reference(&scene);
+        let exact = shadowed(&light_fractions(&scene, reference));
+        let sphere_pixel = |x: u32, y: u32| {
+            let i = (y * VIEW.width + x) as usize;
+            let c = exact_frame.color()[i];
+            exact_frame.depth()[i].is_finite() && (c.x - c.y).abs() > 1e-3
+        };
+        let touching: Vec<usize> = (0..VIEW.width)
+            .filter_map(|x| {
+                let bottom = (0..VIEW.height - 1).rev().find(|&y| sphere_pixel(x, y))?;
+                let below = ((bottom + 1) * VIEW.width + x) as usize;
+                exact[below].is_some_and(|(dark, _)| dark).then_some(below)
+            })
+            .collect();
+        assert!(
+            touching.len() > 20,
+            "{lights}: the shadow touches the sphere in {} columns",
+            touching.len()
+        );
+        for quality in [Quality::interactive(), Quality::high()] {
+            let in_shadow = assert_boundary_within_a_pixel(&scene, &quality, &lights);
+            assert!(in_shadow > 200, "the shadow is seen: {in_shadow} pixels");
+            let ours = shadowed(&light_fractions(&scene, |s| raster(s, &quality)));
+            for &i in &touching {
+                let (x, y) = (i as u32 % VIEW.width, i as u32 / VIEW.width);
+                let gap = ours[i].is_some_and(|(dark, _)| !dark);
+                assert!(
+                    !gap,
+                    "{lights}: a lit gap under the sphere at {x},{y} at {}",
+                    quality.describe()
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn the_shadow_boundary_is_within_a_pixel_of_the_exact_one_at_high() {
+    let cases = [
+        (
+            directional_light([0.6, 1.0, 0.3]),
+            "directional from the side",
+        ),
+        (point_light([-4.0, 6.0, 5.0]), "point light in front"),
+        (point_light([3.0, 3.0, -1.0]), "low point light"),
+    ];
+    for (lights, what) in cases {
+        let objects = format!("{}\n{}", resting_sphere(), sphere([2.2, 0.6, 0.8], 0.6));
+        let scene = scene([0.0, 3.0, 8.0], [0.5, 0.6, 0.0], &lights, &objects);
+        let in_shadow = assert_boundary_within_a_pixel(&scene, &Quality::high(), what);
+        assert!(in_shadow > 300, "{what}: {in_shadow} pixels in shadow");
+    }
+}
+
+#[test]
+fn a_light_below_the_floor_lights_nothing_above_it() {
+    for lights in [
+        point_light([0.5, -2.0, 1.0]),
+        directional_light([0.2, -1.0, 0.1]),
+    ] {
+        let scene = scene([0.0, 3.0, 8.0], [0.0, 0.7, 0.0], &lights, &resting_sphere());
+        let dark = Scene {
+            lights: Vec::new(),
+            ..scene.clone()
+        };
+        let (lit, ambient) = (
+            raster(&scene, &Quality::interactive()),
+            raster(&dark, &Quality::interactive()),
+        );
+        // Brighter by no 8-bit step: the filter's taps at the sphere's terminator, where the
+        // light grazes it, may let through a few thousandths of it.
+        let srgb = |c: &Vec3| c.to_array().map(bumpwork::raster::linear_to_srgb8);
+        let brighter = lit
+            .color()
+            .iter()
+            .zip(ambient.color())
+            .filter(|(a, b)| srgb(a) != srgb(b))
+            .count();
+        assert_eq!(
+            brighter, 0,
+            "{lights}: {brighter} pixels see the light through the floor"
+        );
+        // Without shadows the sphere's underside would be lit (it faces the light).
+        let through = raster(&without_shadows(&scene), &Quality::interactive());
+        assert!(
+            through.color() != ambient.color(),
+            "{lights}: the test sees the sphere's underside"
+        );
+    }
+}
+
+#[test]
+fn a_light_behind_the_camera_casts_the_exact_shadows() {
+    let scene = scene(
+        [0.0, 3.0, 8.0],
+        [0.0, 0.7, 0.0],
+        &point_light([-5.0, 4.0, 13.0]),
+        &resting_sphere(),
+    );
+    let in_shadow = assert_boundary_within_a_pixel(&scene, &Quality::high(), "behind the camera");
+    assert!(in_shadow > 100, "{in_shadow} pixels in shadow");
+}
+
+#[test]
+fn a_point_light_inside_a_bowl_lights_all_of_its_inside_and_none_of_its_outside() {
+    // A paraboloid alone: a point light inside it sees its whole inside (the inside of a
+    // paraboloid is convex), while its outside faces away.
+    let text = format!(
+        "ambient = [{AMBIENT}, {AMBIENT}, {AMBIENT}]\n\
+         [camera]\neye = [0, 5, 9]\ntarget = [0, 1, 0]\nfov = 40\n\
+         {}\n\
+         [[object]]\n\
+         surface = {{ paraboloid = {{ apex = [0, 0, 0], curvature = 0.5, radius = 2 }} }}\n\
+         material = {{ color = [0.6, 0.6, 0.6], specular = 0 }}",
+        point_light([0.3, 1.0, 0.2])
+    );
+    let scene = parse_scene(&text, "bowl").unwrap();
+    for quality in [Quality::draft(), Quality::interactive(), Quality::high()] {
+        let fractions = light_fractions(&scene, |s| raster(s, &quality));
+        let lit: Vec<f32> = fractions.iter().flatten().map(|(f, _)| *f).collect();
+        assert!(lit.len() > 1000, "{} pixels the light reaches", lit.len());
+        let worst = lit.iter().copied().fold(1.0, f32::min);
+        assert!(
+            worst > 0.999,
+            "a pixel of the inside gets {worst} of the light"
+        );
+    }
+    assert_boundary_within_a_pixel(&scene, &Quality::interactive(), "inside a bowl");
+}
+
+#[test]
+fn a_sphere_lit_from_behind_darkens_the_floor_before_it_to_ambient_and_changes_nothing_else() {
+    let scene = scene(
+        [0.0, 2.0, 8.0],
+        [0.0, 0.8, 0.0],
+        &directional_light([0.0, 0.8, -1.0]),
+        &resting_sphere(),
+    );
+    let quality = Quality::interactive();
+    let (with, without) = (
+        raster(&scene, &quality),
+        raster(&without_shadows(&scene), &quality),
+    );
+    let exact = shadowed(&light_fractions(&scene, reference));
+    let (w, h) = (VIEW.width as i64, VIEW.height as i64);
+    let near_exact_shadow = |x: i64, y: i64| {
+        (-1..=1).any(|dy: i64| {
+            (-1..=1).any(|dx: i64| {
+                let (x, y) = ((x + dx).clamp(0, w - 1), (y + dy).clamp(0, h - 1));
+                exact[(y * w + x) as usize].is_some_and(|(s, _)| s)
+            })
+        })
+    };
+    let floor_ambient = Vec3::splat(0.6 * AMBIENT);
+    let (mut changed, mut at_ambient) = (0, 0);
+    for y in 0..h {
+        for x in 0..w {
+            let i = (y * w + x) as usize;
+            let (a, b) = (with.color()[i], without.color()[i]);
+            if a == b {
+                continue;
+            }
+            changed += 1;
+            assert!(
+                near_exact_shadow(x, y),
+                "pixel {x},{y} changed outside the shadow: {a} vs {b}"
+            );
+            assert!(a.x < b.x, "pixel {x},{y} brighter with shadows");
+            if (a - floor_ambient).abs().max_element() < 1e-5 {
+                at_ambient += 1;
+            }
+        }
+    }
+    assert!(changed > 300, "{changed} pixels in shadow");
+    // Inside the shadow, all but its edge is at the ambient level exactly.
+    assert!(
+        at_ambient as f64 > 0.7 * changed as f64,
+        "{at_ambient} of {changed} at ambient"
+    );
+}
+
+#[test]
+fn one_convex_object_alone_makes_no_shadow_maps() {
+    let text = "[camera]\neye = [0, 0, 6]\ntarget = [0, 0, 0]\n\
+                [[light]]\npoint = { position = [2, 3, 4] }\n\
+                [[object]]\nsurface = { sphere = { center = [0, 0, 0], radius = 1 } }";
+    let scene = parse_scene(text, "sphere").unwrap();
+    let quality = Quality::interactive();
+    let prepared = quality
+        .prepare(scene.clone(), &scene.camera, VIEW, 0)
+        .unwrap();
+    assert!(
+        quality
+            .shader(&prepared, &scene.camera, VIEW)
+            .shadows
+            .is_none()
+    );
+    let two = parse_scene(&format!("{text}\n{}", sphere([3.0, 0.0, 0.0], 1.0)), "two").unwrap();
+    let prepared = quality.prepare(two.clone(), &two.camera, VIEW, 0).unwrap();
+    assert!(
+        quality
+            .shader(&prepared, &two.camera, VIEW)
+            .shadows
+            .is_some()
+    );
+    let off = without_shadows(&two);
+    let prepared = quality.prepare(off.clone(), &off.camera, VIEW, 0).unwrap();
+    assert!(
+        quality
+            .shader(&prepared, &off.camera, VIEW)
+            .shadows
+            .is_none()
+    );
+}
