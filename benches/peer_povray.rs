@@ -1,8 +1,11 @@
 //! bumpwork against POV-Ray 3.7 on the same scene, in one run: sphere-on-plane-dimples with a
 //! checked, dimpled plane and a sphere wearing the chelsea photograph and the gravel height map,
-//! at 1920×1080, without and with antialiasing (POV-Ray `-A` / `+A0.3`, bumpwork 1 / 16 samples).
-//! POV-Ray renders the scene `render --format pov` writes (our meshes, our baked maps), so both
-//! draw the same geometry. The renderers of a comparison take turns, round by round (this
+//! at 1920×1080, without and with antialiasing (POV-Ray `-A` / `+A0.3`, bumpwork 1 / 16 samples),
+//! shadows on in both. POV-Ray renders two scenes: the one `render --format pov` writes (our
+//! meshes, our baked maps), so both draw the same geometry; and the same look as a POV-Ray user
+//! writes it (an analytic box and sphere, POV-Ray's checker, dents and image maps). The cost of
+//! bumpwork's shadows is its frame with them against the frame without. The renderers of a
+//! comparison take turns, round by round (this
 //! virtual machine's speed drifts by tens of per cent within minutes), and each ratio is the
 //! median of the rounds' ratios, with the least and greatest; times are medians with min–max.
 //! Skipped (and said so) when `povray` is not installed.
@@ -11,7 +14,7 @@
 
 mod bench_support;
 
-use bench_support::{pov_peer_files, pov_peer_settings};
+use bench_support::{pov_peer_files, pov_peer_settings, write_native_pov_scene};
 use bumpwork::export::{StillFormat, StillRequest, write_pov, write_still};
 use bumpwork::measure::{Timing, ratio_by_round};
 use bumpwork::raster::{PreparedScene, Viewport};
@@ -51,9 +54,10 @@ fn main() {
         SIZE.1,
         runs()
     );
-    let povray = |antialias: &'static str| {
+    write_native_pov_scene(&dir, &prepared.scene, SIZE);
+    let povray = |antialias: &'static str, scene: &'static str| {
         let dir = dir.clone();
-        move || run_povray(&dir, &[antialias], "pov.png")
+        move || run_povray(&dir, scene, &[antialias], "pov.png")
     };
     let request = |samples: u32, adaptive: Option<f32>| {
         let settings = pov_peer_settings(samples, adaptive);
@@ -65,9 +69,16 @@ fn main() {
         );
         (settings, recipe)
     };
-    let ours = |(settings, recipe): &(StillSettings, Recipe)| {
+    let unshadowed = PreparedScene {
+        scene: bumpwork::scene::Scene {
+            shadows: false,
+            ..prepared.scene.clone()
+        },
+        objects: prepared.objects.iter().map(clone_object).collect(),
+    };
+    let ours_of = |prepared: &PreparedScene, (settings, recipe): &(StillSettings, Recipe)| {
         let request = StillRequest {
-            prepared: &prepared,
+            prepared,
             camera: &camera,
             settings: *settings,
             scene_text: &text,
@@ -76,10 +87,11 @@ fn main() {
         let out = dir.join("ours.png");
         write_still(&request, &out, StillFormat::Png, &mut |_| {}, &|| None).expect("still");
     };
+    let ours = |request: &(StillSettings, Recipe)| ours_of(&prepared, request);
     let report = |label: &str, pov: &[Duration], ours: &[Duration]| {
         let (ratio, least, most) = ratio_by_round(pov, ours);
         println!(
-            "  {label:<34} {}   POV-Ray {}   {ratio:.1}x faster (rounds {least:.1}–{most:.1}x)",
+            "  {label:<40} {}   POV-Ray {}   {ratio:.1}x faster (rounds {least:.1}–{most:.1}x)",
             Timing::from_samples(ours.to_vec()).summary_ms(),
             Timing::from_samples(pov.to_vec()).summary_ms(),
         );
@@ -88,50 +100,87 @@ fn main() {
     // each of our stills (tenths of a second) settles with one unmeasured run first, as
     // POV-Ray's seconds-long runs do within themselves.
     let one_sample = request(1, None);
-    let (mut pov_plain, mut ours_plain) = (povray("-A"), || ours(&one_sample));
-    let times = Timing::interleaved(1, runs(), &mut [(0, &mut pov_plain), (1, &mut ours_plain)]);
-    report("bumpwork 1 spp vs -A", &times[0], &times[1]);
-
-    let pov_aa_error = povray_error(&dir);
+    let (mut pov_plain, mut pov_native) = (povray("-A", "peer.pov"), povray("-A", "native.pov"));
+    let mut ours_plain = || ours(&one_sample);
+    let mut ours_unshadowed = || ours_of(&unshadowed, &one_sample);
+    let times = Timing::interleaved(
+        1,
+        runs(),
+        &mut [
+            (0, &mut pov_plain),
+            (0, &mut pov_native),
+            (1, &mut ours_plain),
+            (1, &mut ours_unshadowed),
+        ],
+    );
+    report("bumpwork 1 spp vs -A (our meshes)", &times[0], &times[2]);
+    report("bumpwork 1 spp vs -A (native scene)", &times[1], &times[2]);
+    let (with, without) = (
+        Timing::from_samples(times[2].clone()),
+        Timing::from_samples(times[3].clone()),
+    );
+    let (ratio, least, most) = ratio_by_round(&times[2], &times[3]);
     println!(
-        "  POV-Ray +A0.3 against its own +A0.0 (every pixel supersampled): {}",
-        pov_aa_error.describe()
+        "  shadows: {} with, {} without: {:.1}% of the frame (rounds {:.1}–{:.1}%)",
+        with.summary_ms(),
+        without.summary_ms(),
+        100.0 * (1.0 - 1.0 / ratio),
+        100.0 * (1.0 - 1.0 / least),
+        100.0 * (1.0 - 1.0 / most),
     );
+
     let errors = adaptive_errors(&prepared, &camera);
-    // The cheapest contrast whose error is nowhere worse than POV-Ray's own adaptive error.
-    let equal_error = errors
-        .iter()
-        .rev()
-        .find(|(_, error)| error.no_worse_than(&pov_aa_error))
-        .map(|&(contrast, _)| contrast);
-    let (full, adaptive) = (request(16, None), request(16, Some(ADAPTIVE)));
-    let equal = equal_error.map(|contrast| request(16, Some(contrast)));
-    let (mut pov_aa, mut ours_full) = (povray("+A0.3"), || ours(&full));
-    let (mut ours_adaptive, mut ours_equal) = (|| ours(&adaptive), || equal.iter().for_each(ours));
-    let mut works: Vec<(usize, &mut dyn FnMut())> = vec![
-        (0, &mut pov_aa),
-        (1, &mut ours_full),
-        (1, &mut ours_adaptive),
-    ];
-    if equal.is_some() {
-        works.push((1, &mut ours_equal));
-    }
-    let times = Timing::interleaved(1, runs(), &mut works);
-    report("bumpwork 16 spp vs +A0.3", &times[0], &times[1]);
-    report(
-        &format!("bumpwork 16 spp adaptive {ADAPTIVE} vs +A0.3"),
-        &times[0],
-        &times[2],
-    );
-    match equal_error {
-        Some(contrast) => report(
-            &format!("16 spp adaptive {contrast}, error <= POV"),
+    for (scene, label) in [("peer.pov", "our meshes"), ("native.pov", "native scene")] {
+        let pov_aa_error = povray_error(&dir, scene);
+        println!(
+            "  POV-Ray +A0.3 against its own +A0.0 ({label}, every pixel supersampled): {}",
+            pov_aa_error.describe()
+        );
+        // The cheapest contrast whose error is nowhere worse than POV-Ray's own adaptive error.
+        let equal_error = errors
+            .iter()
+            .rev()
+            .find(|(_, error)| error.no_worse_than(&pov_aa_error))
+            .map(|&(contrast, _)| contrast);
+        let (full, adaptive) = (request(16, None), request(16, Some(ADAPTIVE)));
+        let equal = equal_error.map(|contrast| request(16, Some(contrast)));
+        let (mut pov_aa, mut ours_full) = (povray("+A0.3", scene), || ours(&full));
+        let (mut ours_adaptive, mut ours_equal) =
+            (|| ours(&adaptive), || equal.iter().for_each(ours));
+        let mut works: Vec<(usize, &mut dyn FnMut())> = vec![
+            (0, &mut pov_aa),
+            (1, &mut ours_full),
+            (1, &mut ours_adaptive),
+        ];
+        if equal.is_some() {
+            works.push((1, &mut ours_equal));
+        }
+        let times = Timing::interleaved(1, runs(), &mut works);
+        report(&format!("16 spp vs +A0.3 ({label})"), &times[0], &times[1]);
+        report(
+            &format!("16 spp adaptive {ADAPTIVE} vs +A0.3 ({label})"),
             &times[0],
-            &times[3],
-        ),
-        None => println!("  no adaptive contrast tried is as accurate as POV-Ray's +A0.3"),
+            &times[2],
+        );
+        match equal_error {
+            Some(contrast) => report(
+                &format!("16 spp adaptive {contrast}, error <= POV ({label})"),
+                &times[0],
+                &times[3],
+            ),
+            None => println!("  no adaptive contrast tried is as accurate as POV-Ray's +A0.3"),
+        }
     }
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A prepared object again (its mesh copied), for a scene that differs only in its settings.
+fn clone_object(object: &bumpwork::raster::PreparedObject) -> bumpwork::raster::PreparedObject {
+    bumpwork::raster::PreparedObject {
+        surface: object.surface.clone(),
+        material: object.material.clone(),
+        mesh: object.mesh.clone(),
+    }
 }
 
 /// Contrasts of adaptive supersampling measured against full supersampling, least first.
@@ -177,12 +226,12 @@ impl ChannelError {
     }
 }
 
-/// Renders `peer.pov` in `dir` at `SIZE` with `options` into `out`, without a window.
-fn run_povray(dir: &std::path::Path, options: &[&str], out: &str) {
+/// Renders `scene` in `dir` at `SIZE` with `options` into `out`, without a window.
+fn run_povray(dir: &std::path::Path, scene: &str, options: &[&str], out: &str) {
     let status = Command::new("povray")
         .args([&format!("+W{}", SIZE.0), &format!("+H{}", SIZE.1)])
         .args(options)
-        .args(["-D", "-GA", &format!("+O{out}"), "peer.pov"])
+        .args(["-D", "-GA", &format!("+O{out}"), scene])
         .current_dir(dir)
         .output()
         .expect("povray runs");
@@ -196,9 +245,9 @@ fn run_povray(dir: &std::path::Path, options: &[&str], out: &str) {
 /// POV-Ray's `+A0.3` frame against its `+A0.0` one, which supersamples every pixel that differs
 /// from a neighbour at all. Both without jitter (`-J`), so a pixel supersampled in both is
 /// sampled at the same points and the difference is the adaptive choice alone.
-fn povray_error(dir: &std::path::Path) -> ChannelError {
+fn povray_error(dir: &std::path::Path, scene: &str) -> ChannelError {
     let render = |antialias: &str, out: &str| {
-        run_povray(dir, &[antialias, "-J"], out);
+        run_povray(dir, scene, &[antialias, "-J"], out);
         let image = image::open(dir.join(out)).expect("POV-Ray's PNG").to_rgb8();
         image.pixels().map(|p| p.0).collect::<Vec<[u8; 3]>>()
     };

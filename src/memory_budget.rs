@@ -55,6 +55,8 @@ pub struct MemoryUse {
     pub lights: u64,
     /// Bytes of framebuffers and encoder buffers.
     pub output_bytes: u64,
+    /// Bytes of the lights' shadow maps.
+    pub shadow_map_bytes: u64,
 }
 
 impl MemoryUse {
@@ -71,6 +73,7 @@ impl MemoryUse {
             .saturating_add(self.geometry_bytes())
             .saturating_add(self.light_bytes())
             .saturating_add(self.output_bytes)
+            .saturating_add(self.shadow_map_bytes)
     }
 
     /// `Ok` when the whole fits `budget` bytes, else what it needs and what to reduce.
@@ -117,11 +120,16 @@ impl fmt::Display for OverBudget {
                 format!("{} lights", count_words(needed.lights)),
                 "fewer lights",
             ),
+            (
+                needed.shadow_map_bytes,
+                "shadow maps".to_string(),
+                "a smaller quality.shadow-map, or shadows=false",
+            ),
         ];
         let largest = parts
             .iter()
             .max_by_key(|(bytes, ..)| *bytes)
-            .expect("four parts");
+            .expect("five parts");
         write!(
             f,
             "this render needs about {} of memory, over the {} budget; {} take {} (try {}), ",
@@ -179,8 +187,9 @@ mod tests {
             triangles: 10,
             lights: 1,
             output_bytes: 50,
+            shadow_map_bytes: 7,
         };
-        let total = 100 + 10 * BYTES_PER_TRIANGLE + BYTES_PER_LIGHT + 50;
+        let total = 100 + 10 * BYTES_PER_TRIANGLE + BYTES_PER_LIGHT + 50 + 7;
         assert_eq!(needed.total(), total);
         assert!(needed.check(total).is_ok());
         assert!(needed.check(total - 1).is_err());
@@ -208,6 +217,13 @@ mod tests {
         let message = images.check(4 << 30).unwrap_err().to_string();
         assert!(message.contains("images take 13 GiB"), "{message}");
         assert!(!message.contains('\n'));
+        let maps = MemoryUse {
+            shadow_map_bytes: 20 << 30,
+            ..images
+        };
+        let message = maps.check(4 << 30).unwrap_err().to_string();
+        assert!(message.contains("shadow maps take 20 GiB"), "{message}");
+        assert!(message.contains("shadow-map"), "{message}");
     }
 
     #[test]
@@ -217,6 +233,7 @@ mod tests {
             triangles: u64::MAX,
             lights: u64::MAX,
             output_bytes: u64::MAX,
+            shadow_map_bytes: u64::MAX,
         };
         assert_eq!(huge.total(), u64::MAX);
         assert!(huge.check(u64::MAX).is_ok());

@@ -162,3 +162,56 @@ pub fn render_with(
     let stats = render_into(prepared, target, shader, &mut framebuffer);
     (framebuffer, stats)
 }
+
+/// The POV-Ray peer's scene as a POV-Ray user would write it, into `dir/native.pov` beside copies
+/// of its images: the same camera and lights, an analytic box for the floor with POV-Ray's own
+/// checker and dents, an analytic sphere with the chelsea image and the gravel bump map
+/// wrapped around it (`map_type 1`). The same look, drawn POV-Ray's way.
+pub fn write_native_pov_scene(dir: &Path, scene: &Scene, size: (u32, u32)) -> PathBuf {
+    use bumpwork::export::{pov, rgb, write_pov_header};
+    use std::io::Write;
+    for image in ["chelsea.png", "gravel.png"] {
+        let shipped = Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("textures")
+            .join(image);
+        std::fs::copy(shipped, dir.join(image)).expect("shipped image");
+    }
+    let mut sdl = Vec::new();
+    write_pov_header(&mut sdl, scene, &scene.camera, size).expect("header");
+    let finish = |material: &Material| {
+        format!(
+            "finish {{ ambient {} diffuse 1 specular {} roughness {} }}",
+            rgb(scene.ambient),
+            material.specular,
+            1.0 / material.shininess.max(1e-3)
+        )
+    };
+    for object in &scene.objects {
+        match &object.surface {
+            Surface::Plane(plane) => {
+                let far = plane.origin
+                    + (plane.u_axis * plane.size.x + plane.v_axis * plane.size.y).as_dvec3();
+                let below = -plane.normal.as_dvec3();
+                writeln!(
+                    sdl,
+                    "box {{ {} {}\n  texture {{ pigment {{ checker rgb <0, 1, 1> rgb <1, 0, 1> scale 25 }}\n    normal {{ dents 0.6 scale 12 }} {} }} }}",
+                    pov(plane.origin),
+                    pov(far + below),
+                    finish(&object.material)
+                )
+            }
+            Surface::Sphere(sphere) => writeln!(
+                sdl,
+                "sphere {{ <0, 0, 0>, {}\n  texture {{ pigment {{ image_map {{ png \"chelsea.png\" map_type 1 interpolate 2 }} }}\n    normal {{ bump_map {{ png \"gravel.png\" map_type 1 interpolate 2 bump_size 1.5 }} }} {} }}\n  translate {} }}",
+                sphere.radius,
+                finish(&object.material),
+                pov(sphere.center)
+            ),
+            other => panic!("the peer scene has no {other:?}"),
+        }
+        .expect("in memory");
+    }
+    let path = dir.join("native.pov");
+    std::fs::write(&path, sdl).expect("native scene");
+    path
+}

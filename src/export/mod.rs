@@ -13,6 +13,6 @@ mod writeback;
 pub use contact_sheet::{ContactSheet, SheetLayout, SheetPicture};
 pub use output_file::{OutputFile, STANDARD_OUTPUT, check_destination};
 pub use png_file::{PngStill, read_png_rgb8, write_png, write_png_with_text};
-pub use pov_scene::{BAKE_SIDE, write_pov};
+pub use pov_scene::{BAKE_SIDE, pov, rgb, write_pov, write_pov_header};
 pub use ppm_file::PpmStill;
 pub use still_file::{StillFormat, StillRequest, write_still};

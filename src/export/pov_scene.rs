@@ -32,7 +32,7 @@ pub fn write_pov(
     let (file, handle) = OutputFile::create(path)?;
     let mut out = std::io::BufWriter::new(handle);
     let fail = |e: std::io::Error| Error::write(path, crate::bounded_read::io_words(&e));
-    write_header(&mut out, scene, camera, size).map_err(fail)?;
+    write_pov_header(&mut out, scene, camera, size).map_err(fail)?;
     let mut warnings = Vec::new();
     for (index, object) in prepared.objects.iter().enumerate() {
         let maps = bake_maps(&scene.objects[index], index, time, path, &mut warnings)?;
@@ -70,15 +70,19 @@ fn pov_string(text: &str) -> String {
     literal
 }
 
-fn pov(v: DVec3) -> String {
+/// A point or direction in POV-Ray's left-handed coordinates.
+pub fn pov(v: DVec3) -> String {
     format!("<{}, {}, {}>", v.x, v.y, -v.z)
 }
 
-fn rgb(c: Vec3) -> String {
+/// A linear colour in POV-Ray's words.
+pub fn rgb(c: Vec3) -> String {
     format!("rgb <{}, {}, {}>", c.x, c.y, c.z)
 }
 
-fn write_header(
+/// The scene's settings, background, camera and lights in POV-Ray's words (its z axis mirrored:
+/// POV-Ray is left-handed), for a `size` image; the objects follow.
+pub fn write_pov_header(
     sdl: &mut impl Write,
     scene: &Scene,
     camera: &Camera,

@@ -218,8 +218,8 @@ impl Quality {
             image_bytes: scene.image_bytes(),
             triangles,
             lights: scene.lights.len() as u64,
-            output_bytes: output_bytes
-                .saturating_add(crate::shadow::map_bytes(&scene, self.shadow_map)),
+            output_bytes,
+            shadow_map_bytes: crate::shadow::map_bytes(&scene, self.shadow_map),
         }
         .check(crate::memory_budget::budget_bytes())?;
         let objects = scene

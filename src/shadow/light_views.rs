@@ -24,6 +24,27 @@ pub struct MapView {
 }
 
 impl MapView {
+    /// Whether a map-relative point lies clearly outside what the map covers, a texel's margin
+    /// or more, told without projecting it: past the cone around a fitted perspective map's axis
+    /// that holds its corners, or farther from an orthographic map's axis than its corners. (A
+    /// cube face's neighbours cover what it does not.)
+    pub fn clearly_misses(&self, q: Vec3) -> bool {
+        if self.cube_face {
+            return false;
+        }
+        let along = self.view.forward.dot(q);
+        let across_squared = (q.length_squared() - along * along).max(0.0);
+        let half_diagonal = std::f32::consts::SQRT_2 * (self.view.size as f32 / 2.0 + 2.0);
+        if self.is_perspective() {
+            let tan_limit = self.texel_per_depth * half_diagonal;
+            along <= 0.0 || across_squared > (tan_limit * along).powi(2)
+        } else {
+            across_squared > (self.texel_at_zero * half_diagonal).powi(2)
+        }
+    }
+}
+
+impl MapView {
     pub fn texel(&self, depth: f32) -> f32 {
         self.texel_at_zero + self.texel_per_depth * depth.max(0.0)
     }
@@ -33,34 +54,87 @@ impl MapView {
         self.texel_per_depth > 0.0
     }
 
-    /// Where texel (i, j)'s centre lies across the map, from −1 to 1 (x right, y up).
-    fn across(&self, i: u32, j: u32) -> (f32, f32) {
+    /// The plane through `q` (map-relative) with normal `n`, met along each texel's ray.
+    pub fn tap_plane(&self, q: Vec3, n: Vec3) -> TapPlane {
         let size = self.view.size as f32;
-        (
-            (i as f32 + 0.5) / size * 2.0 - 1.0,
-            1.0 - (j as f32 + 0.5) / size * 2.0,
-        )
-    }
-
-    /// How far along texel (i, j)'s ray the plane through `q` (map-relative) with normal `n`
-    /// lies, measured as the map measures (depth along the view for an orthographic map,
-    /// distance from the light for a perspective one); +∞ where the ray never meets the plane
-    /// ahead (it shows nothing of the receiver, so no light reaching it).
-    pub fn plane_along(&self, i: u32, j: u32, q: Vec3, n: Vec3) -> f32 {
-        let (x, y) = self.across(i, j);
+        // Texel i's centre lies at i·step + start across the map (−1 to 1), row j's at
+        // −start − j·step up it.
+        let (step, start) = (2.0 / size, 1.0 / size - 1.0);
         let forward = self.view.forward;
         if self.is_perspective() {
-            let tan_half = self.texel_per_depth * self.view.size as f32 / 2.0;
-            let ray = forward + self.right * (x * tan_half) + self.up * (y * tan_half);
-            let along = n.dot(ray);
-            if along >= 0.0 {
-                return f32::INFINITY;
+            let tan_half = self.texel_per_depth * size / 2.0;
+            TapPlane::Perspective {
+                towards: n.dot(q),
+                along: n.dot(forward),
+                across: n.dot(self.right) * tan_half,
+                up: n.dot(self.up) * tan_half,
+                tan_half_squared: tan_half * tan_half,
+                step,
+                start,
             }
-            n.dot(q) / along * ray.length()
         } else {
-            let half = self.texel_at_zero * self.view.size as f32 / 2.0;
-            let across = self.right * (x * half) + self.up * (y * half);
-            n.dot(q - across) / n.dot(forward)
+            let half = self.texel_at_zero * size / 2.0;
+            let facing = n.dot(forward);
+            let (across, up) = (n.dot(self.right) * half, n.dot(self.up) * half);
+            // n·(q − x·half·right − y·half·up) / n·forward, affine in (i, j).
+            TapPlane::Orthographic {
+                at_origin: (n.dot(q) - across * start + up * start) / facing,
+                per_column: -across * step / facing,
+                per_row: up * step / facing,
+            }
+        }
+    }
+}
+
+/// A receiver's tangent plane as each texel's ray meets it: how far along (as the map measures,
+/// depth along the view for an orthographic map, distance from the light for a perspective
+/// one), +∞ where the ray never meets it ahead (it shows nothing of the receiver, so no light
+/// reaching it).
+#[derive(Clone, Copy, Debug)]
+pub enum TapPlane {
+    /// Affine in the texel's column and row.
+    Orthographic {
+        at_origin: f32,
+        per_column: f32,
+        per_row: f32,
+    },
+    /// n·q · |ray| / n·ray, with ray = forward + x·tan·right + y·tan·up.
+    Perspective {
+        towards: f32,
+        along: f32,
+        across: f32,
+        up: f32,
+        tan_half_squared: f32,
+        step: f32,
+        start: f32,
+    },
+}
+
+impl TapPlane {
+    #[inline]
+    pub fn at(&self, i: u32, j: u32) -> f32 {
+        match *self {
+            TapPlane::Orthographic {
+                at_origin,
+                per_column,
+                per_row,
+            } => at_origin + per_column * i as f32 + per_row * j as f32,
+            TapPlane::Perspective {
+                towards,
+                along,
+                across,
+                up,
+                tan_half_squared,
+                step,
+                start,
+            } => {
+                let (x, y) = (i as f32 * step + start, -start - j as f32 * step);
+                let meets = along + across * x + up * y;
+                if meets >= 0.0 {
+                    return f32::INFINITY;
+                }
+                towards * (1.0 + tan_half_squared * (x * x + y * y)).sqrt() / meets
+            }
         }
     }
 }
@@ -281,6 +355,47 @@ mod tests {
         assert!((0.0..low).contains(&high), "{high} {low}");
         let texel = view.texel(1.0);
         assert!(texel > 4.0 / 256.0 && texel < 8.0 / 256.0, "{texel}");
+    }
+
+    #[test]
+    fn the_tap_plane_meets_each_texels_ray_where_the_plane_is() {
+        let region = Bounds {
+            min: DVec3::new(-1.0, 0.0, -1.0),
+            max: DVec3::new(1.0, 1.0, 1.0),
+        };
+        let light = DVec3::new(0.5, 6.0, 0.3);
+        let views = [
+            directional_view(Vec3::new(0.3, 1.0, 0.2), &region, 64),
+            point_views(light, &region, 64, 2.0).remove(0),
+        ];
+        let n = Vec3::new(0.2, 0.9, -0.1).normalize();
+        for view in views {
+            // A point of the plane, relative to the map's origin.
+            let q = (DVec3::new(0.1, 0.2, -0.3) - view.view.origin).as_vec3();
+            let plane = view.tap_plane(q, n);
+            let inverse = view.view.view_projection.inverse();
+            for (i, j) in [(0, 0), (5, 40), (31, 32), (63, 63), (17, 3)] {
+                // Texel (i, j)'s ray, from its centre's near and far points.
+                let (x, y) = ((i as f32 + 0.5) / 32.0 - 1.0, 1.0 - (j as f32 + 0.5) / 32.0);
+                let point = |z: f32| {
+                    let p = inverse * glam::Vec4::new(x, y, z, 1.0);
+                    p.truncate() / p.w
+                };
+                let (a, b) = (point(0.0), point(1.0));
+                let t = n.dot(q - a) / n.dot(b - a);
+                let hit = a + (b - a) * t;
+                let want = if view.is_perspective() {
+                    hit.length()
+                } else {
+                    view.view.forward.dot(hit)
+                };
+                let got = plane.at(i, j);
+                assert!(
+                    (got - want).abs() < 1e-3 * want.abs().max(1.0),
+                    "texel {i},{j}: {got} vs {want}"
+                );
+            }
+        }
     }
 
     #[test]

@@ -9,6 +9,7 @@
 mod bounds;
 mod cache;
 mod casting;
+mod depth_blocks;
 mod filter;
 mod light_views;
 
@@ -20,6 +21,7 @@ pub use filter::DepthFilter;
 use crate::raster::{DepthMap, PreparedScene, Viewport, render_depth};
 use crate::scene::{Camera, Light, Scene};
 use crate::shade::Shadowing;
+use depth_blocks::DepthBlocks;
 use glam::Vec3;
 use light_views::{MapView, cube_face_of, cube_face_size, directional_view, point_views};
 use rayon::prelude::*;
@@ -61,6 +63,7 @@ struct LightMaps {
 struct ShadowFace {
     view: MapView,
     map: DepthMap,
+    blocks: DepthBlocks,
     /// The camera's eye relative to the map's origin, so camera-relative points become
     /// map-relative by one f32 addition.
     from_camera: Vec3,
@@ -174,10 +177,14 @@ impl LightMaps {
     ) -> LightMaps {
         let faces = views
             .into_par_iter()
-            .map(|view| ShadowFace {
-                map: distances(render_depth(prepared, casters, &view.view), &view),
-                from_camera: (camera.eye - view.view.origin).as_vec3(),
-                view,
+            .map(|view| {
+                let map = distances(render_depth(prepared, casters, &view.view), &view);
+                ShadowFace {
+                    blocks: DepthBlocks::new(&map),
+                    map,
+                    from_camera: (camera.eye - view.view.origin).as_vec3(),
+                    view,
+                }
             })
             .collect();
         LightMaps { faces }
@@ -221,8 +228,13 @@ fn distances(mut map: DepthMap, view: &MapView) -> DepthMap {
 struct Receiver {
     /// See `ShadowMaps::lifts`.
     lift: f32,
-    /// See `ShadowMaps::curvatures`.
-    curvature: f32,
+    /// How far the receiver's tangent plane is trusted, over the square root of a texel's
+    /// width: a curved receiver departs from its tangent plane, and where the light grazes it
+    /// the plane met by a tap's ray a texel away may lie far along the surface, past an
+    /// occluder the surface itself never reaches. So the plane is trusted only as far as the
+    /// surface keeps within the filter's reach of it, √(2·reach·texel/κ), twice over
+    /// (infinite for a flat receiver).
+    trust: f32,
 }
 
 impl ShadowFace {
@@ -231,6 +243,10 @@ impl ShadowFace {
     fn reach(&self, p: Vec3, n: Vec3, maps: &ShadowMaps, receiver: Receiver) -> f32 {
         let view = &self.view.view;
         let relative = p + self.from_camera;
+        if self.view.clearly_misses(relative) {
+            // No caster the map holds lies between this point and the light.
+            return 1.0;
+        }
         let to_light = if self.view.is_perspective() {
             -relative.normalize_or_zero()
         } else {
@@ -260,23 +276,36 @@ impl ShadowFace {
         // Rounding grows with the distances compared and with the map's extent there (an
         // orthographic map's depths are relative to its middle, so they pass through zero).
         let extent = texel * size;
-        // A curved receiver departs from its tangent plane: where the light grazes it, the
-        // plane met by a tap's ray a texel away may lie far along the surface, and past an
-        // occluder the surface itself never reaches. So the plane is trusted only as far as
-        // the surface keeps within about a texel of it, √(2·texel/κ), twice over.
-        let trusted = match receiver.curvature {
-            0.0 => f32::INFINITY,
-            curvature => 2.0 * (2.0 * maps.filter.reach() * texel / curvature).sqrt(),
-        };
+        let trusted = receiver.trust * texel.sqrt();
         let centre = view.forward.dot(lifted);
         let centre = if self.view.is_perspective() {
             lifted.length()
         } else {
             centre
         };
+        // Where the receiver's depth over the taps lies wholly in front of or behind every
+        // caster around them, every tap agrees: no need to take them. Its plane rises at most
+        // tan θ a unit across (half again for a perspective map's spreading rays).
+        let reach = maps.filter.reach() + 1.0;
+        let sine = (1.0 - facing * facing).max(0.0).sqrt();
+        let slope = if self.view.is_perspective() { 1.5 } else { 1.0 } * sine / facing;
+        let spread =
+            (reach * texel * slope).min(trusted) + 2.0 * DEPTH_ROUNDING * (centre.abs() + extent);
+        let last = self.map.size - 1;
+        let texel_at = |v: f32| (v.max(0.0) as u32).min(last);
+        let (least, greatest) = self.blocks.range(
+            (texel_at(x - reach), texel_at(y - reach)),
+            (texel_at(x + reach), texel_at(y + reach)),
+        );
+        if centre + spread <= least {
+            return 1.0;
+        }
+        if centre - spread > greatest {
+            return 0.0;
+        }
+        let plane = self.view.tap_plane(lifted, n);
         let receiver = |i, j| {
-            let along = self.view.plane_along(i, j, lifted, n);
-            let along = along.clamp(centre - trusted, centre + trusted);
+            let along = plane.at(i, j).clamp(centre - trusted, centre + trusted);
             along - DEPTH_ROUNDING * (along.abs() + extent)
         };
         maps.filter.fraction(&self.map, x, y, receiver)
@@ -300,9 +329,13 @@ impl Shadowing for ShadowMaps {
             out.fill(1.0);
             return;
         };
+        let curvature = self.curvatures.get(object).copied().unwrap_or(0.0);
         let receiver = Receiver {
             lift: self.lifts.get(object).copied().unwrap_or(0.0),
-            curvature: self.curvatures.get(object).copied().unwrap_or(0.0),
+            trust: match curvature {
+                0.0 => f32::INFINITY,
+                curvature => 2.0 * (2.0 * self.filter.reach() / curvature).sqrt(),
+            },
         };
         for ((out, &p), &n) in out.iter_mut().zip(points).zip(normals) {
             *out = maps.face_for(p).reach(p, n, self, receiver);

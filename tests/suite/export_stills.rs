@@ -422,6 +422,25 @@ fn a_pov_ray_scene_carries_every_object_and_its_baked_maps() {
     let sdl = std::fs::read_to_string(&pov).unwrap();
     assert_eq!(sdl.matches("mesh2 {").count(), 2);
     assert!(sdl.contains("camera {") && sdl.contains("light_source {"));
+    // POV-Ray's lights cast shadows, as the scene's do; without shadows, none does.
+    assert!(!sdl.contains("shadowless"), "the scene has shadows");
+    let flat = dir.join("flat.pov");
+    let args = [
+        "render",
+        "sphere-on-plane-waffle",
+        "-o",
+        flat.to_str().unwrap(),
+    ];
+    let out = bumpwork(&[&args[..], &["--format", "pov", "--set", "shadows=false"]].concat());
+    assert!(out.status.success(), "{}", stderr(&out));
+    let flat = std::fs::read_to_string(&flat).unwrap();
+    let lights = flat.matches("light_source {").count();
+    assert!(lights > 0);
+    assert_eq!(
+        flat.matches("shadowless").count(),
+        lights,
+        "every light is shadowless"
+    );
     for map in ["scene-1-bump.png", "scene-2-bump.png"] {
         assert!(sdl.contains(map), "{map} is referenced");
         let decoder = png::Decoder::new(std::io::BufReader::new(

@@ -105,6 +105,23 @@ fn triangles_over_the_budget_are_refused_before_tessellating() {
 }
 
 #[test]
+fn shadow_maps_over_the_budget_are_refused_before_any_is_drawn() {
+    let dir = temp_dir("memory-shadow-maps");
+    let scene = spheres_scene(&dir, "two.toml", &["brick", "brick"]);
+    // An 8192² map of 4-byte depths for the one light: 256 MiB, refused by a 64 MiB budget
+    // within a 384 MiB cap.
+    let budget = [("BUMPWORK_MEMORY_MIB", "64")];
+    let huge = ["--set", "quality.shadow-map=8192"];
+    let output = render_capped(&scene, &huge, &budget, 384);
+    assert_user_error(&output, "shadow maps take");
+    assert!(!scene.with_extension("png").exists(), "nothing is written");
+    // Without shadows nothing is drawn, so nothing is counted.
+    let off = ["--set", "quality.shadow-map=8192", "--set", "shadows=false"];
+    let output = render_capped(&scene, &off, &budget, 384);
+    assert!(output.status.success(), "{output:?}");
+}
+
+#[test]
 fn a_scene_file_of_thousands_of_spheres_is_refused_by_the_default_budget() {
     let dir = temp_dir("memory-many-objects");
     let mut text = String::from("[camera]\neye = [0, 0, 300]\ntarget = [0, 0, 0]\n");

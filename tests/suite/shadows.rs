@@ -429,3 +429,38 @@ fn one_convex_object_alone_makes_no_shadow_maps() {
             .is_none()
     );
 }
+
+#[test]
+fn a_scene_file_a_setting_and_a_recipe_each_turn_shadows_off() {
+    use crate::cli_support::{bumpwork, decode_png, stderr, temp_dir};
+    let dir = temp_dir("shadows-off");
+    let render = |name: &str, args: &[&str]| {
+        let path = dir.join(name);
+        let size = ["--size", "96x72", "-o", path.to_str().unwrap()];
+        let out = bumpwork(&[&["render"][..], args, &size].concat());
+        assert!(out.status.success(), "{}", stderr(&out));
+        decode_png(&path).2
+    };
+    let still = |name: &str, extra: &[&str]| {
+        render(name, &[&["sphere-on-plane-squares"][..], extra].concat())
+    };
+    let shadowed = still("on.png", &[]);
+    let flat = still("off.png", &["--set", "shadows=false"]);
+    assert_ne!(shadowed, flat, "the shadow shows");
+    // A shadow only darkens.
+    assert!(shadowed.iter().zip(&flat).all(|(on, off)| on <= off));
+    // The recipe keeps the setting.
+    let from = dir.join("off.png");
+    assert_eq!(
+        render("again.png", &["--from", from.to_str().unwrap()]),
+        flat
+    );
+    // So does a scene file's own `shadows = false`.
+    let text = bumpwork::scene::preset_file("sphere-on-plane-squares")
+        .unwrap()
+        .to_toml();
+    assert!(parse_scene(&text, "on").unwrap().shadows, "on unless said");
+    let file = dir.join("off.toml");
+    std::fs::write(&file, format!("shadows = false\n{text}")).unwrap();
+    assert_eq!(render("file.png", &[file.to_str().unwrap()]), flat);
+}
