@@ -21,6 +21,8 @@ pub struct MapView {
     pub up: Vec3,
     /// Whether it is one of a cube's six faces (chosen by the major axis from the light).
     pub cube_face: bool,
+    /// The greatest depth it covers (where its texels are widest).
+    pub deepest: f32,
 }
 
 impl MapView {
@@ -179,6 +181,7 @@ pub fn directional_view(towards: Vec3, region: &Bounds, size: u32) -> MapView {
         right: right.as_vec3(),
         up: up.as_vec3(),
         cube_face: false,
+        deepest: (far + margin - near) as f32,
     }
 }
 
@@ -281,6 +284,7 @@ fn perspective_view(
         right: right.as_vec3(),
         up: up.as_vec3(),
         cube_face,
+        deepest: far,
     }
 }
 

@@ -8,6 +8,7 @@
 
 mod bounds;
 mod cache;
+mod caster_spheres;
 mod casting;
 mod depth_blocks;
 mod filter;
@@ -21,6 +22,7 @@ pub use filter::DepthFilter;
 use crate::raster::{DepthMap, PreparedScene, Viewport, render_depth};
 use crate::scene::{Camera, Light, Scene};
 use crate::shade::Shadowing;
+use caster_spheres::CasterSpheres;
 use depth_blocks::DepthBlocks;
 use glam::Vec3;
 use light_views::{MapView, cube_face_of, cube_face_size, directional_view, point_views};
@@ -58,6 +60,8 @@ pub struct ShadowMaps {
 /// One light's maps: one, or a cube's six faces.
 struct LightMaps {
     faces: Vec<ShadowFace>,
+    /// Around the casters the faces hold: a point clear of them all is lit without a lookup.
+    casters: CasterSpheres,
 }
 
 struct ShadowFace {
@@ -120,7 +124,14 @@ impl ShadowMaps {
                         point_views(position, &region, settings.map_size, filter.reach() + 1.0)
                     }
                 };
-                Some(LightMaps::draw(prepared, camera, &casters, views))
+                // A lookup reaches past a caster's outline by its taps, and its lift and its
+                // neighbours' rounding, at most a few texels: the widest texel of the views.
+                let widest = views.iter().map(|v| v.texel(v.deepest)).fold(0.0, f32::max);
+                let texels = filter.reach() + 2.0 + offset_texels;
+                let margin = texels * widest + 2.0 * lift_of(prepared);
+                let spheres =
+                    CasterSpheres::new(prepared, &casters, &boxes, light, camera.eye, margin);
+                Some(LightMaps::draw(prepared, camera, &casters, views, spheres))
             })
             .collect();
         Some(ShadowMaps {
@@ -174,6 +185,7 @@ impl LightMaps {
         camera: &Camera,
         casters: &[usize],
         views: Vec<MapView>,
+        spheres: CasterSpheres,
     ) -> LightMaps {
         let faces = views
             .into_par_iter()
@@ -187,7 +199,10 @@ impl LightMaps {
                 }
             })
             .collect();
-        LightMaps { faces }
+        LightMaps {
+            faces,
+            casters: spheres,
+        }
     }
 
     /// The face a camera-relative point falls in.
@@ -197,6 +212,15 @@ impl LightMaps {
             faces => &faces[cube_face_of(p + faces[0].from_camera)],
         }
     }
+}
+
+/// The largest lift of any object (see `ShadowMaps::lifts`).
+fn lift_of(prepared: &PreparedScene) -> f32 {
+    prepared
+        .objects
+        .iter()
+        .map(|o| 2.0 * o.mesh.chord_error)
+        .fold(0.0, f32::max)
 }
 
 /// A perspective map's depths turned into distances from the light, texel by texel (depth over
@@ -338,7 +362,11 @@ impl Shadowing for ShadowMaps {
             },
         };
         for ((out, &p), &n) in out.iter_mut().zip(points).zip(normals) {
-            *out = maps.face_for(p).reach(p, n, self, receiver);
+            *out = if maps.casters.clear_of_all(p) {
+                1.0
+            } else {
+                maps.face_for(p).reach(p, n, self, receiver)
+            };
         }
     }
 }
