@@ -50,12 +50,14 @@ pub fn render_depth(prepared: &PreparedScene, objects: &[usize], view: &DepthVie
     };
     let triangles = depth_triangles(prepared, objects, view, viewport);
     let bins = TileBins::new(viewport, &triangles);
-    let mut depth = vec![f32::INFINITY; (view.size as usize).pow(2)];
+    // On huge pages where the kernel has them: a 1024² map is a thousand small pages to fault.
+    let mut depth: Vec<f32> = crate::huge_pages::zeroed_huge((view.size as usize).pow(2));
     let strip = (TILE_SIZE * view.size.max(1)) as usize;
     depth
         .par_chunks_mut(strip)
         .enumerate()
         .for_each(|(ty, rows)| {
+            rows.fill(f32::INFINITY);
             for tx in 0..bins.tiles_x {
                 let rect = TileBins::tile_rect(viewport, tx, ty as u32);
                 let y0 = rect.y0;
