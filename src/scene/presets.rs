@@ -83,8 +83,10 @@ fn geometry(name: &str) -> SceneFile {
 
 /// The bump patterns and textures of each figure.
 fn dress(name: &str, objects: &mut [ObjectFile]) {
+    // "textured-spheres" names its objects, not a bump pattern.
     let bump_pattern = BUMP_PATTERNS
         .iter()
+        .filter(|_| !name.starts_with("textured-"))
         .find(|p| name.ends_with(&format!("-{p}")));
     if let Some(pattern) = bump_pattern {
         // The seed's dimples are its own slope code; every surface of the figure gets the pattern.
@@ -514,6 +516,14 @@ mod tests {
             assert_eq!(scene.name, *name);
             assert_eq!(scene.objects.len(), file.objects.len());
         }
+    }
+
+    #[test]
+    fn a_scene_named_for_its_textures_wears_them_and_no_bump() {
+        let file = preset_file("textured-spheres").unwrap();
+        let images: Vec<bool> = file.objects.iter().map(|o| o.texture.is_some()).collect();
+        assert_eq!(images, [false, true, true, true]);
+        assert!(file.objects.iter().all(|o| o.bump.is_none()));
     }
 
     #[test]
