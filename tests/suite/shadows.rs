@@ -464,3 +464,36 @@ fn a_scene_file_a_setting_and_a_recipe_each_turn_shadows_off() {
     std::fs::write(&file, format!("shadows = false\n{text}")).unwrap();
     assert_eq!(render("file.png", &[file.to_str().unwrap()]), flat);
 }
+
+#[test]
+fn the_workbenchs_shadows_follow_the_light_keys_and_s_turns_them_off() {
+    use bumpwork::term::{ColorChoice, ColorMode};
+    use bumpwork::tui::{Action, App, View, WorkbenchOptions, render_frame};
+    let options = WorkbenchOptions {
+        scenes: vec!["sphere-on-plane-squares".into()],
+        colors: ColorChoice::Fixed(ColorMode::TrueColor),
+        ..WorkbenchOptions::default()
+    };
+    let mut app = App::new(&options, ColorMode::TrueColor).unwrap();
+    let frame = |app: &App| {
+        let mut framebuffer = Framebuffer::new(0, 0, Vec3::ZERO);
+        render_frame(&View::of(app), 120, 90, &mut framebuffer);
+        framebuffer.color().to_vec()
+    };
+    let first = frame(&app);
+    assert_eq!(frame(&app), first, "the kept maps draw the same picture");
+    app.apply(Action::MoveLight(30.0, 0.0));
+    let moved = frame(&app);
+    assert_ne!(moved, first, "the light and its shadow moved");
+    app.apply(Action::ToggleShadows);
+    assert!(!app.prepared.scene.shadows);
+    let flat = frame(&app);
+    let darker = |a: &[Vec3], b: &[Vec3]| a.iter().zip(b).filter(|(p, q)| p.x < q.x - 1e-4).count();
+    assert!(
+        darker(&moved, &flat) > 50,
+        "the shadow is gone without shadows"
+    );
+    assert_eq!(darker(&flat, &moved), 0, "and nothing else darkened");
+    app.apply(Action::ToggleShadows);
+    assert_eq!(frame(&app), moved, "back on, the same shadows");
+}
