@@ -17,33 +17,29 @@ pub struct DepthBlocks {
 
 impl DepthBlocks {
     pub fn new(map: &DepthMap) -> DepthBlocks {
+        let size = map.size as usize;
         let across = map.size.div_ceil(BLOCK);
-        let rows: Vec<(Vec<f32>, Vec<f32>)> = (0..across)
-            .into_par_iter()
-            .map(|by| {
-                let texel_rows = by * BLOCK..((by + 1) * BLOCK).min(map.size);
-                (0..across)
-                    .map(|bx| {
-                        let columns = bx * BLOCK..((bx + 1) * BLOCK).min(map.size);
-                        texel_rows
-                            .clone()
-                            .flat_map(|y| columns.clone().map(move |x| (x, y)))
-                            .map(|(x, y)| map.at(x, y))
-                            .fold((f32::INFINITY, f32::NEG_INFINITY), |(a, b), d| {
-                                (a.min(d), b.max(d))
-                            })
-                    })
-                    .unzip()
-            })
-            .collect();
-        let (least, greatest) = rows.into_iter().fold(
-            (Vec::new(), Vec::new()),
-            |(mut least, mut greatest), (l, g)| {
-                least.extend(l);
-                greatest.extend(g);
-                (least, greatest)
-            },
-        );
+        let mut least = vec![f32::INFINITY; (across * across) as usize];
+        let mut greatest = vec![f32::NEG_INFINITY; least.len()];
+        let band = (BLOCK as usize * size).max(1);
+        least
+            .par_chunks_mut(across.max(1) as usize)
+            .zip(greatest.par_chunks_mut(across.max(1) as usize))
+            .zip(map.depth.par_chunks(band))
+            .for_each(|((least, greatest), rows)| {
+                for row in rows.chunks(size.max(1)) {
+                    for ((least, greatest), texels) in least
+                        .iter_mut()
+                        .zip(greatest.iter_mut())
+                        .zip(row.chunks(BLOCK as usize))
+                    {
+                        for &d in texels {
+                            *least = least.min(d);
+                            *greatest = greatest.max(d);
+                        }
+                    }
+                }
+            });
         DepthBlocks {
             across,
             least,
