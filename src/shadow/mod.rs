@@ -265,75 +265,118 @@ impl ShadowFace {
     /// The fraction of the light reaching camera-relative point `p` with facing geometric
     /// normal `n` on `receiver`.
     fn reach(&self, p: Vec3, n: Vec3, maps: &ShadowMaps, receiver: Receiver) -> f32 {
-        let view = &self.view.view;
         let relative = p + self.from_camera;
         if self.view.clearly_misses(relative) {
             // No caster the map holds lies between this point and the light.
             return 1.0;
         }
-        let to_light = if self.view.is_perspective() {
-            -relative.normalize_or_zero()
-        } else {
-            -view.forward
-        };
-        let facing = n.dot(to_light);
+        let facing = n.dot(self.towards_light(relative));
         if facing.is_nan() || facing <= 0.0 {
             // The light is behind the side of the surface that is seen: the surface itself
             // blocks it (exactly, with no map needed, so no band of light past the terminator).
             return 0.0;
         }
-        let texel = self.view.texel(view.forward.dot(relative));
+        let texel = self.view.texel(self.view.view.forward.dot(relative));
         let lifted = relative + n * (maps.offset_texels * texel + receiver.lift);
-        let clip = view.view_projection * lifted.extend(1.0);
-        if clip.w.is_nan() || clip.w <= 0.0 {
+        let Some((x, y)) = self.texel_position(lifted) else {
             return 1.0;
+        };
+        let lookup = Lookup {
+            x,
+            y,
+            centre: self.measured(lifted),
+            // Rounding grows with the distances compared and with the map's extent there (an
+            // orthographic map's depths are relative to its middle, so they pass through zero).
+            rounding: DEPTH_ROUNDING * (texel * self.view.view.size as f32),
+            trusted: receiver.trust * texel.sqrt(),
+        };
+        if let Some(all_taps) = self.settled_by_blocks(&lookup, maps, texel, facing) {
+            return all_taps;
+        }
+        let plane = self.view.tap_plane(lifted, n);
+        let (centre, trusted) = (lookup.centre, lookup.trusted);
+        let receiver = |i, j| {
+            let along = plane.at(i, j).clamp(centre - trusted, centre + trusted);
+            along - DEPTH_ROUNDING * along.abs() - lookup.rounding
+        };
+        maps.filter.fraction(&self.map, x, y, receiver)
+    }
+
+    /// The unit direction from a map-relative point to the light.
+    fn towards_light(&self, relative: Vec3) -> Vec3 {
+        if self.view.is_perspective() {
+            -relative.normalize_or_zero()
+        } else {
+            -self.view.view.forward
+        }
+    }
+
+    /// Where a map-relative point falls on the map, in texels (texel (i, j) centred at
+    /// (i, j)); `None` behind the light, or past a fitted map's edge, where no point the camera
+    /// sees lies and nothing shadows it.
+    fn texel_position(&self, q: Vec3) -> Option<(f32, f32)> {
+        let view = &self.view.view;
+        let clip = view.view_projection * q.extend(1.0);
+        if clip.w.is_nan() || clip.w <= 0.0 {
+            return None;
         }
         let size = view.size as f32;
         let x = (clip.x / clip.w * 0.5 + 0.5) * size - 0.5;
         let y = (0.5 - clip.y / clip.w * 0.5) * size - 0.5;
         let outside = -1.0..=size;
         let on_map = outside.contains(&x) && outside.contains(&y);
-        if !self.view.cube_face && !on_map {
-            // Past a fitted map's edge: no point the camera sees, nothing to shadow it from.
-            return 1.0;
-        }
-        // Rounding grows with the distances compared and with the map's extent there (an
-        // orthographic map's depths are relative to its middle, so they pass through zero).
-        let extent = texel * size;
-        let trusted = receiver.trust * texel.sqrt();
-        let centre = view.forward.dot(lifted);
-        let centre = if self.view.is_perspective() {
-            lifted.length()
+        (self.view.cube_face || on_map).then_some((x, y))
+    }
+
+    /// A map-relative point's depth as the map measures it.
+    fn measured(&self, q: Vec3) -> f32 {
+        if self.view.is_perspective() {
+            q.length()
         } else {
-            centre
-        };
-        // Where the receiver's depth over the taps lies wholly in front of or behind every
-        // caster around them, every tap agrees: no need to take them. Its plane rises at most
-        // tan θ a unit across (half again for a perspective map's spreading rays).
+            self.view.view.forward.dot(q)
+        }
+    }
+
+    /// Every tap's answer at once, where the receiver's depth over the taps lies wholly in
+    /// front of or behind every caster around them. Its plane rises at most tan θ a unit
+    /// across (half again for a perspective map's spreading rays).
+    fn settled_by_blocks(
+        &self,
+        lookup: &Lookup,
+        maps: &ShadowMaps,
+        texel: f32,
+        facing: f32,
+    ) -> Option<f32> {
         let reach = maps.filter.reach() + 1.0;
         let sine = (1.0 - facing * facing).max(0.0).sqrt();
-        let slope = if self.view.is_perspective() { 1.5 } else { 1.0 } * sine / facing;
-        let spread =
-            (reach * texel * slope).min(trusted) + 2.0 * DEPTH_ROUNDING * (centre.abs() + extent);
+        let spreading = if self.view.is_perspective() { 1.5 } else { 1.0 };
+        let rounding = 2.0 * (DEPTH_ROUNDING * lookup.centre.abs() + lookup.rounding);
+        let spread = (reach * texel * spreading * sine / facing).min(lookup.trusted) + rounding;
         let last = self.map.size - 1;
         let texel_at = |v: f32| (v.max(0.0) as u32).min(last);
         let (least, greatest) = self.blocks.range(
-            (texel_at(x - reach), texel_at(y - reach)),
-            (texel_at(x + reach), texel_at(y + reach)),
+            (texel_at(lookup.x - reach), texel_at(lookup.y - reach)),
+            (texel_at(lookup.x + reach), texel_at(lookup.y + reach)),
         );
-        if centre + spread <= least {
-            return 1.0;
+        if lookup.centre + spread <= least {
+            Some(1.0)
+        } else if lookup.centre - spread > greatest {
+            Some(0.0)
+        } else {
+            None
         }
-        if centre - spread > greatest {
-            return 0.0;
-        }
-        let plane = self.view.tap_plane(lifted, n);
-        let receiver = |i, j| {
-            let along = plane.at(i, j).clamp(centre - trusted, centre + trusted);
-            along - DEPTH_ROUNDING * (along.abs() + extent)
-        };
-        maps.filter.fraction(&self.map, x, y, receiver)
     }
+}
+
+/// One lookup on a map: where it falls, the receiver's depth there, how much rounding to allow
+/// and how far the receiver's plane is trusted.
+struct Lookup {
+    x: f32,
+    y: f32,
+    centre: f32,
+    /// The rounding allowed for the map's extent (see `DEPTH_ROUNDING`).
+    rounding: f32,
+    trusted: f32,
 }
 
 impl Shadowing for ShadowMaps {
