@@ -17,6 +17,8 @@ pub struct Session {
     master: Box<dyn portable_pty::MasterPty + Send>,
     /// Everything the program wrote, as written.
     raw: Arc<Mutex<Vec<u8>>>,
+    /// Set when the reader has read the last of it (the program's end of the terminal closed).
+    read_all: Arc<std::sync::atomic::AtomicBool>,
     writer: Box<dyn Write + Send>,
     pub child: Box<dyn Child + Send + Sync>,
     rows: u16,
@@ -61,6 +63,8 @@ impl Session {
         let feed = Arc::clone(&screen);
         let raw = Arc::new(Mutex::new(Vec::new()));
         let keep = Arc::clone(&raw);
+        let read_all = Arc::new(std::sync::atomic::AtomicBool::new(false));
+        let done = Arc::clone(&read_all);
         std::thread::spawn(move || {
             let mut buffer = [0u8; 65536];
             while let Ok(n @ 1..) = reader.read(&mut buffer) {
@@ -70,11 +74,13 @@ impl Session {
                     kept.extend_from_slice(&buffer[..n]);
                 }
             }
+            done.store(true, std::sync::atomic::Ordering::Release);
         });
         let writer = pty.master.take_writer().unwrap();
         Session {
             master: pty.master,
             raw,
+            read_all,
             screen,
             writer,
             child,
@@ -140,11 +146,17 @@ impl Session {
     }
 
     /// Waits up to `limit` for the program to end: its exit code, or `None` if it still runs
-    /// (then it is killed).
+    /// (then it is killed). After an exit, waits (up to `limit` again) until everything it wrote
+    /// has been read, so `output` holds its last bytes even on a loaded machine.
     pub fn exit_within(&mut self, limit: Duration) -> Option<u32> {
         let start = Instant::now();
         while start.elapsed() < limit {
             if let Some(status) = self.child.try_wait().unwrap() {
+                let exited = Instant::now();
+                let read_all = || self.read_all.load(std::sync::atomic::Ordering::Acquire);
+                while !read_all() && exited.elapsed() < limit {
+                    std::thread::sleep(Duration::from_millis(5));
+                }
                 return Some(status.exit_code());
             }
             std::thread::sleep(Duration::from_millis(5));
