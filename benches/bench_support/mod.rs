@@ -148,8 +148,7 @@ pub fn render_into(
     shader: &impl bumpwork::raster::FragmentShader,
     framebuffer: &mut bumpwork::raster::Framebuffer,
 ) -> bumpwork::raster::FrameStats {
-    let output = bumpwork::raster::FrameOutput::Framebuffer(framebuffer);
-    bumpwork::raster::render(prepared, std::slice::from_ref(target), shader, output, None)
+    bumpwork::raster::render_pass(prepared, target, shader, framebuffer)
 }
 
 /// One pass rendered into a new framebuffer.

@@ -11,7 +11,7 @@ pub use pareto::pareto_front;
 pub use variants::{Variant, VariantKind, variants};
 
 use crate::measure::Timing;
-use crate::raster::{FrameOutput, Framebuffer, PreparedScene, RenderTarget, Viewport, render};
+use crate::raster::{Framebuffer, PreparedScene, RenderTarget, Viewport, render_pass};
 use crate::reference::{FrameError, ShadedAndNormals, ViewRays, exact_shader, render_rays_into};
 use crate::scene::Camera;
 use crate::scene::Scene;
@@ -226,8 +226,7 @@ fn render_frame(
     framebuffer: &mut Framebuffer,
 ) {
     if samples <= 1 {
-        let output = FrameOutput::Framebuffer(framebuffer);
-        render(prepared, std::slice::from_ref(target), shader, output, None);
+        render_pass(prepared, target, shader, framebuffer);
         return;
     }
     let job = BandJob {

@@ -28,7 +28,7 @@ pub use fragment::{Fragment, FragmentShader, FrameObject, PerFragment};
 pub use framebuffer::{Blend, Framebuffer, encode_srgb8, linear_to_srgb8};
 pub use pipeline::{
     FrameOutput, FrameStats, Interpolation, PreparedObject, PreparedScene, RenderTarget,
-    Srgb8Strips, frame_objects, render, screen_triangles,
+    Srgb8Strips, frame_objects, render, render_pass, screen_triangles,
 };
 pub use refine::{Refine, Refinement, TileRows};
 pub use scan::{PixelRect, scan_shifted, scan_triangle};

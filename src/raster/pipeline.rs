@@ -339,6 +339,18 @@ pub fn render(
     }
 }
 
+/// One pass of `target` into `framebuffer` (resized to it), depth kept: `render` for the
+/// commonest case.
+pub fn render_pass(
+    prepared: &PreparedScene,
+    target: &RenderTarget,
+    shader: &impl FragmentShader,
+    framebuffer: &mut Framebuffer,
+) -> FrameStats {
+    let output = FrameOutput::Framebuffer(framebuffer);
+    render(prepared, std::slice::from_ref(target), shader, output, None)
+}
+
 /// Pieces of a mesh's triangle list each thread sets up, when there are several threads.
 const SETUP_PIECES_PER_THREAD: usize = 4;
 

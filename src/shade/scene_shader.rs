@@ -719,23 +719,14 @@ fn single_object(fragments: &[Fragment]) -> Option<u32> {
 pub fn render_lit(prepared: &PreparedScene, target: &RenderTarget) -> (Framebuffer, FrameStats) {
     let shader = LitShader::new(&prepared.scene, target.camera);
     let mut framebuffer = Framebuffer::new(0, 0, Vec3::ZERO);
-    let output = crate::raster::FrameOutput::Framebuffer(&mut framebuffer);
-    let stats = crate::raster::render(
-        prepared,
-        std::slice::from_ref(target),
-        &shader,
-        output,
-        None,
-    );
+    let stats = crate::raster::render_pass(prepared, target, &shader, &mut framebuffer);
     (framebuffer, stats)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::raster::{
-        FrameOutput, PreparedScene, RenderTarget, Viewport, frame_objects, render,
-    };
+    use crate::raster::{PreparedScene, RenderTarget, Viewport, frame_objects, render_pass};
 
     /// A frame rendered into a new framebuffer.
     fn render_with(
@@ -744,8 +735,7 @@ mod tests {
         shader: &impl FragmentShader,
     ) -> (Framebuffer, FrameStats) {
         let mut framebuffer = Framebuffer::new(0, 0, Vec3::ZERO);
-        let output = FrameOutput::Framebuffer(&mut framebuffer);
-        let stats = render(prepared, std::slice::from_ref(target), shader, output, None);
+        let stats = render_pass(prepared, target, shader, &mut framebuffer);
         (framebuffer, stats)
     }
     use crate::scene::{ImageTexture, preset};

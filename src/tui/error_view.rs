@@ -4,7 +4,7 @@
 //! same reference `bumpwork bench` measures against.
 
 use crate::quality::Quality;
-use crate::raster::{FrameOutput, FrameStats, Framebuffer, PreparedScene, RenderTarget, render};
+use crate::raster::{FrameStats, Framebuffer, PreparedScene, RenderTarget, render_pass};
 use crate::reference::{error_heat_map, exact_shader, metrics::psnr, render_reference};
 use crate::shadow::ShadowMaps;
 use std::sync::Arc;
@@ -23,14 +23,7 @@ pub fn render_error_view(
 ) -> (FrameStats, f64) {
     let mut shader = quality.shader_with_maps(prepared, target.camera, maps);
     shader.time = time;
-    let output = FrameOutput::Framebuffer(framebuffer);
-    let stats = render(
-        prepared,
-        std::slice::from_ref(target),
-        &shader,
-        output,
-        None,
-    );
+    let stats = render_pass(prepared, target, &shader, framebuffer);
     let mut exact = exact_shader(prepared, target.camera);
     exact.time = time;
     let (reference, _) = render_reference(prepared, target.camera, target.viewport, &exact);

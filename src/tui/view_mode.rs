@@ -3,7 +3,7 @@
 
 use super::error_view::render_error_view;
 use crate::quality::Quality;
-use crate::raster::{FrameOutput, FrameStats, Framebuffer, PreparedScene, RenderTarget, render};
+use crate::raster::{FrameStats, Framebuffer, PreparedScene, RenderTarget, render_pass};
 use crate::shade::ShaderMode;
 use crate::shadow::ShadowCache;
 
@@ -88,13 +88,7 @@ pub fn render_view_mode(
     shader.mode = mode.shader_mode();
     shader.time = time;
     RenderedFrame {
-        stats: render(
-            prepared,
-            std::slice::from_ref(target),
-            &shader,
-            FrameOutput::Framebuffer(framebuffer),
-            None,
-        ),
+        stats: render_pass(prepared, target, &shader, framebuffer),
         psnr_db: None,
     }
 }
