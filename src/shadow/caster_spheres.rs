@@ -8,9 +8,14 @@ use crate::scene::Light;
 use crate::surface::Surface;
 use glam::{DVec3, Vec3};
 
+/// The most casters whose spheres a point is tested against: past that, testing each would cost
+/// more per fragment than the lookup it saves.
+const MOST_SPHERES: usize = 16;
+
 /// The casters' spheres and the light, relative to the camera's eye (f32, subtracted in f64).
 pub struct CasterSpheres {
-    spheres: Vec<(Vec3, f32)>,
+    /// `None` for more casters than `MOST_SPHERES`: no point is told clear.
+    spheres: Option<Vec<(Vec3, f32)>>,
     light: LightAt,
 }
 
@@ -31,19 +36,21 @@ impl CasterSpheres {
         eye: DVec3,
         margin: f32,
     ) -> CasterSpheres {
-        let spheres = casters
-            .iter()
-            .filter_map(|&index| {
-                let (centre, radius) = match &prepared.objects[index].surface {
-                    Surface::Sphere(s) => (s.center, f64::from(s.radius)),
-                    _ => {
-                        let b = boxes[index]?;
-                        (b.centre(), b.min.distance(b.max) / 2.0)
-                    }
-                };
-                Some(((centre - eye).as_vec3(), radius as f32 + margin))
-            })
-            .collect();
+        let spheres = (casters.len() <= MOST_SPHERES).then(|| {
+            casters
+                .iter()
+                .filter_map(|&index| {
+                    let (centre, radius) = match &prepared.objects[index].surface {
+                        Surface::Sphere(s) => (s.center, f64::from(s.radius)),
+                        _ => {
+                            let b = boxes[index]?;
+                            (b.centre(), b.min.distance(b.max) / 2.0)
+                        }
+                    };
+                    Some(((centre - eye).as_vec3(), radius as f32 + margin))
+                })
+                .collect()
+        });
         let light = match *light {
             Light::Point { position, .. } => LightAt::Point((position - eye).as_vec3()),
             Light::Directional { towards, .. } => {
@@ -55,7 +62,10 @@ impl CasterSpheres {
 
     /// Whether the camera-relative point `p` sees the light past every caster's sphere.
     pub fn clear_of_all(&self, p: Vec3) -> bool {
-        self.spheres.iter().all(|&(centre, radius)| {
+        let Some(spheres) = &self.spheres else {
+            return false;
+        };
+        spheres.iter().all(|&(centre, radius)| {
             let to_centre = centre - p;
             let closest = match self.light {
                 LightAt::Point(light) => {
@@ -76,7 +86,7 @@ mod tests {
 
     fn spheres(light: LightAt) -> CasterSpheres {
         CasterSpheres {
-            spheres: vec![(Vec3::new(0.0, 1.0, 0.0), 1.0)],
+            spheres: Some(vec![(Vec3::new(0.0, 1.0, 0.0), 1.0)]),
             light,
         }
     }

@@ -1,10 +1,11 @@
-//! Shadows on the rasterizer. Each light's shadow maps are depth maps of the scene drawn by the
-//! frames' own scan converter (`raster::render_depth`), fitted to what the camera sees (see
-//! `light_views`); a lookup moves off its surface along the geometric normal by the filter's
-//! reach plus the bias (normal offset, which neither specks lit surfaces nor lifts contact
-//! shadows off their casters), then filters depth comparisons (`filter`). Bumps shade but do not
-//! move geometry, so they cast no shadows. Numerics: f32 in each map's own light-relative space,
-//! whose origin is subtracted from the camera's in f64.
+//! Shadows on the rasterizer. Each light's shadow maps are depth maps, drawn by the frames' own
+//! scan converter (`raster::render_depth`), of the objects that can cast from it (`casting`),
+//! fitted to them where they lie between the light and the view (`light_views`). A lookup moves
+//! off its surface only by its mesh's chord error and the bias, and each filter tap compares the
+//! map with the receiver's tangent plane along that tap's ray (`filter`); points no caster's
+//! sphere can shade (`caster_spheres`) and taps the depth blocks settle (`depth_blocks`) skip
+//! the taps. Bumps shade but do not move geometry, so they cast no shadows. Numerics: f32 in
+//! each map's own light-relative space, whose origin is subtracted from the camera's in f64.
 
 mod bounds;
 mod cache;
@@ -110,6 +111,12 @@ impl ShadowMaps {
         let seen = seen_bounds(camera, viewport.aspect(), &whole);
         let filter = DepthFilter::new(settings.taps);
         let offset_texels = settings.bias_texels;
+        let lifts: Vec<f32> = prepared
+            .objects
+            .iter()
+            .map(|o| 2.0 * o.mesh.chord_error)
+            .collect();
+        let largest_lift = lifts.iter().copied().fold(0.0, f32::max);
         let lights = scene
             .lights
             .par_iter()
@@ -128,7 +135,7 @@ impl ShadowMaps {
                 // neighbours' rounding, at most a few texels: the widest texel of the views.
                 let widest = views.iter().map(|v| v.texel(v.deepest)).fold(0.0, f32::max);
                 let texels = filter.reach() + 2.0 + offset_texels;
-                let margin = texels * widest + 2.0 * lift_of(prepared);
+                let margin = texels * widest + 2.0 * largest_lift;
                 let spheres =
                     CasterSpheres::new(prepared, &casters, &boxes, light, camera.eye, margin);
                 Some(LightMaps::draw(prepared, camera, &casters, views, spheres))
@@ -136,11 +143,7 @@ impl ShadowMaps {
             .collect();
         Some(ShadowMaps {
             lights,
-            lifts: prepared
-                .objects
-                .iter()
-                .map(|o| 2.0 * o.mesh.chord_error)
-                .collect(),
+            lifts,
             curvatures: prepared
                 .objects
                 .iter()
@@ -212,15 +215,6 @@ impl LightMaps {
             faces => &faces[cube_face_of(p + faces[0].from_camera)],
         }
     }
-}
-
-/// The largest lift of any object (see `ShadowMaps::lifts`).
-fn lift_of(prepared: &PreparedScene) -> f32 {
-    prepared
-        .objects
-        .iter()
-        .map(|o| 2.0 * o.mesh.chord_error)
-        .fold(0.0, f32::max)
 }
 
 /// A perspective map's depths turned into distances from the light, texel by texel (depth over
