@@ -11,8 +11,9 @@ pub use pareto::pareto_front;
 pub use variants::{Variant, VariantKind, variants};
 
 use crate::measure::Timing;
+use crate::raster::ViewRays;
 use crate::raster::{Framebuffer, PreparedScene, RenderTarget, Viewport, render_pass};
-use crate::reference::{FrameError, ShadedAndNormals, ViewRays, exact_shader, render_rays_into};
+use crate::reference::{FrameError, ShadedAndNormals, exact_shader, render_rays_into};
 use crate::scene::Camera;
 use crate::scene::Scene;
 use crate::shade::LitShader;

@@ -3,7 +3,7 @@
 use crate::pattern::Precision;
 use crate::quality::{NormalSource, QUALITY_NAMES, Quality, preset};
 use crate::raster::Interpolation;
-use crate::shade::{GradientMethod, NormalForm};
+use crate::shade::{GradientMethod, NormalForm, SurfacePointSource};
 use crate::texture::Filter;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -80,6 +80,10 @@ fn knob_variations() -> Vec<(&'static str, Quality)> {
             with(|q| q.normals = NormalSource::InterpolatedVertex),
         ),
         (
+            "surface-point=interpolated",
+            with(|q| q.surface_point = SurfacePointSource::Interpolated),
+        ),
+        (
             "uv=affine",
             with(|q| q.interpolation = Interpolation::Affine),
         ),
@@ -108,6 +112,7 @@ mod tests {
                 q.pattern_precision != base.pattern_precision,
                 q.normal_form != base.normal_form,
                 q.normals != base.normals,
+                q.surface_point != base.surface_point,
                 q.interpolation != base.interpolation,
                 q.shadow_map != base.shadow_map,
                 q.shadow_taps != base.shadow_taps,

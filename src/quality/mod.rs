@@ -19,7 +19,9 @@ use crate::pattern::Precision;
 use crate::raster::{Interpolation, PreparedObject, PreparedScene, RenderTarget, Viewport};
 use crate::scene::Camera;
 use crate::scene::{Scene, Texturing};
-use crate::shade::{GradientMethod, LitShader, NormalForm, Shadowing, VertexNormals};
+use crate::shade::{
+    GradientMethod, LitShader, NormalForm, Shadowing, SurfacePointSource, VertexNormals,
+};
 use crate::shadow::{ShadowMaps, ShadowSettings};
 use crate::surface::Tessellation;
 use crate::texture::Filter;
@@ -62,6 +64,11 @@ pub struct Quality {
     pub pattern_precision: Precision,
     pub normal_form: NormalForm,
     pub normals: NormalSource,
+    /// Where fragments of curved surfaces are shaded: at the (u,v) interpolated across their
+    /// triangle, or where each fragment's own ray meets the true surface (recipes from before
+    /// this knob read as interpolated, as they were drawn).
+    #[serde(default)]
+    pub surface_point: SurfacePointSource,
     pub interpolation: Interpolation,
     /// Texels on a side of each light's shadow map (and of each of a point light's six cube
     /// faces, when it needs a cube, up to 2048).
@@ -124,6 +131,7 @@ impl Quality {
             filter: Some(Filter::Nearest),
             shadow_map: 512,
             shadow_taps: 1,
+            surface_point: SurfacePointSource::Interpolated,
             ..Quality::interactive()
         }
     }
@@ -141,6 +149,7 @@ impl Quality {
             pattern_precision: Precision::Fastest,
             normal_form: NormalForm::Blinn,
             normals: NormalSource::ExactFrame,
+            surface_point: SurfacePointSource::Exact,
             interpolation: Interpolation::PerspectiveCorrect,
             shadow_map: 1024,
             shadow_taps: 4,
@@ -294,6 +303,7 @@ impl Quality {
         shader.normal_form = self.normal_form;
         shader.gradient = self.gradient;
         shader.pattern_precision = self.pattern_precision;
+        shader.surface_point = self.surface_point;
         shader.vertex_normals = match self.normals {
             NormalSource::ExactFrame => None,
             NormalSource::InterpolatedVertex => Some(vertex_normals(prepared)),
@@ -310,14 +320,15 @@ impl Quality {
             .filter
             .map_or("scene".to_string(), |f| format!("{f:?}"));
         format!(
-            "{tessellation}, {} spp, filter {}, gradient {}, patterns {}, {:?} normal, {:?}, {:?}, \
-             shadow map {} × {} taps",
+            "{tessellation}, {} spp, filter {}, gradient {}, patterns {}, {:?} normal, {:?}, \
+             {:?} surface point, {:?}, shadow map {} × {} taps",
             self.samples,
             filter.to_lowercase(),
             self.gradient.name(),
             self.pattern_precision.name(),
             self.normal_form,
             self.normals,
+            self.surface_point,
             self.interpolation,
             self.shadow_map,
             self.shadow_taps,

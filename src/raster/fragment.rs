@@ -1,6 +1,7 @@
 //! What rasterisation hands to shading: the frame's objects and the visible pixels' fragments.
 
 use super::pipeline::PreparedObject;
+use super::sample_rays::SampleRays;
 use glam::{Vec2, Vec3};
 
 /// Per-object state for one frame, in camera-relative space.
@@ -41,11 +42,13 @@ pub trait FragmentShader: Sync {
         true
     }
 
-    /// Writes one linear RGB colour per fragment into `out` (same length as `fragments`).
-    /// Returns how many fragments were drawn flat because a pattern gave no finite value there.
+    /// Writes one linear RGB colour per fragment into `out` (same length as `fragments`), whose
+    /// sample points' view rays are `rays`. Returns how many fragments were drawn flat because a
+    /// pattern gave no finite value there.
     fn shade(
         &self,
         objects: &[FrameObject],
+        rays: &SampleRays,
         fragments: &[Fragment],
         scratch: &mut Self::Scratch,
         out: &mut [Vec3],
@@ -63,6 +66,7 @@ impl<F: Fn(&FrameObject, &Fragment) -> Vec3 + Sync> FragmentShader for PerFragme
     fn shade(
         &self,
         objects: &[FrameObject],
+        _: &SampleRays,
         fragments: &[Fragment],
         _: &mut (),
         out: &mut [Vec3],

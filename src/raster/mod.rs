@@ -14,11 +14,13 @@ mod framebuffer;
 mod pipeline;
 mod refine;
 mod row_runs;
+mod sample_rays;
 mod scan;
 mod setup;
 mod strips;
 mod tile;
 mod top_first;
+mod view_rays;
 mod window;
 
 pub use bin::{TILE_SIZE, TileBins};
@@ -31,7 +33,9 @@ pub use pipeline::{
     Srgb8Strips, frame_objects, render, render_pass, screen_triangles,
 };
 pub use refine::{Refine, Refinement, TileRows};
+pub use sample_rays::SampleRays;
 pub use scan::{PixelRect, scan_shifted, scan_triangle};
 pub use setup::{SUBPIXEL_BITS, SampleShift, ScreenTriangle, ShiftSpan, TrianglePlanes, Viewport};
 pub use strips::STRIP_ROWS;
+pub use view_rays::ViewRays;
 pub use window::ImageWindow;

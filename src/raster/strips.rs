@@ -6,9 +6,11 @@ use super::fragment::{FragmentShader, FrameObject};
 use super::framebuffer::{Blend, encode_srgb8};
 use super::pipeline::{Interpolation, RenderTarget, Srgb8Strips, shifted_screen_triangles};
 use super::refine::{Refine, keep_before, mark_none};
+use super::sample_rays::SampleRays;
 use super::scan::PixelRect;
 use super::setup::{SampleShift, ScreenTriangle, ShiftSpan, Viewport};
 use super::tile::{StripOutput, TileBuffers, TileFrame, TileRows, any_wanted};
+use super::view_rays::ViewRays;
 use glam::Vec3;
 
 /// Rows in a strip: the unit of work a thread takes and of finished rows handed on. Half a
@@ -184,6 +186,11 @@ impl<'a, S: FragmentShader> Pass<'a, S> {
         shader: &'a S,
         derivatives: &'a [bool],
     ) -> Pass<'a, S> {
+        let shift = SampleShift::new(target.window.offset);
+        let window = &target.window;
+        let view_rays = ViewRays::new(target.camera, window.full);
+        let offset = shift.pixels.as_dvec2();
+        let rays = SampleRays::new(&view_rays, window.x0, window.y0, offset, target.footprint);
         Pass {
             triangles: &set_up.triangles,
             bins: &set_up.bins,
@@ -194,7 +201,8 @@ impl<'a, S: FragmentShader> Pass<'a, S> {
                 perspective: target.interpolation == Interpolation::PerspectiveCorrect,
                 footprint: target.footprint,
                 derivatives,
-                shift: SampleShift::new(target.window.offset),
+                shift,
+                rays,
             },
             whole_and_replacing: target.mask.is_none()
                 && target.blend == Blend::Replace

@@ -5,6 +5,7 @@ use super::bin::TILE_SIZE;
 use super::fragment::{Fragment, FragmentShader, FrameObject};
 use super::framebuffer::{Blend, encode_srgb8, linear_to_srgb8};
 use super::row_runs::{PixelKind, RowRuns};
+use super::sample_rays::SampleRays;
 use super::scan::{PixelRect, RowSpan, triangle_rows};
 use super::setup::{AttributePlane, SampleShift, ScreenTriangle};
 use glam::{Vec2, Vec3};
@@ -282,10 +283,13 @@ impl TileBuffers {
             }
         }
         self.colors.resize(self.fragments.len(), Vec3::ZERO);
-        let flattened =
-            frame
-                .shader
-                .shade(frame.objects, &self.fragments, scratch, &mut self.colors);
+        let flattened = frame.shader.shade(
+            frame.objects,
+            &frame.rays,
+            &self.fragments,
+            scratch,
+            &mut self.colors,
+        );
         out.shaded_runs(&self.visible_runs, &self.fragments, &self.colors);
         (self.fragments.len(), flattened)
     }
@@ -331,6 +335,8 @@ pub struct TileFrame<'a, S> {
     pub derivatives: &'a [bool],
     /// Where this pass samples in each pixel.
     pub shift: SampleShift,
+    /// The view ray through each pixel's sample point.
+    pub rays: SampleRays,
 }
 
 /// Makes the fragments of one triangle along one row: what is the same for all of them

@@ -1,14 +1,14 @@
 //! The reference renderer: one exact ray per pixel through the same shader as the rasterizer.
 
-use super::differentials::uv_derivatives;
 use super::intersect::intersect;
 use super::ray::{Hit, Ray};
-use super::view_rays::ViewRays;
 use crate::raster::{
-    Fragment, FragmentShader, FrameObject, Framebuffer, PreparedScene, Viewport, frame_objects,
+    Fragment, FragmentShader, FrameObject, Framebuffer, PreparedScene, SampleRays, ViewRays,
+    Viewport, frame_objects,
 };
 use crate::scene::Camera;
-use glam::{DVec3, Vec3};
+use crate::surface::uv_derivatives;
+use glam::{DVec2, DVec3, Vec3};
 use rayon::prelude::*;
 
 /// What a reference frame cost.
@@ -60,6 +60,8 @@ pub fn render_rays_into(
         return ReferenceStats::default();
     }
     let objects = frame_objects(prepared, camera);
+    let footprint = rays.footprint as f32;
+    let sample_rays = SampleRays::new(&rays, 0, 0, DVec2::ZERO, footprint);
     let background = prepared.scene.background;
     let width = viewport.width as usize;
     let (color, depth) = framebuffer.parts_mut();
@@ -79,7 +81,8 @@ pub fn render_rays_into(
                 );
                 colors.clear();
                 colors.resize(row_fragments.len(), Vec3::ZERO);
-                let flattened = shader.shade(&objects, row_fragments, scratch, colors);
+                let flattened =
+                    shader.shade(&objects, &sample_rays, row_fragments, scratch, colors);
                 for (fragment, &c) in row_fragments.iter().zip(colors.iter()) {
                     color[fragment.x as usize] = c;
                     depth[fragment.x as usize] = fragment.depth;
@@ -143,12 +146,13 @@ fn fragment_at(
     let surface = &objects[index].prepared.surface;
     let frame = surface.frame(hit.uv.x, hit.uv.y);
     let domain = surface.domain();
-    let step = |per_pixel: DVec3| per_pixel * rays.footprint;
+    let step = |per_pixel: DVec3| (per_pixel * rays.footprint).as_vec3();
+    let (t, direction) = (hit.t as f32, direction.as_vec3());
     Fragment {
         object: index as u32,
         uv: hit.uv,
-        duv_dx: uv_derivatives(&frame, hit.t, direction, step(rays.per_pixel_x), domain),
-        duv_dy: uv_derivatives(&frame, hit.t, direction, step(rays.per_pixel_y), domain),
+        duv_dx: uv_derivatives(&frame, t, direction, step(rays.per_pixel_x), domain),
+        duv_dy: uv_derivatives(&frame, t, direction, step(rays.per_pixel_y), domain),
         depth: hit.t as f32,
         x,
         y,

@@ -10,7 +10,6 @@
 
 mod caster;
 mod cone;
-mod differentials;
 mod heat_map;
 mod intersect;
 mod lit_frames;
@@ -23,17 +22,14 @@ mod root;
 mod shadow_rays;
 mod sphere;
 mod triangle;
-mod view_rays;
 mod wave;
 
 pub use caster::{
     ReferenceStats, cast_pixel, render_rays_into, render_reference, render_reference_into,
 };
-pub use differentials::uv_derivatives;
 pub use heat_map::error_heat_map;
 pub use intersect::{intersect, surface_uv};
 pub use lit_frames::ShadedAndNormals;
 pub use metrics::{FrameError, frame_error};
 pub use ray::{Hit, Ray};
 pub use shadow_rays::{ShadowRays, exact_shader};
-pub use view_rays::ViewRays;

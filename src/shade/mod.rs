@@ -3,6 +3,7 @@
 
 mod bake;
 mod bump;
+mod exact_point;
 mod gradient;
 mod lanes;
 mod lighting;
@@ -14,6 +15,7 @@ mod vertex_normals;
 
 pub use bake::{bake_color, bake_height};
 pub use bump::{NormalForm, bumped_normal};
+pub use exact_point::{ExactPoints, ExactScratch, SurfacePointSource, exact_fragments};
 pub use gradient::GradientMethod;
 pub use lighting::{FrameLights, blinn_phong, facing_sign};
 pub use scene_shader::{LitShader, ShadeScratch, render_lit};

@@ -3,6 +3,7 @@
 //! Work the scene does not need is skipped: no texture, no sampling; no bump, no perturbation.
 
 use super::bump::{NormalForm, blinn_normals, blinn_normals_on_flat, bumped_normal};
+use super::exact_point::{ExactScratch, SurfacePointSource, exact_fragments};
 use super::gradient::{GradientMethod, central_difference, shifted_fragments};
 use super::lighting::{FrameLights, blinn_phong_many, facing_sign};
 use super::pattern_batch::{PatternBatch, Sites};
@@ -12,6 +13,7 @@ use super::vertex_normals::VertexNormals;
 use crate::pattern::{OutputKind, Precision};
 use crate::raster::{
     Fragment, FragmentShader, FrameObject, FrameStats, Framebuffer, PreparedScene, RenderTarget,
+    SampleRays,
 };
 use crate::scene::Camera;
 use crate::scene::{BumpSource, Material, Scene, Texturing};
@@ -38,6 +40,8 @@ pub struct LitShader {
     pub depth_scale: f32,
     /// What blocks the lights (`None`: nothing does).
     pub shadows: Option<Arc<dyn Shadowing>>,
+    /// Where fragments of curved surfaces are shaded: on their triangle or on the true surface.
+    pub surface_point: SurfacePointSource,
 }
 
 impl LitShader {
@@ -52,6 +56,7 @@ impl LitShader {
             vertex_normals: None,
             depth_scale: (camera.target - camera.eye).length() as f32,
             shadows: None,
+            surface_point: SurfacePointSource::Interpolated,
         }
     }
 }
@@ -59,6 +64,8 @@ impl LitShader {
 /// Per-thread working memory, reused for every batch.
 #[derive(Default)]
 pub struct ShadeScratch {
+    /// The batch's fragments moved to their true surfaces (`SurfacePointSource::Exact`).
+    exact: ExactScratch,
     /// Fragment indices grouped by object.
     order: Vec<u32>,
     group_starts: Vec<usize>,
@@ -124,10 +131,20 @@ impl FragmentShader for LitShader {
     fn shade(
         &self,
         objects: &[FrameObject],
+        rays: &SampleRays,
         fragments: &[Fragment],
         scratch: &mut ShadeScratch,
         out: &mut [Vec3],
     ) -> usize {
+        let mut exact = std::mem::take(&mut scratch.exact);
+        let fragments = match self.surface_point {
+            SurfacePointSource::Interpolated => fragments,
+            SurfacePointSource::Exact => {
+                let derivatives = |object: &FrameObject| self.reads_derivatives(object);
+                exact_fragments(objects, derivatives, rays, fragments, &mut exact);
+                &exact.fragments[..]
+            }
+        };
         let mut order = std::mem::take(&mut scratch.order);
         group_by_object(
             fragments,
@@ -150,6 +167,7 @@ impl FragmentShader for LitShader {
             }
         }
         scratch.order = order;
+        scratch.exact = exact;
         flattened
     }
 }
@@ -755,11 +773,12 @@ mod tests {
         fn shade(
             &self,
             objects: &[FrameObject],
+            rays: &SampleRays,
             fragments: &[Fragment],
             scratch: &mut ShadeScratch,
             out: &mut [Vec3],
         ) -> usize {
-            self.0.shade(objects, fragments, scratch, out)
+            self.0.shade(objects, rays, fragments, scratch, out)
         }
     }
 

@@ -6,22 +6,28 @@
 //! anchor: local coordinates stay within a few thousand units, where f32 keeps ~1e-4 absolute
 //! precision, far below a pixel or a pattern period.
 
+mod angles;
 mod basis;
 mod cone;
 mod paraboloid;
 mod plane;
+mod ray_differentials;
 mod sphere;
 mod tessellate;
 mod triangle;
+mod true_hit;
 mod wave;
 
+pub use angles::{atan2, sin_cos};
 pub use basis::AxisBasis;
 pub use cone::Cone;
 pub use paraboloid::Paraboloid;
 pub use plane::Plane;
+pub use ray_differentials::uv_derivatives;
 pub use sphere::Sphere;
 pub use tessellate::{Mesh, Tessellation};
 pub use triangle::Triangle;
+pub use true_hit::{TrueHit, WAVE_NEWTON_STEPS};
 pub use wave::Wave;
 
 use glam::{DVec3, Vec2, Vec3};
@@ -190,38 +196,6 @@ impl Surface {
     }
 }
 
-/// (sin x, cos x) in f32 without the two library calls `f32::sin_cos` makes: x is reduced by
-/// multiples of π/2 (π/2 split in three parts, so the reduction is exact for the angles frames
-/// see, |x| < 2^15) and both come from the Cephes minimax polynomials on [−π/4, π/4]. Within
-/// 2.5e-7 of the exact values (about 2 ulp at 1): the frame stays exact to f32 rounding, at a
-/// third of the instructions (the sphere's frame was two `sinf` and two `cosf` per fragment).
-#[inline(always)]
-pub fn sin_cos(x: f32) -> (f32, f32) {
-    const PIO2_1: f32 = 1.570_312_5;
-    const PIO2_2: f32 = 4.837_513e-4;
-    const PIO2_3: f32 = 7.549_79e-8;
-    // Round q to the nearest whole number by adding and taking away 1.5·2^23, and read it as an
-    // integer from the sum's low mantissa bits (exact for |q| < 2^22): no `roundf` call on
-    // baseline x86-64 and no saturating f32 → i32 cast, so batches of angles vectorise.
-    const SHIFT: f32 = 12_582_912.0; // 1.5·2^23
-    let shifted = x * std::f32::consts::FRAC_2_PI + SHIFT;
-    let j = shifted.to_bits() as i32 - SHIFT.to_bits() as i32;
-    let jf = shifted - SHIFT;
-    let r = ((x - jf * PIO2_1) - jf * PIO2_2) - jf * PIO2_3;
-    let r2 = r * r;
-    let sin_r = r + r * r2 * (-1.666_665_5e-1 + r2 * (8.332_161e-3 + r2 * -1.951_529_6e-4));
-    let cos_r =
-        1.0 - 0.5 * r2 + r2 * r2 * (4.166_664_6e-2 + r2 * (-1.388_731_6e-3 + r2 * 2.443_315_7e-5));
-    let (s, c) = if j & 1 == 0 {
-        (sin_r, cos_r)
-    } else {
-        (cos_r, sin_r)
-    };
-    let s = if j & 2 == 0 { s } else { -s };
-    let c = if j.wrapping_add(1) & 2 == 0 { c } else { -c };
-    (s, c)
-}
-
 /// Normalise, or return `fallback` when the vector is too short (or non-finite) to have a direction.
 #[inline]
 pub fn normalize_or(v: Vec3, fallback: Vec3) -> Vec3 {
@@ -343,34 +317,6 @@ pub(crate) mod tests {
                 assert_eq!(bits(got), bits(&surface.frame(uv.x, uv.y)), "at {uv}");
             }
         }
-    }
-
-    #[test]
-    fn sin_cos_is_within_a_few_ulp() {
-        let mut worst = 0.0f64;
-        for i in -200_000..=200_000 {
-            let x = i as f32 * 1.7e-4 + 0.013 * (i % 7) as f32;
-            let (s, c) = super::sin_cos(x);
-            let exact = (x as f64).sin_cos();
-            worst = worst
-                .max((s as f64 - exact.0).abs())
-                .max((c as f64 - exact.1).abs());
-        }
-        assert!(worst < 2.5e-7, "worst error {worst:e}");
-        for x in [
-            0.0f32,
-            std::f32::consts::FRAC_PI_2,
-            std::f32::consts::PI,
-            -3.0 * std::f32::consts::FRAC_PI_2,
-        ] {
-            let (s, c) = super::sin_cos(x);
-            assert!(
-                (s as f64 - (x as f64).sin()).abs() < 2.5e-7
-                    && (c as f64 - (x as f64).cos()).abs() < 2.5e-7,
-                "{x}"
-            );
-        }
-        assert!(super::sin_cos(f32::NAN).0.is_nan());
     }
 
     use super::{Domain, Frame};

@@ -80,14 +80,19 @@ fn json_on_one_scene_has_finite_figures_and_exact_is_the_most_accurate_preset() 
         let row = rows.iter().find(|r| r["variant"] == name).expect(name);
         row["psnr_db"].as_f64().unwrap_or(f64::INFINITY)
     };
-    // Each preset is closer to its reference than the one below it (on this scene at this size,
-    // samples capped at 4: 29, 41, 58 and 62 dB when written). At 64×48 a few pixels whose
+    // Each preset is closer to its reference than the one below it, or both are identical to
+    // it (on this scene at this size, samples capped at 4: 29 and 45 dB, then high and exact
+    // identical to their references, shading at the true surface point). At 64×48 a few pixels whose
     // samples lie within 1/500 pixel of a square's edge decided `high` against `exact`: moving
     // the samples onto the 1/256-pixel grid took `exact` from 58 to 51 dB there, while over the
     // six scenes at 240×180 every preset gained.
     let presets = ["draft", "interactive", "high", "exact"].map(psnr_of);
     for pair in presets.windows(2) {
-        assert!(pair[0] < pair[1], "presets out of order: {presets:?}");
+        let identical = pair[0] == f64::INFINITY && pair[1] == f64::INFINITY;
+        assert!(
+            pair[0] < pair[1] || identical,
+            "presets out of order: {presets:?}"
+        );
     }
     let summary = report["summary"].as_array().expect("summary");
     assert_eq!(summary.len(), rows.len());

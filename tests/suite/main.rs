@@ -11,6 +11,7 @@ mod bump_shading;
 mod cli;
 mod cli_support;
 mod common;
+mod exact_points;
 mod export_stills;
 mod fuzz_regressions;
 mod graphics_support;

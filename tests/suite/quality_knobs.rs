@@ -7,7 +7,7 @@ use bumpwork::raster::{Framebuffer, Interpolation, Viewport};
 use bumpwork::reference::metrics::normal_angle_error;
 use bumpwork::reference::render_reference;
 use bumpwork::scene::{Scene, Texturing, preset};
-use bumpwork::shade::{GradientMethod, NormalForm, ShaderMode};
+use bumpwork::shade::{GradientMethod, NormalForm, ShaderMode, SurfacePointSource};
 use bumpwork::texture::Filter;
 
 const VIEW: Viewport = Viewport {
@@ -93,9 +93,11 @@ fn mean_normal_error(scene: &Scene, quality: &Quality, exact: &Framebuffer) -> f
 fn interpolated_vertex_normals_differ_from_the_exact_frame_and_converge_with_density() {
     let sphere = bare_sphere();
     let exact = reference(&sphere, &Quality::interactive(), ShaderMode::Normals);
+    // Shaded on the chords, whose normals the vertex normals interpolate.
     let at = |density: u32, normals: NormalSource| Quality {
         tessellation: density,
         normals,
+        surface_point: SurfacePointSource::Interpolated,
         ..Quality::interactive()
     };
     let densities = [6, 12, 24, 48];
@@ -270,8 +272,9 @@ fn adaptive_tessellation_brings_a_coarse_silhouette_within_its_tolerance() {
 /// One pass of each renderer at the same sub-pixel offset: the rasterizer through the image
 /// window, the reference through shifted rays.
 fn passes_at(scene: &Scene, offset: glam::Vec2) -> (Framebuffer, Framebuffer) {
+    use bumpwork::raster::ViewRays;
     use bumpwork::raster::{ImageWindow, RenderTarget};
-    use bumpwork::reference::{ViewRays, render_rays_into};
+    use bumpwork::reference::render_rays_into;
     let quality = Quality::interactive();
     let prepared = quality
         .prepare(scene.clone(), &scene.camera, VIEW, 0)

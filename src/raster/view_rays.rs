@@ -1,6 +1,6 @@
 //! The camera's rays through pixel centres, built exactly as the rasterizer's frustum.
 
-use crate::raster::Viewport;
+use super::setup::Viewport;
 use crate::scene::Camera;
 use crate::surface::normalize_or;
 use glam::{DVec3, Vec3};
