@@ -1,9 +1,9 @@
 //! What the bench runs: the presets, then `interactive` with one knob changed at a time.
 
 use crate::pattern::Precision;
-use crate::quality::{NormalSource, QUALITY_NAMES, Quality, preset};
+use crate::quality::{Coverage, NormalSource, QUALITY_NAMES, Quality, ShadowEdges, preset};
 use crate::raster::Interpolation;
-use crate::shade::{GradientMethod, NormalForm, SurfacePointSource};
+use crate::shade::{GradientMethod, NormalForm};
 use crate::texture::Filter;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -74,15 +74,12 @@ fn knob_variations() -> Vec<(&'static str, Quality)> {
             with(|q| q.pattern_precision = Precision::Double),
         ),
         ("normal=seed", with(|q| q.normal_form = NormalForm::Seed)),
-        ("normal=full", with(|q| q.normal_form = NormalForm::Full)),
+        ("normal=blinn", with(|q| q.normal_form = NormalForm::Blinn)),
         (
             "normals=interpolated",
             with(|q| q.normals = NormalSource::InterpolatedVertex),
         ),
-        (
-            "surface-point=interpolated",
-            with(|q| q.surface_point = SurfacePointSource::Interpolated),
-        ),
+        ("coverage=mesh", with(|q| q.coverage = Coverage::Mesh)),
         (
             "uv=affine",
             with(|q| q.interpolation = Interpolation::Affine),
@@ -92,6 +89,10 @@ fn knob_variations() -> Vec<(&'static str, Quality)> {
         ("shadow-taps=1", with(|q| q.shadow_taps = 1)),
         ("shadow-taps=16", with(|q| q.shadow_taps = 16)),
         ("shadow-bias=2", with(|q| q.shadow_bias = 2.0)),
+        (
+            "shadow-edges=filtered",
+            with(|q| q.shadow_edges = ShadowEdges::Filtered),
+        ),
     ]
 }
 
@@ -113,10 +114,12 @@ mod tests {
                 q.normal_form != base.normal_form,
                 q.normals != base.normals,
                 q.surface_point != base.surface_point,
+                q.coverage != base.coverage,
                 q.interpolation != base.interpolation,
                 q.shadow_map != base.shadow_map,
                 q.shadow_taps != base.shadow_taps,
                 q.shadow_bias != base.shadow_bias,
+                q.shadow_edges != base.shadow_edges,
             ];
             let count = changed.iter().filter(|&&c| c).count();
             assert_eq!(count, 1, "{name} changes {count} knobs");

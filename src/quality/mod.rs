@@ -20,10 +20,10 @@ use crate::raster::{Interpolation, PreparedObject, PreparedScene, RenderTarget, 
 use crate::scene::Camera;
 use crate::scene::{Scene, Texturing};
 use crate::shade::{
-    GradientMethod, LitShader, NormalForm, Shadowing, SurfacePointSource, VertexNormals,
+    GradientMethod, LitShader, Neighbours, NormalForm, Shadowing, SurfacePointSource, VertexNormals,
 };
 use crate::shadow::{ShadowMaps, ShadowSettings};
-use crate::surface::Tessellation;
+use crate::surface::{Tessellation, push_out_to_hull};
 use crate::texture::Filter;
 use rayon::prelude::*;
 use std::sync::Arc;
@@ -37,6 +37,18 @@ pub enum NormalSource {
     ExactFrame,
     /// Position and normal interpolated across each triangle from its vertices (Phong shading).
     InterpolatedVertex,
+}
+
+/// Which pixels a curved surface covers, and which surface is in front where two meet.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Coverage {
+    /// The mesh's: its chords cut inside the true outline, by up to their chord error.
+    #[default]
+    Mesh,
+    /// The true surfaces': curved meshes are tessellated as hulls around their surfaces, and
+    /// each fragment is settled on the true surface its ray meets first (or the background).
+    Exact,
 }
 
 /// One setting of every speed/accuracy knob (a still's recipe records it as a TOML table).
@@ -69,6 +81,10 @@ pub struct Quality {
     /// this knob read as interpolated, as they were drawn).
     #[serde(default)]
     pub surface_point: SurfacePointSource,
+    /// Whose outline and depth decide coverage: the mesh's, or the true surfaces' (which also
+    /// shades at the true surface point). Recipes from before this knob read as the mesh's.
+    #[serde(default)]
+    pub coverage: Coverage,
     pub interpolation: Interpolation,
     /// Texels on a side of each light's shadow map (and of each of a point light's six cube
     /// faces, when it needs a cube, up to 2048).
@@ -85,6 +101,21 @@ pub struct Quality {
     /// contact move into the other object.
     #[serde(default = "interactive_shadow_bias")]
     pub shadow_bias: f32,
+    /// How a lookup the filter finds partly lit (on a shadow's edge) is settled: `filtered`
+    /// keeps the filter's fraction (a soft edge a few texels wide), `exact` casts a shadow ray
+    /// against the true surfaces (the reference's hard edge). Recipes from before this knob
+    /// read as filtered, as they were drawn.
+    #[serde(default)]
+    pub shadow_edges: ShadowEdges,
+}
+
+/// How the edges of shadows are drawn (see `Quality::shadow_edges`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum ShadowEdges {
+    #[default]
+    Filtered,
+    Exact,
 }
 
 fn interactive_shadow_map() -> u32 {
@@ -131,7 +162,10 @@ impl Quality {
             filter: Some(Filter::Nearest),
             shadow_map: 512,
             shadow_taps: 1,
+            shadow_edges: ShadowEdges::Filtered,
+            normal_form: NormalForm::Blinn,
             surface_point: SurfacePointSource::Interpolated,
+            coverage: Coverage::Mesh,
             ..Quality::interactive()
         }
     }
@@ -147,13 +181,15 @@ impl Quality {
             filter: None,
             gradient: GradientMethod::Exact,
             pattern_precision: Precision::Fastest,
-            normal_form: NormalForm::Blinn,
+            normal_form: NormalForm::Full,
             normals: NormalSource::ExactFrame,
             surface_point: SurfacePointSource::Exact,
+            coverage: Coverage::Exact,
             interpolation: Interpolation::PerspectiveCorrect,
             shadow_map: 1024,
             shadow_taps: 4,
             shadow_bias: 0.0,
+            shadow_edges: ShadowEdges::Exact,
         }
     }
 
@@ -166,7 +202,6 @@ impl Quality {
             samples: 16,
             normal_form: NormalForm::Full,
             shadow_map: 2048,
-            shadow_taps: 1,
             ..Quality::interactive()
         }
     }
@@ -235,10 +270,16 @@ impl Quality {
             .objects
             .par_iter()
             .zip(tessellations)
-            .map(|(o, tessellation)| PreparedObject {
-                surface: o.surface.clone(),
-                material: o.material.clone(),
-                mesh: o.surface.tessellate(tessellation),
+            .map(|(o, tessellation)| {
+                let mut mesh = o.surface.tessellate(tessellation);
+                if self.coverage == Coverage::Exact {
+                    push_out_to_hull(&o.surface, &mut mesh);
+                }
+                PreparedObject {
+                    surface: o.surface.clone(),
+                    material: o.material.clone(),
+                    mesh,
+                }
             })
             .collect();
         Ok(PreparedScene { scene, objects })
@@ -295,6 +336,7 @@ impl Quality {
             map_size: self.shadow_map,
             taps: self.shadow_taps,
             bias_texels: self.shadow_bias,
+            exact_edges: self.shadow_edges == ShadowEdges::Exact,
         }
     }
 
@@ -303,7 +345,14 @@ impl Quality {
         shader.normal_form = self.normal_form;
         shader.gradient = self.gradient;
         shader.pattern_precision = self.pattern_precision;
-        shader.surface_point = self.surface_point;
+        shader.surface_point = match self.coverage {
+            Coverage::Exact => SurfacePointSource::Exact,
+            Coverage::Mesh => self.surface_point,
+        };
+        shader.exact_coverage = match self.coverage {
+            Coverage::Exact => Some(Arc::new(neighbours(prepared))),
+            Coverage::Mesh => None,
+        };
         shader.vertex_normals = match self.normals {
             NormalSource::ExactFrame => None,
             NormalSource::InterpolatedVertex => Some(vertex_normals(prepared)),
@@ -321,7 +370,7 @@ impl Quality {
             .map_or("scene".to_string(), |f| format!("{f:?}"));
         format!(
             "{tessellation}, {} spp, filter {}, gradient {}, patterns {}, {:?} normal, {:?}, \
-             {:?} surface point, {:?}, shadow map {} × {} taps",
+             {:?} surface point, {:?} coverage, {:?}, shadow map {} × {} taps",
             self.samples,
             filter.to_lowercase(),
             self.gradient.name(),
@@ -329,6 +378,7 @@ impl Quality {
             self.normal_form,
             self.normals,
             self.surface_point,
+            self.coverage,
             self.interpolation,
             self.shadow_map,
             self.shadow_taps,
@@ -342,6 +392,17 @@ fn override_filter(scene: &mut Scene, filter: Filter) {
             image.sampler.filter = filter;
         }
     }
+}
+
+/// Objects whose boxes, grown by their chord errors, overlap: where one's true surface may pass
+/// in front of the other's mesh.
+fn neighbours(prepared: &PreparedScene) -> Neighbours {
+    let bounds = crate::shadow::object_bounds(prepared);
+    let overlap = |i: usize, j: usize| match (bounds[i], bounds[j]) {
+        (Some(a), Some(b)) => a.intersection(b).is_some(),
+        _ => false,
+    };
+    Neighbours::new(bounds.len(), overlap)
 }
 
 fn vertex_normals(prepared: &PreparedScene) -> Arc<[VertexNormals]> {

@@ -2,20 +2,23 @@
 
 use super::pipeline::PreparedObject;
 use super::sample_rays::SampleRays;
-use glam::{Vec2, Vec3};
+use glam::{DVec3, Vec2, Vec3};
 
 /// Per-object state for one frame, in camera-relative space.
 pub struct FrameObject<'a> {
     pub prepared: &'a PreparedObject,
     /// The surface's anchor relative to the eye, subtracted in f64 before narrowing to f32.
     pub origin: Vec3,
+    /// The eye relative to the surface's anchor in f64, for exact ray casts.
+    pub eye: DVec3,
 }
 
 /// What the shading stage knows about a visible pixel: plain data, so a tile's fragments can be
 /// shaded as one batch.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Fragment {
-    /// Index into the frame's objects.
+    /// Index into the frame's objects; one past the last (set by a shader resolving coverage
+    /// exactly) for a pixel whose ray meets no surface, shown as background at infinite depth.
     pub object: u32,
     pub uv: Vec2,
     /// Screen-space derivatives of (u,v) per pixel, from the same interpolants (for mip levels).
@@ -43,13 +46,14 @@ pub trait FragmentShader: Sync {
     }
 
     /// Writes one linear RGB colour per fragment into `out` (same length as `fragments`), whose
-    /// sample points' view rays are `rays`. Returns how many fragments were drawn flat because a
-    /// pattern gave no finite value there.
+    /// sample points' view rays are `rays`. The program may move a fragment onto the true
+    /// surface its ray meets: its depth (written to the framebuffer) and object change with it.
+    /// Returns how many fragments were drawn flat because a pattern gave no finite value there.
     fn shade(
         &self,
         objects: &[FrameObject],
         rays: &SampleRays,
-        fragments: &[Fragment],
+        fragments: &mut [Fragment],
         scratch: &mut Self::Scratch,
         out: &mut [Vec3],
     ) -> usize;
@@ -67,7 +71,7 @@ impl<F: Fn(&FrameObject, &Fragment) -> Vec3 + Sync> FragmentShader for PerFragme
         &self,
         objects: &[FrameObject],
         _: &SampleRays,
-        fragments: &[Fragment],
+        fragments: &mut [Fragment],
         _: &mut (),
         out: &mut [Vec3],
     ) -> usize {

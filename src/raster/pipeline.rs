@@ -153,6 +153,7 @@ pub fn frame_objects<'a>(prepared: &'a PreparedScene, camera: &Camera) -> Vec<Fr
         .map(|o| FrameObject {
             prepared: o,
             origin: (o.surface.origin() - camera.eye).as_vec3(),
+            eye: camera.eye - o.surface.origin(),
         })
         .collect()
 }

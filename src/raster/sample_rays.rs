@@ -1,6 +1,7 @@
 //! The view ray through each sample point of a pass, handed to shading with its fragments.
 
 use super::view_rays::ViewRays;
+use crate::scene::Camera;
 use glam::{DVec2, Vec3};
 
 /// The direction through each sample point of one pass, camera-relative and scaled to unit
@@ -17,12 +18,21 @@ pub struct SampleRays {
     pub per_pixel_y: Vec3,
     /// The sample spacing in pixels, which scales texture footprints (`RenderTarget::footprint`).
     pub footprint: f32,
+    /// The camera's near and far clip depths: where along the rays surfaces are seen.
+    pub near: f32,
+    pub far: f32,
 }
 
 impl SampleRays {
-    /// The rays of a pass whose pixel (0, 0) is pixel (`x0`, `y0`) of the image `rays` sees,
-    /// each sampled `offset` pixels from its centre.
-    pub fn new(rays: &ViewRays, x0: u32, y0: u32, offset: DVec2, footprint: f32) -> SampleRays {
+    /// The rays of a pass whose pixel (0, 0) is pixel (`x0`, `y0`) of the image `rays` sees
+    /// through `camera`, each sampled `offset` pixels from its centre.
+    pub fn new(
+        rays: &ViewRays,
+        camera: &Camera,
+        (x0, y0): (u32, u32),
+        offset: DVec2,
+        footprint: f32,
+    ) -> SampleRays {
         let shifted = rays.at_sample(offset, footprint as f64);
         let first = shifted.through_pixel(x0, y0);
         SampleRays {
@@ -30,6 +40,8 @@ impl SampleRays {
             per_pixel_x: rays.per_pixel_x.as_vec3(),
             per_pixel_y: rays.per_pixel_y.as_vec3(),
             footprint,
+            near: camera.near,
+            far: camera.far,
         }
     }
 
@@ -43,7 +55,6 @@ impl SampleRays {
 mod tests {
     use super::*;
     use crate::raster::Viewport;
-    use crate::scene::Camera;
     use glam::DVec3;
 
     #[test]
@@ -62,7 +73,7 @@ mod tests {
         };
         let rays = ViewRays::new(&camera, full);
         let offset = DVec2::new(0.25, -0.125);
-        let band = SampleRays::new(&rays, 100, 64, offset, 1.0);
+        let band = SampleRays::new(&rays, &camera, (100, 64), offset, 1.0);
         let expected = rays.at_sample(offset, 1.0).through_pixel(100 + 37, 64 + 5);
         let seen = band.through(37, 5).as_dvec3();
         assert!((seen - expected).length() < 1e-6, "{seen} vs {expected}");

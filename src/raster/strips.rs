@@ -190,7 +190,8 @@ impl<'a, S: FragmentShader> Pass<'a, S> {
         let window = &target.window;
         let view_rays = ViewRays::new(target.camera, window.full);
         let offset = shift.pixels.as_dvec2();
-        let rays = SampleRays::new(&view_rays, window.x0, window.y0, offset, target.footprint);
+        let corner = (window.x0, window.y0);
+        let rays = SampleRays::new(&view_rays, target.camera, corner, offset, target.footprint);
         Pass {
             triangles: &set_up.triangles,
             bins: &set_up.bins,

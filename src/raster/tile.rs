@@ -286,7 +286,7 @@ impl TileBuffers {
         let flattened = frame.shader.shade(
             frame.objects,
             &frame.rays,
-            &self.fragments,
+            &mut self.fragments,
             scratch,
             &mut self.colors,
         );

@@ -1,13 +1,12 @@
 //! The reference renderer: one exact ray per pixel through the same shader as the rasterizer.
 
-use super::intersect::intersect;
-use super::ray::{Hit, Ray};
 use crate::raster::{
     Fragment, FragmentShader, FrameObject, Framebuffer, PreparedScene, SampleRays, ViewRays,
     Viewport, frame_objects,
 };
 use crate::scene::Camera;
-use crate::surface::uv_derivatives;
+use crate::shade::nearest_true_hit;
+use crate::surface::{Hit, uv_derivatives};
 use glam::{DVec2, DVec3, Vec3};
 use rayon::prelude::*;
 
@@ -61,7 +60,7 @@ pub fn render_rays_into(
     }
     let objects = frame_objects(prepared, camera);
     let footprint = rays.footprint as f32;
-    let sample_rays = SampleRays::new(&rays, 0, 0, DVec2::ZERO, footprint);
+    let sample_rays = SampleRays::new(&rays, camera, (0, 0), DVec2::ZERO, footprint);
     let background = prepared.scene.background;
     let width = viewport.width as usize;
     let (color, depth) = framebuffer.parts_mut();
@@ -109,27 +108,8 @@ pub fn cast_pixel(
 ) -> Option<Fragment> {
     let direction = rays.through_pixel(x, y);
     let range = camera.near as f64..=camera.far as f64;
-    let mut nearest: Option<(usize, Hit)> = None;
-    for (index, object) in objects.iter().enumerate() {
-        let surface = &object.prepared.surface;
-        let ray = Ray {
-            origin: camera.eye - surface.origin(),
-            direction,
-        };
-        let Some(hit) = intersect(surface, &ray, range.clone()) else {
-            continue;
-        };
-        let culled = surface.encloses(camera.eye) == Some(true)
-            && surface
-                .frame(hit.uv.x, hit.uv.y)
-                .n
-                .as_dvec3()
-                .dot(direction)
-                >= 0.0;
-        if !culled && nearest.is_none_or(|(_, best)| hit.t < best.t) {
-            nearest = Some((index, hit));
-        }
-    }
+    let eye = |object: &FrameObject| object.eye;
+    let nearest = nearest_true_hit(objects, eye, direction, range);
     let (index, hit) = nearest?;
     Some(fragment_at(objects, rays, index, hit, direction, x, y))
 }

@@ -9,27 +9,15 @@
 //! direction is 1: the ray parameter t is then the view depth, which the near and far planes bound.
 
 mod caster;
-mod cone;
+mod exact_shader;
 mod heat_map;
-mod intersect;
 mod lit_frames;
 pub mod metrics;
-mod paraboloid;
-mod plane;
-mod quadratic;
-mod ray;
-mod root;
-mod shadow_rays;
-mod sphere;
-mod triangle;
-mod wave;
 
 pub use caster::{
     ReferenceStats, cast_pixel, render_rays_into, render_reference, render_reference_into,
 };
+pub use exact_shader::exact_shader;
 pub use heat_map::error_heat_map;
-pub use intersect::{intersect, surface_uv};
 pub use lit_frames::ShadedAndNormals;
 pub use metrics::{FrameError, frame_error};
-pub use ray::{Hit, Ray};
-pub use shadow_rays::{ShadowRays, exact_shader};

@@ -1,9 +1,11 @@
 //! Shading at the true surface point: each fragment of a curved surface is moved along its own
 //! ray from its triangle (the chord) to the surface the triangle stands for, so patterns,
-//! textures, bumps and lights see the (u,v) the surface has there, not the chord's.
+//! textures, bumps and lights see the (u,v) the surface has there, not the chord's. With exact
+//! coverage (`exact_coverage`) the fragment may move to another surface, or to none.
 
+use super::exact_coverage::{Neighbours, cast_dropped, nearer_neighbours};
 use crate::raster::{Fragment, FrameObject, SampleRays};
-use crate::surface::{Frame, Surface, TrueHit, uv_derivatives};
+use crate::surface::{Frame, Ray, Surface, TrueHit, intersect, uv_derivatives};
 use glam::Vec3;
 
 /// Where a fragment of a curved surface is shaded.
@@ -26,62 +28,153 @@ pub struct ExactPoints {
     /// Fragments of curved surfaces that kept their tessellated (u,v): the ray missed the true
     /// surface near its triangle (past a rim), or the wave's Newton steps did not settle.
     pub kept: usize,
+    /// With exact coverage: fragments whose ray meets another object's true surface first.
+    pub reassigned: usize,
+    /// With exact coverage: fragments whose ray meets no true surface at all.
+    pub background: usize,
 }
 
 /// Working arrays for `exact_fragments`, reused batch to batch.
 #[derive(Default)]
 pub struct ExactScratch {
-    pub fragments: Vec<Fragment>,
-    depths: Vec<f32>,
-    directions: Vec<Vec3>,
-    hits: Vec<TrueHit>,
-    found: Vec<bool>,
+    pub(super) depths: Vec<f32>,
+    pub(super) directions: Vec<Vec3>,
+    pub(super) hits: Vec<TrueHit>,
+    pub(super) found: Vec<bool>,
+    /// By fragment of the batch: whether it moved (its derivatives are then recomputed).
+    pub(super) moved: Vec<bool>,
+    /// By fragment: its ray missed its own true surface (cast against every object, with
+    /// exact coverage).
+    pub(super) pending: Vec<bool>,
     frames: Vec<Frame>,
 }
 
-/// `fragments` with each curved surface's (u,v), depth and (where `derivatives` says the shader
-/// reads them, by object) (u,v) derivatives taken at its ray's true hit, into
-/// `scratch.fragments`.
+/// Moves each fragment of a curved surface, in place, to its ray's true hit: (u,v), depth and
+/// (where `derivatives` says the shader reads them, by object) (u,v) derivatives. With
+/// `coverage`, a fragment whose ray misses its own true surface is cast against every object
+/// (and becomes the nearest one's, or background: object `objects.len()`), and one whose ray
+/// meets a neighbour's true surface first becomes that neighbour's.
 pub fn exact_fragments(
     objects: &[FrameObject],
+    coverage: Option<&Neighbours>,
     derivatives: impl Fn(&FrameObject) -> bool,
     rays: &SampleRays,
-    fragments: &[Fragment],
+    fragments: &mut [Fragment],
     scratch: &mut ExactScratch,
 ) -> ExactPoints {
-    let mut out = std::mem::take(&mut scratch.fragments);
-    out.clear();
-    out.extend_from_slice(fragments);
     let mut count = ExactPoints::default();
-    let mut rest = &mut out[..];
-    while let Some(first) = rest.first() {
-        let index = first.object;
-        let length = rest.iter().take_while(|f| f.object == index).count();
-        let (run, after) = rest.split_at_mut(length);
+    for flags in [&mut scratch.moved, &mut scratch.pending] {
+        flags.clear();
+        flags.resize(fragments.len(), false);
+    }
+    let mut start = 0;
+    while start < fragments.len() {
+        let index = fragments[start].object;
+        let length = fragments[start..]
+            .iter()
+            .take_while(|f| f.object == index)
+            .count();
+        let end = start + length;
         let object = &objects[index as usize];
         let surface = &object.prepared.surface;
         if !surface.is_flat() {
-            let moved = move_run(surface, object.origin, rays, run, scratch);
+            let moved = move_run(object, rays, &mut fragments[start..end], scratch);
             count.moved += moved;
-            count.kept += run.len() - moved;
-            if derivatives(object) {
-                exact_derivatives(surface, run, rays, &mut scratch.frames);
+            for (k, &found) in (start..end).zip(&scratch.found) {
+                scratch.moved[k] = found;
+                scratch.pending[k] = !found;
             }
         }
-        rest = after;
+        if let Some(neighbours) = coverage {
+            let run = start..end;
+            let nearer =
+                nearer_neighbours(objects, neighbours, index, rays, fragments, run, scratch);
+            count.reassigned += nearer;
+        }
+        start = end;
     }
-    scratch.fragments = out;
+    match coverage {
+        Some(_) => {
+            let (reassigned, background) = cast_dropped(objects, rays, fragments, scratch);
+            count.reassigned += reassigned;
+            count.background += background;
+        }
+        None => count.kept = scratch.pending.iter().filter(|&&p| p).count(),
+    }
+    exact_derivatives(objects, derivatives, rays, fragments, scratch);
     count
 }
 
-/// Moves one object's run of fragments to its true surface; how many moved.
+/// Moves one object's run of fragments to its true surface where their rays meet it (marked in
+/// `scratch.found`); how many moved.
 fn move_run(
-    surface: &Surface,
-    origin: Vec3,
+    object: &FrameObject,
     rays: &SampleRays,
     run: &mut [Fragment],
     scratch: &mut ExactScratch,
 ) -> usize {
+    let surface = &object.prepared.surface;
+    true_hits_along(surface, object.origin, rays, run, scratch);
+    if let Surface::Wave(_) = surface {
+        first_wave_roots(object, rays, run, scratch);
+    }
+    let mut moved = 0;
+    for ((fragment, hit), &found) in run.iter_mut().zip(&scratch.hits).zip(&scratch.found) {
+        if found {
+            fragment.uv = hit.uv;
+            fragment.depth = hit.depth;
+            moved += 1;
+        }
+    }
+    moved
+}
+
+/// Newton steps from a wave's mesh may settle on the far side of a crest the ray crosses twice:
+/// each hit is replaced by the first root between it and as far before the mesh as the mesh
+/// can lie from the surface along the ray (its chord error over the cosine of the ray's
+/// incidence, from 1/20 up: past that grazing, the steps' root stands).
+fn first_wave_roots(
+    object: &FrameObject,
+    rays: &SampleRays,
+    run: &[Fragment],
+    scratch: &mut ExactScratch,
+) {
+    let surface = &object.prepared.surface;
+    let reach = f64::from(object.prepared.mesh.chord_error);
+    let each = run.iter().zip(scratch.hits.iter_mut()).zip(&scratch.found);
+    for ((fragment, hit), &found) in each {
+        if !found {
+            continue;
+        }
+        let direction = rays.through(fragment.x, fragment.y).as_dvec3();
+        let normal = surface.frame(hit.uv.x, hit.uv.y).n.as_dvec3();
+        let cosine = (normal.dot(direction) / direction.length()).abs().max(0.05);
+        let before = reach / (cosine * direction.length());
+        let from = (f64::from(fragment.depth.min(hit.depth)) - before).max(f64::from(rays.near));
+        let ray = Ray {
+            origin: object.eye,
+            direction,
+        };
+        if let Some(first) = intersect(surface, &ray, from..=f64::from(hit.depth))
+            && (first.t as f32) < hit.depth
+        {
+            *hit = TrueHit {
+                uv: first.uv,
+                depth: first.t as f32,
+            };
+        }
+    }
+}
+
+/// `surface`'s true hits along the rays of `run`'s fragments, near their depths, into
+/// `scratch.hits` and `scratch.found`.
+pub(super) fn true_hits_along(
+    surface: &Surface,
+    origin: Vec3,
+    rays: &SampleRays,
+    run: &[Fragment],
+    scratch: &mut ExactScratch,
+) {
     let ExactScratch {
         depths,
         directions,
@@ -96,41 +189,60 @@ fn move_run(
     hits.resize(run.len(), TrueHit::default());
     found.resize(run.len(), false);
     surface.true_hits(-origin, directions, depths, hits, found);
-    let mut moved = 0;
-    for ((fragment, hit), &found) in run.iter_mut().zip(hits.iter()).zip(found.iter()) {
-        if found {
-            fragment.uv = hit.uv;
-            fragment.depth = hit.depth;
-            moved += 1;
-        }
-    }
-    moved
 }
 
-/// The (u,v) derivatives of each fragment from ray differentials at its (u,v), which are now
-/// the true surface's, as the reference computes them.
+/// The (u,v) derivatives of each moved fragment from ray differentials at its (u,v), which are
+/// now the true surface's, as the reference computes them.
 fn exact_derivatives(
-    surface: &Surface,
-    run: &mut [Fragment],
+    objects: &[FrameObject],
+    derivatives: impl Fn(&FrameObject) -> bool,
     rays: &SampleRays,
-    frames: &mut Vec<Frame>,
+    fragments: &mut [Fragment],
+    scratch: &mut ExactScratch,
 ) {
-    frames.clear();
-    surface.frames(run.len(), |k| run[k].uv, frames);
-    let domain = surface.domain();
     let (dx, dy) = (
         rays.per_pixel_x * rays.footprint,
         rays.per_pixel_y * rays.footprint,
     );
-    crate::simd::widest(
-        #[inline(always)]
-        || {
-            for (fragment, frame) in run.iter_mut().zip(frames.iter()) {
-                let direction = rays.through(fragment.x, fragment.y);
-                let t = fragment.depth;
-                fragment.duv_dx = uv_derivatives(frame, t, direction, dx, domain);
-                fragment.duv_dy = uv_derivatives(frame, t, direction, dy, domain);
-            }
-        },
-    );
+    let frames = &mut scratch.frames;
+    let mut start = 0;
+    while start < fragments.len() {
+        let index = fragments[start].object;
+        let length = fragments[start..]
+            .iter()
+            .take_while(|f| f.object == index)
+            .count();
+        let (run, moved) = (
+            &mut fragments[start..start + length],
+            &scratch.moved[start..],
+        );
+        start += length;
+        let Some(object) = objects.get(index as usize) else {
+            continue;
+        };
+        if !derivatives(object) || !moved[..length].contains(&true) {
+            continue;
+        }
+        let surface = &object.prepared.surface;
+        frames.clear();
+        surface.frames(run.len(), |k| run[k].uv, frames);
+        let domain = surface.domain();
+        crate::simd::widest(
+            #[inline(always)]
+            || {
+                let each = run.iter_mut().zip(frames.iter()).zip(moved);
+                for ((fragment, frame), &moved) in each {
+                    let direction = rays.through(fragment.x, fragment.y);
+                    let t = fragment.depth;
+                    let (du, dv) = (
+                        uv_derivatives(frame, t, direction, dx, domain),
+                        uv_derivatives(frame, t, direction, dy, domain),
+                    );
+                    if moved {
+                        (fragment.duv_dx, fragment.duv_dy) = (du, dv);
+                    }
+                }
+            },
+        );
+    }
 }

@@ -3,6 +3,7 @@
 //! Work the scene does not need is skipped: no texture, no sampling; no bump, no perturbation.
 
 use super::bump::{NormalForm, blinn_normals, blinn_normals_on_flat, bumped_normal};
+use super::exact_coverage::Neighbours;
 use super::exact_point::{ExactScratch, SurfacePointSource, exact_fragments};
 use super::gradient::{GradientMethod, central_difference, shifted_fragments};
 use super::lighting::{FrameLights, blinn_phong_many, facing_sign};
@@ -40,6 +41,11 @@ pub struct LitShader {
     pub depth_scale: f32,
     /// What blocks the lights (`None`: nothing does).
     pub shadows: Option<Arc<dyn Shadowing>>,
+    /// Which objects each one's true surface may pass in front of, for resolving coverage
+    /// exactly at the true surfaces (`None`: the mesh's coverage stands).
+    pub exact_coverage: Option<Arc<Neighbours>>,
+    /// The colour of pixels whose ray meets no true surface.
+    pub background: Vec3,
     /// Where fragments of curved surfaces are shaded: on their triangle or on the true surface.
     pub surface_point: SurfacePointSource,
 }
@@ -56,6 +62,8 @@ impl LitShader {
             vertex_normals: None,
             depth_scale: (camera.target - camera.eye).length() as f32,
             shadows: None,
+            exact_coverage: None,
+            background: scene.background,
             surface_point: SurfacePointSource::Interpolated,
         }
     }
@@ -132,23 +140,19 @@ impl FragmentShader for LitShader {
         &self,
         objects: &[FrameObject],
         rays: &SampleRays,
-        fragments: &[Fragment],
+        fragments: &mut [Fragment],
         scratch: &mut ShadeScratch,
         out: &mut [Vec3],
     ) -> usize {
-        let mut exact = std::mem::take(&mut scratch.exact);
-        let fragments = match self.surface_point {
-            SurfacePointSource::Interpolated => fragments,
-            SurfacePointSource::Exact => {
-                let derivatives = |object: &FrameObject| self.reads_derivatives(object);
-                exact_fragments(objects, derivatives, rays, fragments, &mut exact);
-                &exact.fragments[..]
-            }
-        };
+        if self.surface_point == SurfacePointSource::Exact {
+            self.move_to_true_surfaces(objects, rays, fragments, scratch, out);
+        }
+        let fragments = &*fragments;
         let mut order = std::mem::take(&mut scratch.order);
+        // One group past the objects' holds the background fragments (already coloured).
         group_by_object(
             fragments,
-            objects.len(),
+            objects.len() + 1,
             &mut order,
             &mut scratch.group_starts,
         );
@@ -167,7 +171,6 @@ impl FragmentShader for LitShader {
             }
         }
         scratch.order = order;
-        scratch.exact = exact;
         flattened
     }
 }
@@ -191,6 +194,29 @@ fn chunk_size(object: &FrameObject) -> usize {
 }
 
 impl LitShader {
+    /// Moves each fragment onto the true surface its ray meets (see `exact_fragments`); those
+    /// that meet none are given the background colour here.
+    fn move_to_true_surfaces(
+        &self,
+        objects: &[FrameObject],
+        rays: &SampleRays,
+        fragments: &mut [Fragment],
+        scratch: &mut ShadeScratch,
+        out: &mut [Vec3],
+    ) {
+        let derivatives = |object: &FrameObject| self.reads_derivatives(object);
+        let coverage = self.exact_coverage.as_deref();
+        let exact = &mut scratch.exact;
+        let moved = exact_fragments(objects, coverage, derivatives, rays, fragments, exact);
+        if moved.background > 0 {
+            let background = objects.len() as u32;
+            let fragments = fragments.iter().zip(out.iter_mut());
+            for (_, out) in fragments.filter(|(f, _)| f.object == background) {
+                *out = self.background;
+            }
+        }
+    }
+
     fn shade_object(
         &self,
         object_index: usize,
@@ -774,7 +800,7 @@ mod tests {
             &self,
             objects: &[FrameObject],
             rays: &SampleRays,
-            fragments: &[Fragment],
+            fragments: &mut [Fragment],
             scratch: &mut ShadeScratch,
             out: &mut [Vec3],
         ) -> usize {

@@ -12,12 +12,14 @@ mod cache;
 mod caster_spheres;
 mod casting;
 mod depth_blocks;
+mod exact_rays;
 mod filter;
 mod light_views;
 
 pub use bounds::{Bounds, object_bounds, seen_bounds, union_of};
 pub use cache::ShadowCache;
 pub use casting::{can_shadow, casters};
+pub use exact_rays::ShadowRays;
 pub use filter::DepthFilter;
 
 use crate::raster::{DepthMap, PreparedScene, Viewport, render_depth};
@@ -41,6 +43,8 @@ pub struct ShadowSettings {
     pub taps: u32,
     /// Normal offset past the filter's reach, in texels.
     pub bias_texels: f32,
+    /// Whether a lookup the filter finds partly lit is settled by an exact shadow ray.
+    pub exact_edges: bool,
 }
 
 /// Every light's shadow maps for one view of a prepared scene.
@@ -56,6 +60,8 @@ pub struct ShadowMaps {
     filter: DepthFilter,
     /// Texels a lookup moves off its surface along its normal, besides its lift.
     offset_texels: f32,
+    /// Where set, lookups the filter finds partly lit are settled by exact shadow rays.
+    edges: Option<ShadowRays>,
 }
 
 /// One light's maps: one, or a cube's six faces.
@@ -151,6 +157,10 @@ impl ShadowMaps {
                 .collect(),
             filter,
             offset_texels,
+            edges: settings
+                .exact_edges
+                .then(|| ShadowRays::new(prepared, camera))
+                .flatten(),
         })
     }
 }
@@ -404,6 +414,20 @@ impl Shadowing for ShadowMaps {
             } else {
                 maps.face_for(p).reach(p, n, self, receiver)
             };
+        }
+        if let Some(rays) = &self.edges {
+            // The filter's edge band, where a map cannot place an edge closer than its texels,
+            // and the band where the light grazes the surface, where a map's depths cannot tell
+            // a surface from its own shadow.
+            for ((out, &p), &n) in out.iter_mut().zip(points).zip(normals) {
+                if (*out > 0.0 && *out < 1.0) || rays.grazes(light, p, n) {
+                    *out = if rays.blocked_at(light, p, n) {
+                        0.0
+                    } else {
+                        1.0
+                    };
+                }
+            }
         }
     }
 }

@@ -9,9 +9,11 @@
 mod angles;
 mod basis;
 mod cone;
+mod hull;
 mod paraboloid;
 mod plane;
 mod ray_differentials;
+mod ray_hits;
 mod sphere;
 mod tessellate;
 mod triangle;
@@ -21,9 +23,11 @@ mod wave;
 pub use angles::{atan2, sin_cos};
 pub use basis::AxisBasis;
 pub use cone::Cone;
+pub use hull::push_out_to_hull;
 pub use paraboloid::Paraboloid;
 pub use plane::Plane;
 pub use ray_differentials::uv_derivatives;
+pub use ray_hits::{Hit, Ray, intersect, surface_uv};
 pub use sphere::Sphere;
 pub use tessellate::{Mesh, Tessellation};
 pub use triangle::Triangle;
@@ -140,8 +144,13 @@ impl Surface {
 
     /// Whether the surface encloses a volume the camera can be outside of (so back faces may be culled).
     pub fn encloses(&self, eye: DVec3) -> Option<bool> {
+        self.encloses_eye_at(eye - self.origin())
+    }
+
+    /// `encloses`, for an eye given relative to the surface's anchor.
+    pub fn encloses_eye_at(&self, eye_from_anchor: DVec3) -> Option<bool> {
         match self {
-            Surface::Sphere(s) => Some((eye - s.center).length() > s.radius as f64),
+            Surface::Sphere(s) => Some(eye_from_anchor.length() > s.radius as f64),
             _ => None,
         }
     }

@@ -9,6 +9,7 @@
 //! surface is large; the angles of the (u,v) are f32 (`atan2`, within 3e-7 rad).
 
 use super::angles::atan2;
+use super::ray_hits::{Ray, intersect};
 use super::sphere::SEED_UNITS_PER_RADIAN;
 use super::{AxisBasis, Cone, Paraboloid, Sphere, Surface, Wave};
 use glam::{DVec3, Vec2, Vec3};
@@ -32,9 +33,9 @@ const CHUNK: usize = 64;
 impl Surface {
     /// Where the ray `eye + t·direction` (relative to the surface's anchor), which meets the
     /// surface's tessellation at t = `depth`, meets the true surface: the first hit in front of
-    /// the eye for the quadrics (as the reference sees it), the hit the Newton steps reach from
-    /// the tessellation's point for the wave. `None` for flat surfaces (their tessellation is
-    /// exact), where the ray misses the true surface, and where the wave's steps do not settle.
+    /// the eye for the quadrics and flat surfaces (as the reference sees it), the hit the Newton
+    /// steps reach from the tessellation's point for the wave. `None` where the ray misses the
+    /// true surface, and where the wave's steps do not settle.
     pub fn true_hit(&self, eye: Vec3, direction: Vec3, depth: f32) -> Option<TrueHit> {
         let (mut hit, mut found) = ([TrueHit::default()], [false]);
         self.true_hits(eye, &[direction], &[depth], &mut hit, &mut found);
@@ -58,7 +59,20 @@ impl Surface {
             depths,
         };
         match self {
-            Surface::Plane(_) | Surface::Triangle(_) => found.fill(false),
+            Surface::Plane(_) | Surface::Triangle(_) => {
+                for k in 0..n {
+                    let ray = Ray {
+                        origin: eye.as_dvec3(),
+                        direction: directions[k].as_dvec3(),
+                    };
+                    let hit = intersect(self, &ray, f64::MIN_POSITIVE..=f64::INFINITY);
+                    found[k] = hit.is_some();
+                    hits[k] = hit.map_or(TrueHit::default(), |hit| TrueHit {
+                        uv: hit.uv,
+                        depth: hit.t as f32,
+                    });
+                }
+            }
             Surface::Sphere(s) => quadric_hits(&SphereQuadric(s), rays, hits, found),
             Surface::Paraboloid(p) => quadric_hits(&ParaboloidQuadric(p), rays, hits, found),
             Surface::Cone(c) => quadric_hits(&ConeQuadric::new(c), rays, hits, found),
@@ -289,7 +303,8 @@ fn azimuth_u(x: f32, z: f32) -> f32 {
 /// y = A·sin(k·x) along the ray, by Newton steps from the chord point. Each step is held to an
 /// eighth of a wavelength in x (and in s where the ray runs along the crests), so it cannot leap
 /// over a crest to a farther sheet of the surface; steps that have not settled by
-/// `WAVE_NEWTON_STEPS` give `None`, and the fragment keeps its tessellated (u,v).
+/// `WAVE_NEWTON_STEPS` give `None`, and the fragment keeps its tessellated (u,v); so does a hit
+/// past the sheet's edges.
 fn wave_hit(wave: &Wave, chord: Vec3, direction: Vec3) -> Option<(Vec2, f64)> {
     let (q, d) = (chord.as_dvec3(), direction.as_dvec3());
     let amplitude = wave.amplitude as f64;
@@ -304,7 +319,9 @@ fn wave_hit(wave: &Wave, chord: Vec3, direction: Vec3) -> Option<(Vec2, f64)> {
         let value = f(s);
         if value.abs() <= tolerance {
             let p = q + d * s;
-            return Some((Vec2::new(p.x as f32, -p.z as f32), s));
+            let uv = Vec2::new(p.x as f32, -p.z as f32);
+            let inside = uv.cmpge(Vec2::ZERO).all() && uv.cmple(wave.size).all();
+            return inside.then_some((uv, s));
         }
         let step = (-value / df(s)).clamp(-max_step, max_step);
         if !step.is_finite() {

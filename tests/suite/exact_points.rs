@@ -1,17 +1,18 @@
 //! Shading at the true surface point: every fragment of a sphere, cone or paraboloid is moved
 //! to where its own ray meets the analytic surface (within 1e-4 of a pattern period of the
 //! reference's f64 intersection), the wave's Newton steps settle or give up (counted), and
-//! nothing is NaN at poles, apexes, seams or silhouettes.
+//! nothing is NaN at poles, apexes, seams or silhouettes; exact coverage shows, pixel by pixel,
+//! the object (or background) the reference's exact rays meet first.
 
 use crate::common::render_with;
-use bumpwork::quality::Quality;
+use bumpwork::quality::{Coverage, Quality};
 use bumpwork::raster::{
-    Fragment, FragmentShader, FrameObject, PreparedScene, RenderTarget, SampleRays, ViewRays,
-    Viewport, frame_objects,
+    Fragment, FragmentShader, FrameObject, PerFragment, PreparedScene, RenderTarget, SampleRays,
+    ViewRays, Viewport, frame_objects,
 };
-use bumpwork::reference::cast_pixel;
+use bumpwork::reference::{cast_pixel, render_reference};
 use bumpwork::scene::{Camera, Material, Object, Scene, preset};
-use bumpwork::shade::{ExactScratch, SurfacePointSource, exact_fragments};
+use bumpwork::shade::{ExactScratch, Neighbours, SurfacePointSource, exact_fragments};
 use bumpwork::surface::{AxisBasis, Cone, Paraboloid, Sphere, Surface, Tessellation, Wave};
 use glam::{DVec3, Vec2, Vec3};
 use std::sync::Mutex;
@@ -41,15 +42,13 @@ impl FragmentShader for Recorder {
         &self,
         objects: &[FrameObject],
         rays: &SampleRays,
-        fragments: &[Fragment],
+        fragments: &mut [Fragment],
         scratch: &mut ExactScratch,
         out: &mut [Vec3],
     ) -> usize {
-        exact_fragments(objects, |_| false, rays, fragments, scratch);
-        let pairs = fragments
-            .iter()
-            .copied()
-            .zip(scratch.fragments.iter().copied());
+        let before = fragments.to_vec();
+        exact_fragments(objects, None, |_| false, rays, fragments, scratch);
+        let pairs = before.into_iter().zip(fragments.iter().copied());
         self.seen.lock().unwrap().extend(pairs);
         out.fill(Vec3::ONE);
         0
@@ -299,5 +298,112 @@ fn exact_surface_points_leave_no_nan_at_poles_apexes_seams_or_silhouettes() {
     assert!(
         hit.is_none_or(|h| h.uv.is_finite() && (h.depth - 400.0).abs() < 1e-2),
         "{hit:?}"
+    );
+}
+
+/// Writes each fragment's object (plus one) as its colour, after settling it on the true
+/// surfaces as exact coverage does; background stays 0.
+struct ObjectIds {
+    neighbours: Neighbours,
+}
+
+impl FragmentShader for ObjectIds {
+    type Scratch = ExactScratch;
+
+    fn scratch(&self) -> ExactScratch {
+        ExactScratch::default()
+    }
+
+    fn shade(
+        &self,
+        objects: &[FrameObject],
+        rays: &SampleRays,
+        fragments: &mut [Fragment],
+        scratch: &mut ExactScratch,
+        out: &mut [Vec3],
+    ) -> usize {
+        let coverage = Some(&self.neighbours);
+        exact_fragments(objects, coverage, |_| false, rays, fragments, scratch);
+        for (fragment, out) in fragments.iter().zip(out) {
+            *out = Vec3::splat((fragment.object + 1) as f32 % (objects.len() + 1) as f32);
+        }
+        0
+    }
+}
+
+/// Pixels whose object (or background) differs between exact coverage and the reference.
+fn coverage_mismatches(scene: &Scene, coverage: Coverage) -> (usize, usize) {
+    // A coarse mesh, whose chords cut well inside the outline: the hull and the true surfaces
+    // must make up all of it.
+    let quality = Quality {
+        coverage,
+        tessellation: 12,
+        ..Quality::interactive()
+    };
+    let mut scene = scene.clone();
+    scene.background = Vec3::ZERO;
+    let prepared = quality
+        .prepare(scene.clone(), &scene.camera, VIEW, 0)
+        .unwrap();
+    let everyone = Neighbours::new(prepared.objects.len(), |_, _| true);
+    let ours = ObjectIds {
+        neighbours: everyone,
+    };
+    let target = RenderTarget::new(&scene.camera, VIEW);
+    let (frame, _) = render_with(&prepared, &target, &ours);
+    let ids = PerFragment(|_: &FrameObject, f: &Fragment| Vec3::splat((f.object + 1) as f32));
+    let (exact, _) = render_reference(&prepared, &scene.camera, VIEW, &ids);
+    let covered = exact.color().iter().filter(|c| c.x > 0.0).count();
+    let differ = frame.color().iter().zip(exact.color());
+    let mismatches = differ.filter(|(a, b)| a.x != b.x).count();
+    (mismatches, covered)
+}
+
+fn two_spheres_cutting_each_other_on_a_floor() -> Scene {
+    let mut scene = preset("sphere-on-plane-dimples").unwrap();
+    let sphere = |x: f64, radius: f32| Object {
+        surface: Surface::Sphere(Sphere {
+            center: DVec3::new(x, radius as f64, 0.0),
+            radius,
+        }),
+        material: Material::default(),
+    };
+    scene.objects.truncate(1);
+    scene
+        .objects
+        .extend([sphere(-80.0, 150.0), sphere(90.0, 120.0)]);
+    scene
+}
+
+#[test]
+fn exact_coverage_is_the_references_outline_and_order_of_surfaces() {
+    let mut mesh_total = 0;
+    for (what, scene) in [
+        ("sphere", sphere_seen_from_above()),
+        ("cone", cone_towards_its_apex()),
+        ("bowl", bowl_inside_and_out()),
+        (
+            "two spheres cutting each other on a floor",
+            two_spheres_cutting_each_other_on_a_floor(),
+        ),
+        ("wave and spheres", preset("wave-spheres").unwrap()),
+    ] {
+        let (mismatches, covered) = coverage_mismatches(&scene, Coverage::Exact);
+        let (mesh_mismatches, _) = coverage_mismatches(&scene, Coverage::Mesh);
+        eprintln!(
+            "{what}: {mismatches} of {covered} covered pixels differ ({mesh_mismatches} with the \
+             mesh's coverage)"
+        );
+        assert!(covered > 2000, "{what}: only {covered} pixels covered");
+        assert!(
+            mismatches <= 2,
+            "{what}: {mismatches} pixels differ from the reference"
+        );
+        mesh_total += mesh_mismatches;
+    }
+    // The coarse meshes' own outlines are well off: the test sees what exact coverage mends.
+    assert!(
+        mesh_total > 200,
+        "the meshes alone are off by only {mesh_total} pixels"
     );
 }

@@ -2,7 +2,7 @@
 //! or the exact setting of the same knob.
 
 use crate::common::render_with;
-use bumpwork::quality::{NormalSource, Quality};
+use bumpwork::quality::{Coverage, NormalSource, Quality};
 use bumpwork::raster::{Framebuffer, Interpolation, Viewport};
 use bumpwork::reference::metrics::normal_angle_error;
 use bumpwork::reference::render_reference;
@@ -98,6 +98,7 @@ fn interpolated_vertex_normals_differ_from_the_exact_frame_and_converge_with_den
         tessellation: density,
         normals,
         surface_point: SurfacePointSource::Interpolated,
+        coverage: Coverage::Mesh,
         ..Quality::interactive()
     };
     let densities = [6, 12, 24, 48];
@@ -249,8 +250,10 @@ fn the_filter_override_reaches_every_image_texture_and_changes_the_picture() {
 fn adaptive_tessellation_brings_a_coarse_silhouette_within_its_tolerance() {
     let sphere = bare_sphere();
     let exact = reference(&sphere, &Quality::interactive(), ShaderMode::Shaded);
+    // The mesh's own outline: exact coverage would hide what adaptive density does to it.
     let coarse = Quality {
         tessellation: 4,
+        coverage: Coverage::Mesh,
         ..Quality::interactive()
     };
     let adaptive = Quality {

@@ -3,8 +3,8 @@
 //! size), no hit is missed in front of a known surface point, and inversion undoes `frame`.
 
 use crate::reference_support::XorShift;
-use bumpwork::reference::{Ray, intersect, surface_uv};
 use bumpwork::surface::{AxisBasis, Cone, Paraboloid, Plane, Sphere, Surface, Triangle, Wave};
+use bumpwork::surface::{Ray, intersect, surface_uv};
 use glam::{DVec3, Vec2, Vec3};
 
 fn surfaces() -> Vec<(&'static str, Surface, f64)> {

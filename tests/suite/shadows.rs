@@ -2,7 +2,7 @@
 //! boundaries within a pixel of the reference's exact shadow rays.
 
 use crate::common::render_with;
-use bumpwork::quality::Quality;
+use bumpwork::quality::{Quality, ShadowEdges};
 use bumpwork::raster::{Framebuffer, PreparedScene, Viewport};
 use bumpwork::reference::{exact_shader, render_reference};
 use bumpwork::scene::{Scene, parse_scene};
@@ -266,6 +266,46 @@ fn the_shadow_boundary_is_within_a_pixel_of_the_exact_one_at_high() {
         let scene = scene([0.0, 3.0, 8.0], [0.5, 0.6, 0.0], &lights, &objects);
         let in_shadow = assert_boundary_within_a_pixel(&scene, &Quality::high(), what);
         assert!(in_shadow > 300, "{what}: {in_shadow} pixels in shadow");
+    }
+}
+
+#[test]
+fn exact_shadow_edges_shadow_the_very_pixels_the_exact_shadow_rays_do_at_interactive() {
+    let objects = format!("{}\n{}", resting_sphere(), sphere([2.2, 0.6, 0.8], 0.6));
+    for (lights, what) in [
+        (directional_light([0.6, 1.0, 0.3]), "directional"),
+        (point_light([3.0, 3.0, -1.0]), "low point light"),
+    ] {
+        let scene = scene([0.0, 3.0, 8.0], [0.5, 0.6, 0.0], &lights, &objects);
+        // Pixels where a tenth of the light or more reaches one frame and not the other.
+        let exact = light_fractions(&scene, reference);
+        let differ = |quality: &Quality| {
+            let ours = light_fractions(&scene, |s| raster(s, quality));
+            let apart = |a: &Option<(f32, f32)>, b: &Option<(f32, f32)>| match (a, b) {
+                (Some(a), Some(b)) => (a.0 - b.0).abs() > 0.1,
+                (a, b) => a.is_some() != b.is_some(),
+            };
+            ours.iter().zip(&exact).filter(|(a, b)| apart(a, b)).count()
+        };
+        // A coarse map, whose filtered edges are texels wide: the rays must settle all of them.
+        let rays = Quality {
+            shadow_map: 128,
+            ..Quality::interactive()
+        };
+        let filtered = Quality {
+            shadow_edges: ShadowEdges::Filtered,
+            ..rays
+        };
+        let (with_rays, with_filter) = (differ(&rays), differ(&filtered));
+        eprintln!("{what}: {with_rays} pixels differ ({with_filter} with filtered edges)");
+        assert!(
+            with_rays <= 2,
+            "{what}: {with_rays} pixels shadowed otherwise than exactly"
+        );
+        assert!(
+            with_filter > 10,
+            "{what}: the filter alone differs in only {with_filter}"
+        );
     }
 }
 

@@ -36,23 +36,28 @@ fn the_error_view_shows_the_psnr_and_finer_presets_raise_it() {
         app.apply(Action::NextViewMode);
     }
     let interactive = error_view_psnr(&mut app, &mut screen);
+    let status_line = status(&screen, &app);
+    assert!(
+        status_line.contains("PSNR") || status_line.contains("identical to reference"),
+        "{status_line}"
+    );
+    // Round to draft: density 16, the mesh's outline and (u,v), Blinn's normal.
+    for _ in 0..3 {
+        app.apply(Action::NextQuality);
+    }
+    assert_eq!(app.quality.name(), "draft");
+    let draft = error_view_psnr(&mut app, &mut screen);
     assert!(
         status(&screen, &app).contains("PSNR"),
         "{}",
         status(&screen, &app)
     );
-    app.apply(Action::NextQuality);
-    assert_eq!(app.quality.name(), "high");
-    let high = error_view_psnr(&mut app, &mut screen);
-    // Density 64 and Blinn's normal against 128 and the exact normal: 45 and 74 dB at 64×48 in
-    // `bumpwork bench` when written; here at least a clear step up.
+    // Interactive settles every pixel on the true surfaces: identical to the reference at
+    // 64×48 in `bumpwork bench` when written, draft 29 dB; here at least a clear step up.
+    assert!(draft.is_finite() && draft > 20.0, "{draft}");
     assert!(
-        interactive.is_finite() && interactive > 25.0,
-        "{interactive}"
-    );
-    assert!(
-        high > interactive + 3.0,
-        "high {high} dB vs interactive {interactive} dB"
+        interactive > draft + 3.0,
+        "interactive {interactive} dB vs draft {draft} dB"
     );
     app.apply(Action::NextViewMode);
     screen.draw(&mut app, &mut Vec::new()).unwrap();

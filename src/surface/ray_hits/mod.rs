@@ -1,15 +1,28 @@
-//! Exact intersection of a ray with any surface, and the inverse of its parametrisation.
+//! Exact intersection of a ray with any surface, and the inverse of its parametrisation, in f64
+//! relative to the surface's anchor (so a scene translated by 1e6 loses nothing): the
+//! reference renders with them, and exact coverage resolves the pixels a mesh cannot.
 
-use super::cone::{cone_uv, intersect_cone};
-use super::paraboloid::{intersect_paraboloid, paraboloid_uv};
-use super::plane::{intersect_plane, plane_uv};
-use super::ray::{Hit, Ray};
-use super::sphere::{intersect_sphere, sphere_uv};
-use super::triangle::{intersect_triangle, triangle_uv};
-use super::wave::{intersect_wave, wave_uv};
+mod cone;
+mod paraboloid;
+mod plane;
+mod quadratic;
+mod ray;
+mod root;
+mod sphere;
+mod triangle;
+mod wave;
+
+pub use ray::{Hit, Ray};
+
 use crate::surface::Surface;
+use cone::{cone_uv, intersect_cone};
 use glam::{DVec3, Vec2};
+use paraboloid::{intersect_paraboloid, paraboloid_uv};
+use plane::{intersect_plane, plane_uv};
+use sphere::{intersect_sphere, sphere_uv};
 use std::ops::RangeInclusive;
+use triangle::{intersect_triangle, triangle_uv};
+use wave::{intersect_wave, wave_uv};
 
 /// The nearest intersection of the ray (relative to the surface's anchor) with the exact surface,
 /// for t in `range`, with the exact (u,v) there.

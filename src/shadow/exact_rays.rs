@@ -1,33 +1,24 @@
 //! Exact shadows: from each shaded point a ray to each light, intersected analytically with every
-//! exact surface. The judge of the rasterizer's shadow maps, as the view rays are of its meshes.
+//! exact surface. The reference's shadows, the judge of the shadow maps; and where a map's
+//! filtered lookup is partly lit, the answer exact shadow edges take.
 
-use super::intersect::intersect;
-use super::ray::Ray;
-use crate::quality::Quality;
+use super::casting::can_shadow;
 use crate::raster::PreparedScene;
 use crate::scene::{Camera, Light};
-use crate::shade::{LitShader, Shadowing};
-use crate::shadow::can_shadow;
+use crate::shade::Shadowing;
 use crate::surface::Surface;
+use crate::surface::{Ray, intersect};
 use glam::{DVec3, Vec3};
-use std::sync::Arc;
 
 /// How far a shadow ray starts off its surface, relative to the point's distance from the eye
 /// (plus one unit): past the f32 rounding of the shaded point, far below a pixel.
 const START_OFF_SURFACE: f64 = 1e-4;
+/// The cosine below which light grazes a surface (about 6°): there a receiver's depth and the
+/// map's depth of the same surface differ by less than the map's own spread of depth in a texel.
+const GRAZING: f32 = 0.1;
 /// How far a shadow ray towards a directional light looks: past any scene (finite, as the
 /// intersections clip to boxes).
 const DIRECTIONAL_REACH: f64 = 1e12;
-
-/// The reference's fragment program: the `exact` preset's shading, and exact shadow rays where
-/// the scene has shadows.
-pub fn exact_shader(prepared: &PreparedScene, camera: &Camera) -> LitShader {
-    let mut shader = LitShader::new(&prepared.scene, camera);
-    Quality::exact().configure(&mut shader, prepared);
-    shader.shadows =
-        ShadowRays::new(prepared, camera).map(|rays| Arc::new(rays) as Arc<dyn Shadowing>);
-    shader
-}
 
 /// Shadow rays through the exact scene, for points relative to one camera's eye.
 pub struct ShadowRays {
@@ -45,6 +36,24 @@ impl ShadowRays {
             lights: scene.lights.clone(),
             surfaces: prepared.objects.iter().map(|o| o.surface.clone()).collect(),
         })
+    }
+
+    /// Whether anything lies between the camera-relative point `p` (on a surface whose facing
+    /// normal is `n`) and light `light`.
+    pub fn blocked_at(&self, light: usize, p: Vec3, n: Vec3) -> bool {
+        let lift = START_OFF_SURFACE * (1.0 + f64::from(p.length()));
+        let from = self.eye + p.as_dvec3() + n.as_dvec3() * lift;
+        self.blocked(&self.lights[light], from)
+    }
+
+    /// Whether light `light` meets the camera-relative point `p`, whose surface's facing normal
+    /// is `n`, within `GRAZING` of its tangent plane.
+    pub fn grazes(&self, light: usize, p: Vec3, n: Vec3) -> bool {
+        let towards = match self.lights[light] {
+            Light::Point { position, .. } => (position - (self.eye + p.as_dvec3())).as_vec3(),
+            Light::Directional { towards, .. } => towards,
+        };
+        n.dot(towards).abs() < GRAZING * towards.length()
     }
 
     /// Whether anything lies between the world point `from` and the light.
@@ -85,11 +94,12 @@ impl Shadowing for ShadowRays {
         normals: &[Vec3],
         out: &mut [f32],
     ) {
-        let light = &self.lights[light];
         for ((out, &p), &n) in out.iter_mut().zip(points).zip(normals) {
-            let lift = START_OFF_SURFACE * (1.0 + f64::from(p.length()));
-            let from = self.eye + p.as_dvec3() + n.as_dvec3() * lift;
-            *out = if self.blocked(light, from) { 0.0 } else { 1.0 };
+            *out = if self.blocked_at(light, p, n) {
+                0.0
+            } else {
+                1.0
+            };
         }
     }
 }

@@ -24,17 +24,17 @@ pub struct Hit {
     pub uv: Vec2,
 }
 
-/// The first of `candidates` (any order) inside `range` that `accept` keeps, as a hit.
+/// The first of `candidates` (at most two, any order) inside `range` that `accept` keeps, as a
+/// hit. No allocation: exact coverage calls this for pixels as they are shaded.
 pub(super) fn nearest_hit(
-    candidates: impl IntoIterator<Item = f64>,
+    candidates: [f64; 2],
     range: &RangeInclusive<f64>,
     mut accept: impl FnMut(f64) -> Option<Vec2>,
 ) -> Option<Hit> {
-    let mut ts: Vec<f64> = candidates
+    let [a, b] = candidates;
+    let in_order = if b < a { [b, a] } else { [a, b] };
+    in_order
         .into_iter()
         .filter(|t| range.contains(t))
-        .collect();
-    ts.sort_by(f64::total_cmp);
-    ts.into_iter()
         .find_map(|t| accept(t).map(|uv| Hit { t, uv }))
 }

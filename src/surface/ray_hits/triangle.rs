@@ -12,7 +12,7 @@ pub(super) fn intersect_triangle(
     range: &RangeInclusive<f64>,
 ) -> Option<Hit> {
     let t = flat_hit(triangle.normal.as_dvec3(), ray)?;
-    nearest_hit([t], range, |t| {
+    nearest_hit([t, f64::NAN], range, |t| {
         let uv = triangle_uv(triangle, ray.at(t));
         contains(triangle.corners_uv, uv).then_some(uv)
     })

@@ -11,7 +11,7 @@ pub(super) fn intersect_plane(
     range: &RangeInclusive<f64>,
 ) -> Option<Hit> {
     let t = flat_hit(plane.normal.as_dvec3(), ray)?;
-    nearest_hit([t], range, |t| {
+    nearest_hit([t, f64::NAN], range, |t| {
         let uv = plane_uv(plane, ray.at(t));
         let inside = uv.cmpge(Vec2::ZERO).all() && uv.cmple(plane.size).all();
         inside.then_some(uv)

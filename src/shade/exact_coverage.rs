@@ -1,0 +1,170 @@
+//! Exact coverage: which true surface a pixel's ray meets first, where the mesh cannot say.
+//! Curved surfaces are tessellated as hulls around their true surfaces, so every pixel a true
+//! surface covers is covered by its mesh; shading then settles each fragment on the true
+//! surfaces: one whose ray misses its own is cast against every object (and may show what lies
+//! behind, or the background), and one whose ray meets a neighbouring object's true surface
+//! first (where two objects touch or cut each other) becomes that neighbour's.
+
+use super::exact_point::{ExactScratch, true_hits_along};
+use crate::raster::{Fragment, FrameObject, SampleRays};
+use crate::surface::{Hit, Ray, Surface, TrueHit, intersect};
+use glam::DVec3;
+use std::ops::{Range, RangeInclusive};
+
+/// For each object, the others whose true surface may pass in front of its own within the
+/// error of its mesh: those whose boxes (grown by their meshes' chord errors) overlap its box.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Neighbours {
+    of: Vec<Vec<u32>>,
+}
+
+impl Neighbours {
+    /// Objects i and j ≠ i are neighbours where `overlap(i, j)`.
+    pub fn new(count: usize, overlap: impl Fn(usize, usize) -> bool) -> Neighbours {
+        let of = (0..count)
+            .map(|i| {
+                let others = (0..count).filter(|&j| j != i && overlap(i, j));
+                others.map(|j| j as u32).collect()
+            })
+            .collect();
+        Neighbours { of }
+    }
+
+    pub fn of(&self, object: usize) -> &[u32] {
+        self.of.get(object).map_or(&[], Vec::as_slice)
+    }
+}
+
+/// The fragments of `run` (all of object `index`, not pending a full cast) whose ray meets a
+/// neighbour's true surface in front of where they are, moved to that neighbour; how many.
+pub(super) fn nearer_neighbours(
+    objects: &[FrameObject],
+    neighbours: &Neighbours,
+    index: u32,
+    rays: &SampleRays,
+    fragments: &mut [Fragment],
+    run: Range<usize>,
+    scratch: &mut ExactScratch,
+) -> usize {
+    let mut count = 0;
+    for &other in neighbours.of(index as usize) {
+        let object = &objects[other as usize];
+        let surface = &object.prepared.surface;
+        let run_fragments = &fragments[run.clone()];
+        match surface {
+            // Its Newton steps find the root near a point, not the first along the ray.
+            Surface::Wave(_) => first_hits_before(object, rays, run_fragments, scratch),
+            _ => true_hits_along(surface, object.origin, rays, run_fragments, scratch),
+        }
+        let hits = scratch.hits.iter().zip(&scratch.found);
+        for (k, (hit, &found)) in run.clone().zip(hits) {
+            let fragment = &mut fragments[k];
+            let nearer = found && hit.depth < fragment.depth && hit.depth >= rays.near;
+            if nearer && !scratch.pending[k] {
+                fragment.object = other;
+                fragment.uv = hit.uv;
+                fragment.depth = hit.depth;
+                scratch.moved[k] = true;
+                count += 1;
+            }
+        }
+    }
+    count
+}
+
+/// The first hit of `object`'s true surface along each fragment's ray between the near plane
+/// and the fragment, into `scratch.hits` and `scratch.found`.
+fn first_hits_before(
+    object: &FrameObject,
+    rays: &SampleRays,
+    run: &[Fragment],
+    scratch: &mut ExactScratch,
+) {
+    let origin = object.eye;
+    scratch.hits.clear();
+    scratch.found.clear();
+    for fragment in run {
+        let direction = rays.through(fragment.x, fragment.y).as_dvec3();
+        let range = rays.near as f64..=fragment.depth as f64;
+        let hit = intersect(&object.prepared.surface, &Ray { origin, direction }, range);
+        scratch.found.push(hit.is_some());
+        scratch
+            .hits
+            .push(hit.map_or(TrueHit::default(), |hit| TrueHit {
+                uv: hit.uv,
+                depth: hit.t as f32,
+            }));
+    }
+}
+
+/// Casts each pending fragment's ray against every object's true surface: it becomes the
+/// nearest hit's, or background (object `objects.len()`, infinite depth). How many became
+/// another object's, and how many background.
+pub(super) fn cast_dropped(
+    objects: &[FrameObject],
+    rays: &SampleRays,
+    fragments: &mut [Fragment],
+    scratch: &mut ExactScratch,
+) -> (usize, usize) {
+    let (mut reassigned, mut background) = (0, 0);
+    let range = rays.near as f64..=rays.far as f64;
+    let each = fragments
+        .iter_mut()
+        .zip(&scratch.pending)
+        .zip(&mut scratch.moved);
+    for ((fragment, &pending), moved) in each {
+        if !pending {
+            continue;
+        }
+        let direction = rays.through(fragment.x, fragment.y).as_dvec3();
+        let eye = |object: &FrameObject| object.eye;
+        match nearest_true_hit(objects, eye, direction, range.clone()) {
+            Some((index, hit)) => {
+                reassigned += usize::from(index as u32 != fragment.object);
+                fragment.object = index as u32;
+                fragment.uv = hit.uv;
+                fragment.depth = hit.t as f32;
+                *moved = true;
+            }
+            None => {
+                fragment.object = objects.len() as u32;
+                fragment.depth = f32::INFINITY;
+                background += 1;
+            }
+        }
+    }
+    (reassigned, background)
+}
+
+/// The nearest true surface along the ray from the eye (`eye(object)`: the eye relative to the
+/// object's anchor) in `direction`, for t in `range`: which object, and the hit. The first
+/// object wins an exact tie, and back faces of a sphere seen from outside are culled, as the
+/// rasterizer culls them.
+pub fn nearest_true_hit(
+    objects: &[FrameObject],
+    eye: impl Fn(&FrameObject) -> DVec3,
+    direction: DVec3,
+    range: RangeInclusive<f64>,
+) -> Option<(usize, Hit)> {
+    let mut nearest: Option<(usize, Hit)> = None;
+    for (index, object) in objects.iter().enumerate() {
+        let surface = &object.prepared.surface;
+        let origin = eye(object);
+        let ray = Ray { origin, direction };
+        let Some(hit) = intersect(surface, &ray, range.clone()) else {
+            continue;
+        };
+        if culled(surface, origin, &hit, direction) {
+            continue;
+        }
+        if nearest.is_none_or(|(_, best)| hit.t < best.t) {
+            nearest = Some((index, hit));
+        }
+    }
+    nearest
+}
+
+fn culled(surface: &Surface, eye: DVec3, hit: &Hit, direction: DVec3) -> bool {
+    let normal = || surface.frame(hit.uv.x, hit.uv.y).n.as_dvec3();
+    surface.encloses_eye_at(eye) == Some(true) && normal().dot(direction) >= 0.0
+}
