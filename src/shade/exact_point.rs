@@ -5,7 +5,7 @@
 
 use super::exact_coverage::{Neighbours, cast_dropped, nearer_neighbours};
 use crate::raster::{Fragment, FrameObject, SampleRays};
-use crate::surface::{Frame, Ray, Surface, TrueHit, intersect, uv_derivatives};
+use crate::surface::{Frame, Surface, TrueHit, uv_derivatives};
 use glam::Vec3;
 
 /// Where a fragment of a curved surface is shaded.
@@ -115,9 +115,6 @@ fn move_run(
 ) -> usize {
     let surface = &object.prepared.surface;
     true_hits_along(surface, object.origin, rays, run, scratch);
-    if let Surface::Wave(_) = surface {
-        first_wave_roots(object, rays, run, scratch);
-    }
     let mut moved = 0;
     for ((fragment, hit), &found) in run.iter_mut().zip(&scratch.hits).zip(&scratch.found) {
         if found {
@@ -127,43 +124,6 @@ fn move_run(
         }
     }
     moved
-}
-
-/// Newton steps from a wave's mesh may settle on the far side of a crest the ray crosses twice:
-/// each hit is replaced by the first root between it and as far before the mesh as the mesh
-/// can lie from the surface along the ray (its chord error over the cosine of the ray's
-/// incidence, from 1/20 up: past that grazing, the steps' root stands).
-fn first_wave_roots(
-    object: &FrameObject,
-    rays: &SampleRays,
-    run: &[Fragment],
-    scratch: &mut ExactScratch,
-) {
-    let surface = &object.prepared.surface;
-    let reach = f64::from(object.prepared.mesh.chord_error);
-    let each = run.iter().zip(scratch.hits.iter_mut()).zip(&scratch.found);
-    for ((fragment, hit), &found) in each {
-        if !found {
-            continue;
-        }
-        let direction = rays.through(fragment.x, fragment.y).as_dvec3();
-        let normal = surface.frame(hit.uv.x, hit.uv.y).n.as_dvec3();
-        let cosine = (normal.dot(direction) / direction.length()).abs().max(0.05);
-        let before = reach / (cosine * direction.length());
-        let from = (f64::from(fragment.depth.min(hit.depth)) - before).max(f64::from(rays.near));
-        let ray = Ray {
-            origin: object.eye,
-            direction,
-        };
-        if let Some(first) = intersect(surface, &ray, from..=f64::from(hit.depth))
-            && (first.t as f32) < hit.depth
-        {
-            *hit = TrueHit {
-                uv: first.uv,
-                depth: first.t as f32,
-            };
-        }
-    }
 }
 
 /// `surface`'s true hits along the rays of `run`'s fragments, near their depths, into
