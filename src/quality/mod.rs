@@ -25,6 +25,7 @@ use crate::shade::{
 use crate::shadow::{ShadowMaps, ShadowSettings};
 use crate::surface::{Tessellation, push_out_to_hull};
 use crate::texture::Filter;
+use glam::DVec3;
 use rayon::prelude::*;
 use std::sync::Arc;
 
@@ -402,7 +403,23 @@ fn neighbours(prepared: &PreparedScene) -> Neighbours {
         (Some(a), Some(b)) => a.intersection(b).is_some(),
         _ => false,
     };
-    Neighbours::new(bounds.len(), overlap)
+    let balls = prepared
+        .objects
+        .iter()
+        .zip(&bounds)
+        .map(|(object, bounds)| {
+            let reach = f64::from(object.mesh.chord_error);
+            match (&object.surface, bounds) {
+                (crate::surface::Surface::Sphere(s), _) => (DVec3::ZERO, s.radius as f64 + reach),
+                (_, Some(b)) => (
+                    b.centre() - object.surface.origin(),
+                    b.min.distance(b.max) / 2.0,
+                ),
+                (_, None) => (DVec3::ZERO, f64::INFINITY),
+            }
+        })
+        .collect();
+    Neighbours::new(bounds.len(), overlap, balls)
 }
 
 fn vertex_normals(prepared: &PreparedScene) -> Arc<[VertexNormals]> {

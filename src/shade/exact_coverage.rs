@@ -16,18 +16,34 @@ use std::ops::{Range, RangeInclusive};
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Neighbours {
     of: Vec<Vec<u32>>,
+    /// Per object, a ball around its true surface (centre relative to its anchor, radius): a
+    /// fragment of another object outside it cannot be passed in front of by this one.
+    balls: Vec<(DVec3, f64)>,
 }
 
 impl Neighbours {
-    /// Objects i and j ≠ i are neighbours where `overlap(i, j)`.
-    pub fn new(count: usize, overlap: impl Fn(usize, usize) -> bool) -> Neighbours {
+    /// Objects i and j ≠ i are neighbours where `overlap(i, j)`; `balls` holds a ball around
+    /// each object's true surface, relative to its anchor.
+    pub fn new(
+        count: usize,
+        overlap: impl Fn(usize, usize) -> bool,
+        balls: Vec<(DVec3, f64)>,
+    ) -> Neighbours {
         let of = (0..count)
             .map(|i| {
                 let others = (0..count).filter(|&j| j != i && overlap(i, j));
                 others.map(|j| j as u32).collect()
             })
             .collect();
-        Neighbours { of }
+        Neighbours { of, balls }
+    }
+
+    /// Whether the point `eye + depth·direction` (with `eye` relative to the object's anchor)
+    /// lies in the object's ball; everywhere for an object without one.
+    fn may_reach(&self, object: usize, eye: DVec3, direction: DVec3, depth: f32) -> bool {
+        self.balls.get(object).is_none_or(|&(centre, radius)| {
+            (eye + direction * f64::from(depth)).distance_squared(centre) <= radius * radius
+        })
     }
 
     pub fn of(&self, object: usize) -> &[u32] {
@@ -50,14 +66,23 @@ pub(super) fn nearer_neighbours(
     for &other in neighbours.of(index as usize) {
         let object = &objects[other as usize];
         let surface = &object.prepared.surface;
-        let run_fragments = &fragments[run.clone()];
+        // Only the fragments within the neighbour's reach are cast against it.
+        let mut candidates = std::mem::take(&mut scratch.candidates);
+        candidates.clear();
+        candidates.extend(run.clone().filter(|&k| {
+            let f = &fragments[k];
+            let direction = rays.through(f.x, f.y).as_dvec3();
+            !scratch.pending[k]
+                && neighbours.may_reach(other as usize, object.eye, direction, f.depth)
+        }));
+        let near: Vec<Fragment> = candidates.iter().map(|&k| fragments[k]).collect();
         match surface {
             // Its Newton steps find the root near a point, not the first along the ray.
-            Surface::Wave(_) => first_hits_before(object, rays, run_fragments, scratch),
-            _ => true_hits_along(surface, object.origin, rays, run_fragments, scratch),
+            Surface::Wave(_) => first_hits_before(object, rays, &near, scratch),
+            _ => true_hits_along(surface, object.origin, rays, &near, scratch),
         }
         let hits = scratch.hits.iter().zip(&scratch.found);
-        for (k, (hit, &found)) in run.clone().zip(hits) {
+        for (&k, (hit, &found)) in candidates.iter().zip(hits) {
             let fragment = &mut fragments[k];
             let nearer = found && hit.depth < fragment.depth && hit.depth >= rays.near;
             if nearer && !scratch.pending[k] {
@@ -68,6 +93,7 @@ pub(super) fn nearer_neighbours(
                 count += 1;
             }
         }
+        scratch.candidates = candidates;
     }
     count
 }

@@ -46,6 +46,8 @@ pub struct ExactScratch {
     /// By fragment: its ray missed its own true surface (cast against every object, with
     /// exact coverage).
     pub(super) pending: Vec<bool>,
+    /// Fragments of a run tested against one neighbour.
+    pub(super) candidates: Vec<usize>,
     frames: Vec<Frame>,
 }
 

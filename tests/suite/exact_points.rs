@@ -345,10 +345,14 @@ fn coverage_mismatches(scene: &Scene, coverage: Coverage) -> (usize, usize) {
     let prepared = quality
         .prepare(scene.clone(), &scene.camera, VIEW, 0)
         .unwrap();
-    let everyone = Neighbours::new(prepared.objects.len(), |_, _| true);
-    let ours = ObjectIds {
-        neighbours: everyone,
+    // The neighbours exact coverage finds for this scene (with the mesh's, it finds none).
+    let exact = Quality {
+        coverage: Coverage::Exact,
+        ..quality
     };
+    let shader = exact.shader(&prepared, &scene.camera, VIEW);
+    let neighbours = shader.exact_coverage.as_deref().unwrap().clone();
+    let ours = ObjectIds { neighbours };
     let target = RenderTarget::new(&scene.camera, VIEW);
     let (frame, _) = render_with(&prepared, &target, &ours);
     let ids = PerFragment(|_: &FrameObject, f: &Fragment| Vec3::splat((f.object + 1) as f32));
