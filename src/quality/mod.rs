@@ -152,7 +152,9 @@ impl Default for Quality {
 }
 
 impl Quality {
-    /// Coarse meshes and nearest texels, for slow machines and huge terminals. It keeps
+    /// Coarse meshes shaded as they are (their outline, their interpolated (u,v)), Blinn's
+    /// normal, filtered shadow edges and nearest texels, for slow machines and huge terminals.
+    /// It keeps
     /// perspective-correct (u,v): affine saves no measurable time and is off by whole pattern
     /// periods on the two-triangle planes (`bumpwork bench` shows both); and the exact frame:
     /// interpolated vertex normals are slower, a point location per fragment against two
@@ -171,8 +173,9 @@ impl Quality {
         }
     }
 
-    /// What the renderer does by default: density 64, one sample, each scene's filter, exact
-    /// frame and derivatives, Blinn's first-order normal, perspective-correct (u,v).
+    /// What the renderer does by default: density 64 meshes settled on the true surfaces (exact
+    /// coverage and surface points), one sample, each scene's filter, exact frame and
+    /// derivatives, the full normal of the bumped surface, exact shadow edges.
     pub fn interactive() -> Quality {
         Quality {
             tessellation: Tessellation::default().density,
@@ -194,23 +197,21 @@ impl Quality {
         }
     }
 
-    /// Density 128, refined where silhouettes would be off by more than half a pixel; 16
-    /// samples, the exact normal of the bumped surface.
+    /// `interactive` with 16 samples, density 128 refined where chords would stray more than
+    /// half a pixel, and twice the shadow map.
     pub fn high() -> Quality {
         Quality {
             tessellation: 128,
             adaptive_tolerance_px: Some(0.5),
             samples: 16,
-            normal_form: NormalForm::Full,
             shadow_map: 2048,
             ..Quality::interactive()
         }
     }
 
-    /// Density 256, refined until silhouettes are within a tenth of a pixel; 64 samples and the
-    /// reference's shading: the closest the rasterizer gets to the ray-cast reference. (The
-    /// (u,v) error inside a silhouette shifts pattern edges; it shrinks with density, not with
-    /// the silhouette tolerance, hence the high base density.)
+    /// Density 256, refined until chords are within a tenth of a pixel; 64 samples and the
+    /// reference's shading (patterns in f64): the closest the rasterizer gets to the ray-cast
+    /// reference.
     pub fn exact() -> Quality {
         Quality {
             tessellation: 256,
@@ -418,6 +419,7 @@ fn neighbours(prepared: &PreparedScene) -> Neighbours {
                 (_, None) => (DVec3::ZERO, f64::INFINITY),
             }
         })
+        .map(|(centre, radius): (DVec3, f64)| (centre.as_vec3(), radius as f32))
         .collect();
     Neighbours::new(bounds.len(), overlap, balls)
 }

@@ -8,7 +8,7 @@
 use super::exact_point::{ExactScratch, true_hits_along};
 use crate::raster::{Fragment, FrameObject, SampleRays};
 use crate::surface::{Hit, Ray, Surface, TrueHit, intersect};
-use glam::DVec3;
+use glam::{DVec3, Vec3};
 use std::ops::{Range, RangeInclusive};
 
 /// For each object, the others whose true surface may pass in front of its own within the
@@ -17,8 +17,9 @@ use std::ops::{Range, RangeInclusive};
 pub struct Neighbours {
     of: Vec<Vec<u32>>,
     /// Per object, a ball around its true surface (centre relative to its anchor, radius): a
-    /// fragment of another object outside it cannot be passed in front of by this one.
-    balls: Vec<(DVec3, f64)>,
+    /// fragment of another object outside it cannot be passed in front of by this one. f32: the
+    /// ball has the chord error as its margin, far above f32 rounding at camera distances.
+    balls: Vec<(Vec3, f32)>,
 }
 
 impl Neighbours {
@@ -27,7 +28,7 @@ impl Neighbours {
     pub fn new(
         count: usize,
         overlap: impl Fn(usize, usize) -> bool,
-        balls: Vec<(DVec3, f64)>,
+        balls: Vec<(Vec3, f32)>,
     ) -> Neighbours {
         let of = (0..count)
             .map(|i| {
@@ -38,11 +39,11 @@ impl Neighbours {
         Neighbours { of, balls }
     }
 
-    /// Whether the point `eye + depth·direction` (with `eye` relative to the object's anchor)
-    /// lies in the object's ball; everywhere for an object without one.
-    fn may_reach(&self, object: usize, eye: DVec3, direction: DVec3, depth: f32) -> bool {
+    /// Whether the camera-relative point `depth·direction` lies in the ball of the object
+    /// whose anchor is at `origin` (camera-relative); everywhere for an object without one.
+    fn may_reach(&self, object: usize, origin: Vec3, direction: Vec3, depth: f32) -> bool {
         self.balls.get(object).is_none_or(|&(centre, radius)| {
-            (eye + direction * f64::from(depth)).distance_squared(centre) <= radius * radius
+            (direction * depth - origin).distance_squared(centre) <= radius * radius
         })
     }
 
@@ -71,16 +72,23 @@ pub(super) fn nearer_neighbours(
         candidates.clear();
         candidates.extend(run.clone().filter(|&k| {
             let f = &fragments[k];
-            let direction = rays.through(f.x, f.y).as_dvec3();
+            let direction = rays.through(f.x, f.y);
             !scratch.pending[k]
-                && neighbours.may_reach(other as usize, object.eye, direction, f.depth)
+                && neighbours.may_reach(other as usize, object.origin, direction, f.depth)
         }));
-        let near: Vec<Fragment> = candidates.iter().map(|&k| fragments[k]).collect();
+        if candidates.is_empty() {
+            scratch.candidates = candidates;
+            continue;
+        }
+        let mut near = std::mem::take(&mut scratch.near);
+        near.clear();
+        near.extend(candidates.iter().map(|&k| fragments[k]));
         match surface {
             // Its Newton steps find the root near a point, not the first along the ray.
             Surface::Wave(_) => first_hits_before(object, rays, &near, scratch),
             _ => true_hits_along(surface, object.origin, rays, &near, scratch),
         }
+        scratch.near = near;
         let hits = scratch.hits.iter().zip(&scratch.found);
         for (&k, (hit, &found)) in candidates.iter().zip(hits) {
             let fragment = &mut fragments[k];

@@ -46,8 +46,9 @@ pub struct ExactScratch {
     /// By fragment: its ray missed its own true surface (cast against every object, with
     /// exact coverage).
     pub(super) pending: Vec<bool>,
-    /// Fragments of a run tested against one neighbour.
+    /// Fragments of a run tested against one neighbour: their indices, and copies.
     pub(super) candidates: Vec<usize>,
+    pub(super) near: Vec<Fragment>,
     frames: Vec<Frame>,
 }
 
@@ -69,14 +70,8 @@ pub fn exact_fragments(
         flags.clear();
         flags.resize(fragments.len(), false);
     }
-    let mut start = 0;
-    while start < fragments.len() {
+    for std::ops::Range { start, end } in same_object_runs(fragments) {
         let index = fragments[start].object;
-        let length = fragments[start..]
-            .iter()
-            .take_while(|f| f.object == index)
-            .count();
-        let end = start + length;
         let object = &objects[index as usize];
         let surface = &object.prepared.surface;
         if !surface.is_flat() {
@@ -93,7 +88,6 @@ pub fn exact_fragments(
                 nearer_neighbours(objects, neighbours, index, rays, fragments, run, scratch);
             count.reassigned += nearer;
         }
-        start = end;
     }
     match coverage {
         Some(_) => {
@@ -167,18 +161,10 @@ fn exact_derivatives(
         rays.per_pixel_y * rays.footprint,
     );
     let frames = &mut scratch.frames;
-    let mut start = 0;
-    while start < fragments.len() {
+    for std::ops::Range { start, end } in same_object_runs(fragments) {
         let index = fragments[start].object;
-        let length = fragments[start..]
-            .iter()
-            .take_while(|f| f.object == index)
-            .count();
-        let (run, moved) = (
-            &mut fragments[start..start + length],
-            &scratch.moved[start..],
-        );
-        start += length;
+        let length = end - start;
+        let (run, moved) = (&mut fragments[start..end], &scratch.moved[start..]);
         let Some(object) = objects.get(index as usize) else {
             continue;
         };
@@ -207,4 +193,20 @@ fn exact_derivatives(
             },
         );
     }
+}
+
+/// The ranges of consecutive fragments of one object (a tile's fragments come in runs of one
+/// triangle), taken before any of them moves.
+fn same_object_runs(fragments: &[Fragment]) -> Vec<std::ops::Range<usize>> {
+    let mut runs = Vec::new();
+    let mut start = 0;
+    while let Some(first) = fragments.get(start) {
+        let length = fragments[start..]
+            .iter()
+            .take_while(|f| f.object == first.object)
+            .count();
+        runs.push(start..start + length);
+        start += length;
+    }
+    runs
 }

@@ -24,16 +24,30 @@ const DIRECTIONAL_REACH: f64 = 1e12;
 pub struct ShadowRays {
     eye: DVec3,
     lights: Vec<Light>,
+    /// Per light, towards it: from the eye for a point light (a point p sees it along this
+    /// minus p), or its direction. f32, for the grazing test only.
+    towards: Vec<Towards>,
     surfaces: Vec<Surface>,
+}
+
+#[derive(Clone, Copy)]
+enum Towards {
+    Point(Vec3),
+    Direction(Vec3),
 }
 
 impl ShadowRays {
     /// `None` where the scene has shadows off or nothing in it can shadow anything.
     pub fn new(prepared: &PreparedScene, camera: &Camera) -> Option<ShadowRays> {
         let scene = &prepared.scene;
+        let towards = scene.lights.iter().map(|light| match *light {
+            Light::Point { position, .. } => Towards::Point((position - camera.eye).as_vec3()),
+            Light::Directional { towards, .. } => Towards::Direction(towards),
+        });
         (scene.shadows && can_shadow(scene)).then(|| ShadowRays {
             eye: camera.eye,
             lights: scene.lights.clone(),
+            towards: towards.collect(),
             surfaces: prepared.objects.iter().map(|o| o.surface.clone()).collect(),
         })
     }
@@ -49,9 +63,9 @@ impl ShadowRays {
     /// Whether light `light` meets the camera-relative point `p`, whose surface's facing normal
     /// is `n`, within `GRAZING` of its tangent plane.
     pub fn grazes(&self, light: usize, p: Vec3, n: Vec3) -> bool {
-        let towards = match self.lights[light] {
-            Light::Point { position, .. } => (position - (self.eye + p.as_dvec3())).as_vec3(),
-            Light::Directional { towards, .. } => towards,
+        let towards = match self.towards[light] {
+            Towards::Point(from_eye) => from_eye - p,
+            Towards::Direction(towards) => towards,
         };
         n.dot(towards).abs() < GRAZING * towards.length()
     }
