@@ -49,13 +49,63 @@ pub fn bumped_normal(
             n + (n.cross(pv) * bu - n.cross(pu) * bv) * orientation
         }
         NormalForm::Full => {
-            let (nu, nv) = normal_derivatives(surface, uv);
-            let pu = frame.pu + n * bu + nu * b;
-            let pv = frame.pv + n * bv + nv * b;
-            pu.cross(pv) * orientation
+            let (nu, nv) = normal_derivatives(surface, uv, frame);
+            full_unnormalised(frame, b, bu, bv, nu, nv)
         }
     };
     normalize_or(bumped, n)
+}
+
+/// The full normal (unnormalised) of P + B·n from B, its gradient and the normal's derivatives.
+#[inline(always)]
+fn full_unnormalised(frame: &Frame, b: f32, bu: f32, bv: f32, nu: Vec3, nv: Vec3) -> Vec3 {
+    let n = frame.n;
+    let pu = frame.pu + n * bu + nu * b;
+    let pv = frame.pv + n * bv + nv * b;
+    pu.cross(pv) * orientation(frame)
+}
+
+/// `bumped_normal`'s full normal for a group, in SIMD lanes, where the normal's derivatives
+/// have a closed form: flat surfaces and spheres (the same bits as one by one). `false`, with
+/// nothing written, for other surfaces.
+pub fn full_normals_in_closed_form(
+    surface: &Surface,
+    frames: &[Frame],
+    heights: &[f32],
+    gradients: &[Vec2],
+    out: &mut [Vec3],
+) -> bool {
+    if !(surface.is_flat() || matches!(surface, Surface::Sphere(_))) {
+        return false;
+    }
+    crate::simd::widest(
+        #[inline(always)]
+        || {
+            let each = frames
+                .iter()
+                .zip(heights)
+                .zip(gradients)
+                .zip(out.iter_mut());
+            for (((frame, &b), gradient), out) in each {
+                let (bu, bv) = (gradient.x, gradient.y);
+                let (nu, nv) = closed_form_normal_derivatives(surface, frame);
+                let bumped = normalize_or(full_unnormalised(frame, b, bu, bv, nu, nv), frame.n);
+                let unbumped = b == 0.0 && bu == 0.0 && bv == 0.0;
+                *out = if unbumped { frame.n } else { bumped };
+            }
+        },
+    );
+    true
+}
+
+/// ∂n/∂u and ∂n/∂v where they have a closed form: zero on flat surfaces; a sphere's normal is
+/// P/r, so Nu = Pu/r and Nv = Pv/r.
+#[inline(always)]
+fn closed_form_normal_derivatives(surface: &Surface, frame: &Frame) -> (Vec3, Vec3) {
+    match surface {
+        Surface::Sphere(sphere) => (frame.pu / sphere.radius, frame.pv / sphere.radius),
+        _ => (Vec3::ZERO, Vec3::ZERO),
+    }
 }
 
 /// +1 where Pu × Pv points along the outward normal, −1 where the parametrisation turns it in.
@@ -196,7 +246,10 @@ impl BumpLanes {
 
 /// ∂n/∂u and ∂n/∂v by central differences (steps of 1e-5 of the domain: f32 keeps ~1e-2
 /// relative accuracy there, plenty for a term that is itself a correction).
-fn normal_derivatives(surface: &Surface, uv: Vec2) -> (Vec3, Vec3) {
+fn normal_derivatives(surface: &Surface, uv: Vec2, frame: &Frame) -> (Vec3, Vec3) {
+    if surface.is_flat() || matches!(surface, Surface::Sphere(_)) {
+        return closed_form_normal_derivatives(surface, frame);
+    }
     let domain = surface.domain();
     let h = ((domain.max - domain.min) * 1e-5).max(Vec2::splat(1e-6));
     let normal_at = |du: f32, dv: f32| surface.frame(uv.x + du, uv.y + dv).n;
@@ -385,6 +438,37 @@ mod tests {
                 n.is_finite() && (n.length() - 1.0).abs() < 1e-4,
                 "{form:?}: {n:?}"
             );
+        }
+    }
+
+    #[test]
+    fn batched_full_normals_are_the_one_by_one_bits_on_planes_and_spheres() {
+        let sphere = Surface::Sphere(Sphere {
+            center: DVec3::ZERO,
+            radius: 280.0,
+        });
+        for surface in [plane(), sphere] {
+            let uvs: Vec<Vec2> = (0..100)
+                .map(|i| Vec2::new(i as f32 * 7.1, 5.0 + i as f32 * 3.3))
+                .collect();
+            let frames: Vec<Frame> = uvs.iter().map(|uv| surface.frame(uv.x, uv.y)).collect();
+            let heights: Vec<f32> = (0..100).map(|i| (i % 7) as f32 * 0.6 - 1.0).collect();
+            let gradients: Vec<Vec2> = (0..100)
+                .map(|i| Vec2::new((i % 5) as f32 * 0.3 - 0.6, (i % 3) as f32 * -0.2))
+                .collect();
+            let mut batch = vec![Vec3::ZERO; 100];
+            assert!(full_normals_in_closed_form(
+                &surface, &frames, &heights, &gradients, &mut batch
+            ));
+            for k in 0..100 {
+                let (b, g) = (heights[k], gradients[k]);
+                let one =
+                    bumped_normal(&surface, uvs[k], &frames[k], b, g.x, g.y, NormalForm::Full);
+                assert_eq!(
+                    batch[k].to_array().map(f32::to_bits),
+                    one.to_array().map(f32::to_bits)
+                );
+            }
         }
     }
 }

@@ -2,7 +2,9 @@
 //! frame, the texture or material colour, the bumped normal, then lighting (or a view mode).
 //! Work the scene does not need is skipped: no texture, no sampling; no bump, no perturbation.
 
-use super::bump::{NormalForm, blinn_normals, blinn_normals_on_flat, bumped_normal};
+use super::bump::{
+    NormalForm, blinn_normals, blinn_normals_on_flat, bumped_normal, full_normals_in_closed_form,
+};
 use super::exact_coverage::Neighbours;
 use super::exact_point::{ExactScratch, SurfacePointSource, exact_fragments};
 use super::gradient::{GradientMethod, central_difference, shifted_fragments};
@@ -336,20 +338,28 @@ impl LitShader {
         let (points, normals) = (&mut scratch.points, &mut scratch.normals);
         points.resize(group.len(), Vec3::ZERO);
         normals.resize(group.len(), Vec3::ZERO);
-        let blinn = bumped && self.normal_form == NormalForm::Blinn;
         let (frames, heights, gradients) = (&scratch.frames, &scratch.heights, &scratch.gradients);
-        match frames.first() {
-            Some(frame) if blinn && self.frame_is_constant(surface) => {
-                blinn_normals_on_flat(frame, heights, gradients, normals)
+        let full = bumped && self.normal_form == NormalForm::Full;
+        // Normals worked out as a batch (or `false`: one by one below).
+        let batched = match frames.first() {
+            _ if !bumped => false,
+            Some(frame)
+                if self.normal_form == NormalForm::Blinn && self.frame_is_constant(surface) =>
+            {
+                blinn_normals_on_flat(frame, heights, gradients, normals);
+                true
             }
-            _ if blinn => blinn_normals(frames, heights, gradients, normals),
-            _ => {}
-        }
+            _ if self.normal_form == NormalForm::Blinn => {
+                blinn_normals(frames, heights, gradients, normals);
+                true
+            }
+            _ => full && full_normals_in_closed_form(surface, frames, heights, gradients, normals),
+        };
         let frames = group.iter().zip(&scratch.frames);
         let outputs = points.iter_mut().zip(normals);
         for (k, ((&i, frame), (point, normal))) in frames.zip(outputs).enumerate() {
             let p = object.origin + frame.p;
-            let n = if blinn {
+            let n = if batched {
                 *normal
             } else if bumped {
                 let (b, gradient) = (scratch.heights[k], scratch.gradients[k]);
