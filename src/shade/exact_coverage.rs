@@ -76,24 +76,16 @@ pub(super) fn nearer_neighbours(
             !scratch.pending[k]
                 && neighbours.may_reach(other as usize, object.origin, direction, f.depth)
         }));
-        if candidates.is_empty() {
-            scratch.candidates = candidates;
-            continue;
-        }
-        let mut near = std::mem::take(&mut scratch.near);
-        near.clear();
-        near.extend(candidates.iter().map(|&k| fragments[k]));
+        let near = candidates.iter().map(|&k| &fragments[k]);
         match surface {
             // Its Newton steps find the root near a point, not the first along the ray.
-            Surface::Wave(_) => first_hits_before(object, rays, &near, scratch),
-            _ => true_hits_along(surface, object.origin, rays, &near, scratch),
+            Surface::Wave(_) => first_hits_before(object, rays, near, scratch),
+            _ => true_hits_along(surface, object.origin, rays, near, scratch),
         }
-        scratch.near = near;
         let hits = scratch.hits.iter().zip(&scratch.found);
         for (&k, (hit, &found)) in candidates.iter().zip(hits) {
             let fragment = &mut fragments[k];
-            let nearer = found && hit.depth < fragment.depth && hit.depth >= rays.near;
-            if nearer && !scratch.pending[k] {
+            if found && hit.depth < fragment.depth && hit.depth >= rays.near {
                 fragment.object = other;
                 fragment.uv = hit.uv;
                 fragment.depth = hit.depth;
@@ -108,10 +100,10 @@ pub(super) fn nearer_neighbours(
 
 /// The first hit of `object`'s true surface along each fragment's ray between the near plane
 /// and the fragment, into `scratch.hits` and `scratch.found`.
-fn first_hits_before(
+fn first_hits_before<'f>(
     object: &FrameObject,
     rays: &SampleRays,
-    run: &[Fragment],
+    run: impl Iterator<Item = &'f Fragment>,
     scratch: &mut ExactScratch,
 ) {
     let origin = object.eye;

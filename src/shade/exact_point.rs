@@ -46,9 +46,8 @@ pub struct ExactScratch {
     /// By fragment: its ray missed its own true surface (cast against every object, with
     /// exact coverage).
     pub(super) pending: Vec<bool>,
-    /// Fragments of a run tested against one neighbour: their indices, and copies.
+    /// Fragments of a run tested against one neighbour.
     pub(super) candidates: Vec<usize>,
-    pub(super) near: Vec<Fragment>,
     frames: Vec<Frame>,
 }
 
@@ -110,7 +109,7 @@ fn move_run(
     scratch: &mut ExactScratch,
 ) -> usize {
     let surface = &object.prepared.surface;
-    true_hits_along(surface, object.origin, rays, run, scratch);
+    true_hits_along(surface, object.origin, rays, run.iter(), scratch);
     let mut moved = 0;
     for ((fragment, hit), &found) in run.iter_mut().zip(&scratch.hits).zip(&scratch.found) {
         if found {
@@ -124,13 +123,14 @@ fn move_run(
 
 /// `surface`'s true hits along the rays of `run`'s fragments, near their depths, into
 /// `scratch.hits` and `scratch.found`.
-pub(super) fn true_hits_along(
+pub(super) fn true_hits_along<'f>(
     surface: &Surface,
     origin: Vec3,
     rays: &SampleRays,
-    run: &[Fragment],
+    run: impl ExactSizeIterator<Item = &'f Fragment> + Clone,
     scratch: &mut ExactScratch,
 ) {
+    let count = run.len();
     let ExactScratch {
         depths,
         directions,
@@ -139,11 +139,11 @@ pub(super) fn true_hits_along(
         ..
     } = scratch;
     directions.clear();
-    directions.extend(run.iter().map(|f| rays.through(f.x, f.y)));
+    directions.extend(run.clone().map(|f| rays.through(f.x, f.y)));
     depths.clear();
-    depths.extend(run.iter().map(|f| f.depth));
-    hits.resize(run.len(), TrueHit::default());
-    found.resize(run.len(), false);
+    depths.extend(run.map(|f| f.depth));
+    hits.resize(count, TrueHit::default());
+    found.resize(count, false);
     surface.true_hits(-origin, directions, depths, hits, found);
 }
 
@@ -163,12 +163,11 @@ fn exact_derivatives(
     let frames = &mut scratch.frames;
     for std::ops::Range { start, end } in same_object_runs(fragments) {
         let index = fragments[start].object;
-        let length = end - start;
-        let (run, moved) = (&mut fragments[start..end], &scratch.moved[start..]);
+        let (run, moved) = (&mut fragments[start..end], &scratch.moved[start..end]);
         let Some(object) = objects.get(index as usize) else {
             continue;
         };
-        if !derivatives(object) || !moved[..length].contains(&true) {
+        if !derivatives(object) || !moved.contains(&true) {
             continue;
         }
         let surface = &object.prepared.surface;

@@ -339,7 +339,6 @@ impl LitShader {
         points.resize(group.len(), Vec3::ZERO);
         normals.resize(group.len(), Vec3::ZERO);
         let (frames, heights, gradients) = (&scratch.frames, &scratch.heights, &scratch.gradients);
-        let full = bumped && self.normal_form == NormalForm::Full;
         // Normals worked out as a batch (or `false`: one by one below).
         let batched = match frames.first() {
             _ if !bumped => false,
@@ -353,7 +352,10 @@ impl LitShader {
                 blinn_normals(frames, heights, gradients, normals);
                 true
             }
-            _ => full && full_normals_in_closed_form(surface, frames, heights, gradients, normals),
+            _ if self.normal_form == NormalForm::Full => {
+                full_normals_in_closed_form(surface, frames, heights, gradients, normals)
+            }
+            _ => false,
         };
         let frames = group.iter().zip(&scratch.frames);
         let outputs = points.iter_mut().zip(normals);

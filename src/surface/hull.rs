@@ -25,21 +25,17 @@ pub fn push_out_to_hull(surface: &Surface, mesh: &mut Mesh) {
             Surface::Sphere(_) => frame.n,
             // At the apex every vertex moves back along the axis: the offset cone's apex.
             Surface::Cone(cone) if uv.y == 0.0 => -cone.basis.axis / cone.half_angle.sin(),
-            Surface::Cone(_) => frame.n + along_past_rim(frame.pv, uv.y == rim),
+            Surface::Cone(_) => frame.n + past_edge(frame.pv, false, uv.y == rim),
             // The normal points into the bowl, its concave side.
-            Surface::Paraboloid(_) => -frame.n + along_past_rim(frame.pv, uv.y == rim),
+            Surface::Paraboloid(_) => -frame.n + past_edge(frame.pv, false, uv.y == rim),
             // Crests bulge up, troughs down: out along the curvature's sign; and past the
             // sheet's edges, whose profile curves as the crests do.
             Surface::Wave(wave) => {
                 let phase = std::f32::consts::TAU * uv.x / wave.wavelength;
                 let bulge = frame.n * (phase.sin() * wave.amplitude.signum());
-                let (pu, pv) = (frame.pu.normalize_or_zero(), frame.pv.normalize_or_zero());
-                let edge = |at_min: bool, at_max: bool, along: Vec3| {
-                    along * (f32::from(u8::from(at_max)) - f32::from(u8::from(at_min)))
-                };
                 bulge
-                    + edge(uv.x == 0.0, uv.x == wave.size.x, pu)
-                    + edge(uv.y == 0.0, uv.y == wave.size.y, pv)
+                    + past_edge(frame.pu, uv.x == 0.0, uv.x == wave.size.x)
+                    + past_edge(frame.pv, uv.y == 0.0, uv.y == wave.size.y)
             }
             Surface::Plane(_) | Surface::Triangle(_) => Vec3::ZERO,
         };
@@ -48,10 +44,14 @@ pub fn push_out_to_hull(surface: &Surface, mesh: &mut Mesh) {
     mesh.chord_error += push;
 }
 
-/// Outwards along the surface, past its boundary circle, for a vertex on it.
-fn along_past_rim(pv: Vec3, on_rim: bool) -> Vec3 {
-    if on_rim {
-        pv.normalize_or_zero()
+/// Outwards along the surface past its boundary, for a vertex at the least (`at_min`) or the
+/// greatest (`at_max`) value of the parameter whose tangent is `along`.
+fn past_edge(along: Vec3, at_min: bool, at_max: bool) -> Vec3 {
+    let along = along.normalize_or_zero();
+    if at_max {
+        along
+    } else if at_min {
+        -along
     } else {
         Vec3::ZERO
     }
