@@ -80,7 +80,7 @@ pub(super) fn nearer_neighbours(
         match surface {
             // Its Newton steps find the root near a point, not the first along the ray.
             Surface::Wave(_) => first_hits_before(object, rays, near, scratch),
-            _ => true_hits_along(surface, object.origin, rays, near, scratch),
+            _ => true_hits_along(surface, object.eye, rays, near, scratch),
         }
         let hits = scratch.hits.iter().zip(&scratch.found);
         for (&k, (hit, &found)) in candidates.iter().zip(hits) {
@@ -110,7 +110,7 @@ fn first_hits_before<'f>(
     scratch.hits.clear();
     scratch.found.clear();
     for fragment in run {
-        let direction = rays.through(fragment.x, fragment.y).as_dvec3();
+        let direction = rays.exact_through(fragment.x, fragment.y);
         let range = rays.near as f64..=fragment.depth as f64;
         let hit = intersect(&object.prepared.surface, &Ray { origin, direction }, range);
         scratch.found.push(hit.is_some());
@@ -142,7 +142,7 @@ pub(super) fn cast_dropped(
         if !pending {
             continue;
         }
-        let direction = rays.through(fragment.x, fragment.y).as_dvec3();
+        let direction = rays.exact_through(fragment.x, fragment.y);
         let eye = |object: &FrameObject| object.eye;
         match nearest_true_hit(objects, eye, direction, range.clone()) {
             Some((index, hit)) => {

@@ -6,7 +6,7 @@
 use super::exact_coverage::{Neighbours, cast_dropped, nearer_neighbours};
 use crate::raster::{Fragment, FrameObject, SampleRays};
 use crate::surface::{Frame, Surface, TrueHit, uv_derivatives};
-use glam::Vec3;
+use glam::DVec3;
 
 /// Where a fragment of a curved surface is shaded.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
@@ -38,7 +38,7 @@ pub struct ExactPoints {
 #[derive(Default)]
 pub struct ExactScratch {
     pub(super) depths: Vec<f32>,
-    pub(super) directions: Vec<Vec3>,
+    pub(super) directions: Vec<DVec3>,
     pub(super) hits: Vec<TrueHit>,
     pub(super) found: Vec<bool>,
     /// By fragment of the batch: whether it moved (its derivatives are then recomputed).
@@ -109,7 +109,7 @@ fn move_run(
     scratch: &mut ExactScratch,
 ) -> usize {
     let surface = &object.prepared.surface;
-    true_hits_along(surface, object.origin, rays, run.iter(), scratch);
+    true_hits_along(surface, object.eye, rays, run.iter(), scratch);
     let mut moved = 0;
     for ((fragment, hit), &found) in run.iter_mut().zip(&scratch.hits).zip(&scratch.found) {
         if found {
@@ -125,7 +125,7 @@ fn move_run(
 /// `scratch.hits` and `scratch.found`.
 pub(super) fn true_hits_along<'f>(
     surface: &Surface,
-    origin: Vec3,
+    eye: DVec3,
     rays: &SampleRays,
     run: impl ExactSizeIterator<Item = &'f Fragment> + Clone,
     scratch: &mut ExactScratch,
@@ -139,12 +139,12 @@ pub(super) fn true_hits_along<'f>(
         ..
     } = scratch;
     directions.clear();
-    directions.extend(run.clone().map(|f| rays.through(f.x, f.y)));
+    directions.extend(run.clone().map(|f| rays.exact_through(f.x, f.y)));
     depths.clear();
     depths.extend(run.map(|f| f.depth));
     hits.resize(count, TrueHit::default());
     found.resize(count, false);
-    surface.true_hits(-origin, directions, depths, hits, found);
+    surface.true_hits(eye, directions, depths, hits, found);
 }
 
 /// The (u,v) derivatives of each moved fragment from ray differentials at its (u,v), which are

@@ -4,9 +4,9 @@
 //! error away along the same ray. The quadrics (sphere, cone, paraboloid) are solved in closed
 //! form around the chord point, the wave by safeguarded Newton steps from it.
 //!
-//! Numerics: the quadratics are formed and solved in f64 around the chord point, so their
-//! constant term (how far the chord point is from the surface) keeps its digits when the
-//! surface is large; the angles of the (u,v) are f32 (`atan2`, within 3e-7 rad).
+//! Numerics: the rays are f64 and the quadratics are formed and solved in f64 around the chord
+//! point, so their constant term (how far the chord point is from the surface) keeps its digits
+//! when the surface is large; the angles of the (u,v) are f32 (`atan2`, within 3e-7 rad).
 
 use super::angles::atan2;
 use super::ray_hits::{Ray, intersect};
@@ -36,7 +36,7 @@ impl Surface {
     /// the eye for the quadrics and flat surfaces (as the reference sees it), the hit the Newton
     /// steps reach from the tessellation's point for the wave. `None` where the ray misses the
     /// true surface, and where the wave's steps do not settle.
-    pub fn true_hit(&self, eye: Vec3, direction: Vec3, depth: f32) -> Option<TrueHit> {
+    pub fn true_hit(&self, eye: DVec3, direction: DVec3, depth: f32) -> Option<TrueHit> {
         let (mut hit, mut found) = ([TrueHit::default()], [false]);
         self.true_hits(eye, &[direction], &[depth], &mut hit, &mut found);
         found[0].then_some(hit[0])
@@ -45,8 +45,8 @@ impl Surface {
     /// `true_hit` of each (direction, depth) pair from one eye, into `hits` where `found` is set.
     pub fn true_hits(
         &self,
-        eye: Vec3,
-        directions: &[Vec3],
+        eye: DVec3,
+        directions: &[DVec3],
         depths: &[f32],
         hits: &mut [TrueHit],
         found: &mut [bool],
@@ -62,8 +62,8 @@ impl Surface {
             Surface::Plane(_) | Surface::Triangle(_) => {
                 for k in 0..n {
                     let ray = Ray {
-                        origin: eye.as_dvec3(),
-                        direction: directions[k].as_dvec3(),
+                        origin: eye,
+                        direction: directions[k],
                     };
                     let hit = intersect(self, &ray, f64::MIN_POSITIVE..=f64::INFINITY);
                     found[k] = hit.is_some();
@@ -94,23 +94,23 @@ impl Surface {
 /// Rays from one eye, each with the parameter where it meets the tessellation.
 #[derive(Clone, Copy)]
 struct Rays<'a> {
-    eye: Vec3,
-    directions: &'a [Vec3],
+    eye: DVec3,
+    directions: &'a [DVec3],
     depths: &'a [f32],
 }
 
 impl Rays<'_> {
     /// Where ray `k` meets the tessellation.
     #[inline(always)]
-    fn chord(&self, k: usize) -> Vec3 {
-        self.eye + self.directions[k] * self.depths[k]
+    fn chord(&self, k: usize) -> DVec3 {
+        self.eye + self.directions[k] * self.depths[k] as f64
     }
 }
 
 /// A surface that is a quadratic along any ray: its coordinates, the quadratic's coefficients,
 /// which points of the quadric are the surface, and the (u,v) of a point on it.
 trait Quadric {
-    fn local(&self, v: Vec3) -> DVec3;
+    fn local(&self, v: DVec3) -> DVec3;
     fn coefficients(&self, q: DVec3, d: DVec3) -> [f64; 3];
     fn contains(&self, _p: DVec3) -> bool {
         true
@@ -122,8 +122,8 @@ struct SphereQuadric<'a>(&'a Sphere);
 
 impl Quadric for SphereQuadric<'_> {
     #[inline(always)]
-    fn local(&self, v: Vec3) -> DVec3 {
-        v.as_dvec3()
+    fn local(&self, v: DVec3) -> DVec3 {
+        v
     }
 
     /// |q + s·d|² = r². Products of f32 values are exact in f64, so |q|² − r² keeps the chord
@@ -146,7 +146,7 @@ struct ParaboloidQuadric<'a>(&'a Paraboloid);
 
 impl Quadric for ParaboloidQuadric<'_> {
     #[inline(always)]
-    fn local(&self, v: Vec3) -> DVec3 {
+    fn local(&self, v: DVec3) -> DVec3 {
         local(&self.0.basis, v)
     }
 
@@ -188,7 +188,7 @@ impl ConeQuadric<'_> {
 
 impl Quadric for ConeQuadric<'_> {
     #[inline(always)]
-    fn local(&self, v: Vec3) -> DVec3 {
+    fn local(&self, v: DVec3) -> DVec3 {
         local(&self.cone.basis, v)
     }
 
@@ -232,7 +232,7 @@ fn quadric_hits<Q: Quadric>(quadric: &Q, rays: Rays, hits: &mut [TrueHit], found
 fn quadric_chunk<Q: Quadric>(
     quadric: &Q,
     eye: DVec3,
-    directions: &[Vec3],
+    directions: &[DVec3],
     depths: &[f32],
     hits: &mut [TrueHit],
     found: &mut [bool],
@@ -282,8 +282,7 @@ fn ordered_roots(a: f64, b: f64, c: f64) -> (f64, f64, bool) {
 
 /// The chord point or direction along (e1, axis, e2).
 #[inline(always)]
-fn local(basis: &AxisBasis, v: Vec3) -> DVec3 {
-    let v = v.as_dvec3();
+fn local(basis: &AxisBasis, v: DVec3) -> DVec3 {
     DVec3::new(
         v.dot(basis.e1.as_dvec3()),
         v.dot(basis.axis.as_dvec3()),
@@ -305,8 +304,7 @@ fn azimuth_u(x: f32, z: f32) -> f32 {
 /// over a crest to a farther sheet of the surface; steps that have not settled by
 /// `WAVE_NEWTON_STEPS` give `None`, and the fragment keeps its tessellated (u,v); so does a hit
 /// past the sheet's edges.
-fn wave_hit(wave: &Wave, chord: Vec3, direction: Vec3) -> Option<(Vec2, f64)> {
-    let (q, d) = (chord.as_dvec3(), direction.as_dvec3());
+fn wave_hit(wave: &Wave, q: DVec3, d: DVec3) -> Option<(Vec2, f64)> {
     let amplitude = wave.amplitude as f64;
     let k = (TAU / wave.wavelength) as f64;
     let f = |s: f64| q.y + s * d.y - amplitude * (k * (q.x + s * d.x)).sin();
@@ -318,6 +316,13 @@ fn wave_hit(wave: &Wave, chord: Vec3, direction: Vec3) -> Option<(Vec2, f64)> {
     for _ in 0..WAVE_NEWTON_STEPS {
         let value = f(s);
         if value.abs() <= tolerance {
+            // One more step: within the tolerance Newton converges quadratically, so this puts
+            // the hit at the root to f64 rounding rather than anywhere within the tolerance,
+            // and the (u,v) no longer depends on where along the ray the steps began.
+            let polish = -value / df(s);
+            if polish.is_finite() {
+                s += polish;
+            }
             let p = q + d * s;
             let uv = Vec2::new(p.x as f32, -p.z as f32);
             let inside = uv.cmpge(Vec2::ZERO).all() && uv.cmple(wave.size).all();
