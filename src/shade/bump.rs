@@ -48,6 +48,9 @@ pub fn bumped_normal(
             let pv = normalize_or(frame.pv, Vec3::ZERO);
             n + (n.cross(pv) * bu - n.cross(pu) * bv) * orientation
         }
+        // On a flat surface n does not vary, so the full normal's B·nu and B·nv terms vanish
+        // and what is left is Blinn's, exactly.
+        NormalForm::Full if surface.is_flat() => BlinnTilt::of(frame).unnormalised(bu, bv),
         NormalForm::Full => {
             let (nu, nv) = normal_derivatives(surface, uv, frame);
             full_unnormalised(frame, b, bu, bv, nu, nv)
@@ -66,8 +69,8 @@ fn full_unnormalised(frame: &Frame, b: f32, bu: f32, bv: f32, nu: Vec3, nv: Vec3
 }
 
 /// `bumped_normal`'s full normal for a group, in SIMD lanes, where the normal's derivatives
-/// have a closed form: flat surfaces and spheres (the same bits as one by one). `false`, with
-/// nothing written, for other surfaces.
+/// have a closed form: flat surfaces (where it is Blinn's) and spheres (the same bits as one by
+/// one). `false`, with nothing written, for other surfaces.
 pub fn full_normals_in_closed_form(
     surface: &Surface,
     frames: &[Frame],
@@ -75,7 +78,11 @@ pub fn full_normals_in_closed_form(
     gradients: &[Vec2],
     out: &mut [Vec3],
 ) -> bool {
-    if !(surface.is_flat() || matches!(surface, Surface::Sphere(_))) {
+    if surface.is_flat() {
+        blinn_normals(frames, heights, gradients, out);
+        return true;
+    }
+    if !matches!(surface, Surface::Sphere(_)) {
         return false;
     }
     crate::simd::widest(
@@ -438,6 +445,25 @@ mod tests {
                 n.is_finite() && (n.length() - 1.0).abs() < 1e-4,
                 "{form:?}: {n:?}"
             );
+        }
+    }
+
+    #[test]
+    fn on_a_flat_surface_the_full_normal_is_the_bumped_surfaces_cross_product() {
+        let surface = plane();
+        let frame = surface.frame(40.0, 70.0);
+        for (b, bu, bv) in [(0.5, 0.3, -0.2), (-3.0, 2.0, 5.0), (10.0, -40.0, 0.1)] {
+            let full = bumped_normal(
+                &surface,
+                Vec2::new(40.0, 70.0),
+                &frame,
+                b,
+                bu,
+                bv,
+                NormalForm::Full,
+            );
+            let exact = full_unnormalised(&frame, b, bu, bv, Vec3::ZERO, Vec3::ZERO).normalize();
+            assert!((full - exact).length() < 1e-6, "{full} vs {exact}");
         }
     }
 

@@ -342,8 +342,10 @@ impl LitShader {
         // Normals worked out as a batch (or `false`: one by one below).
         let batched = match frames.first() {
             _ if !bumped => false,
+            // On a flat surface the full normal is Blinn's (see `bumped_normal`).
             Some(frame)
-                if self.normal_form == NormalForm::Blinn && self.frame_is_constant(surface) =>
+                if matches!(self.normal_form, NormalForm::Blinn | NormalForm::Full)
+                    && self.frame_is_constant(surface) =>
             {
                 blinn_normals_on_flat(frame, heights, gradients, normals);
                 true
