@@ -15,7 +15,7 @@ use glam::{DVec3, Vec3};
 const START_OFF_SURFACE: f64 = 1e-4;
 /// The cosine below which light grazes a surface (about 6°): there a receiver's depth and the
 /// map's depth of the same surface differ by less than the map's own spread of depth in a texel.
-const GRAZING: f32 = 0.1;
+pub(super) const GRAZING: f32 = 0.1;
 /// How far a shadow ray towards a directional light looks: past any scene (finite, as the
 /// intersections clip to boxes).
 const DIRECTIONAL_REACH: f64 = 1e12;
@@ -24,31 +24,33 @@ const DIRECTIONAL_REACH: f64 = 1e12;
 pub struct ShadowRays {
     eye: DVec3,
     lights: Vec<Light>,
-    /// Per light, towards it: from the eye for a point light (a point p sees it along this
-    /// minus p), or its direction. f32, for the grazing test only.
-    towards: Vec<Towards>,
     surfaces: Vec<Surface>,
-}
-
-#[derive(Clone, Copy)]
-enum Towards {
-    Point(Vec3),
-    Direction(Vec3),
+    /// Per light, the surfaces (by index) a ray towards it is tested against.
+    casting: Vec<Vec<usize>>,
 }
 
 impl ShadowRays {
-    /// `None` where the scene has shadows off or nothing in it can shadow anything.
+    /// Rays tested against every surface: the reference's. `None` where the scene has shadows
+    /// off or nothing in it can shadow anything.
     pub fn new(prepared: &PreparedScene, camera: &Camera) -> Option<ShadowRays> {
+        let every = (0..prepared.objects.len()).collect::<Vec<_>>();
+        let casting = vec![every; prepared.scene.lights.len()];
+        ShadowRays::against(prepared, camera, casting)
+    }
+
+    /// Rays towards each light tested only against `casting[light]`: the objects that can
+    /// cast a shadow from it onto anything (`casters`).
+    pub fn against(
+        prepared: &PreparedScene,
+        camera: &Camera,
+        casting: Vec<Vec<usize>>,
+    ) -> Option<ShadowRays> {
         let scene = &prepared.scene;
-        let towards = scene.lights.iter().map(|light| match *light {
-            Light::Point { position, .. } => Towards::Point((position - camera.eye).as_vec3()),
-            Light::Directional { towards, .. } => Towards::Direction(towards),
-        });
         (scene.shadows && can_shadow(scene)).then(|| ShadowRays {
             eye: camera.eye,
             lights: scene.lights.clone(),
-            towards: towards.collect(),
             surfaces: prepared.objects.iter().map(|o| o.surface.clone()).collect(),
+            casting,
         })
     }
 
@@ -57,22 +59,12 @@ impl ShadowRays {
     pub fn blocked_at(&self, light: usize, p: Vec3, n: Vec3) -> bool {
         let lift = START_OFF_SURFACE * (1.0 + f64::from(p.length()));
         let from = self.eye + p.as_dvec3() + n.as_dvec3() * lift;
-        self.blocked(&self.lights[light], from)
+        self.blocked(light, from)
     }
 
-    /// Whether light `light` meets the camera-relative point `p`, whose surface's facing normal
-    /// is `n`, within `GRAZING` of its tangent plane.
-    pub fn grazes(&self, light: usize, p: Vec3, n: Vec3) -> bool {
-        let towards = match self.towards[light] {
-            Towards::Point(from_eye) => from_eye - p,
-            Towards::Direction(towards) => towards,
-        };
-        n.dot(towards).abs() < GRAZING * towards.length()
-    }
-
-    /// Whether anything lies between the world point `from` and the light.
-    fn blocked(&self, light: &Light, from: DVec3) -> bool {
-        let (direction, distance) = match *light {
+    /// Whether anything lies between the world point `from` and light `light`.
+    fn blocked(&self, light: usize, from: DVec3) -> bool {
+        let (direction, distance) = match self.lights[light] {
             Light::Point { position, .. } => {
                 let to = position - from;
                 (to.normalize(), to.length())
@@ -85,7 +77,8 @@ impl ShadowRays {
         if !direction.is_finite() {
             return false;
         }
-        self.surfaces.iter().any(|surface| {
+        self.casting[light].iter().any(|&index| {
+            let surface = &self.surfaces[index];
             let ray = Ray {
                 origin: from - surface.origin(),
                 direction,

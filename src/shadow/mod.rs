@@ -19,6 +19,7 @@ mod light_views;
 pub use bounds::{Bounds, object_bounds, seen_bounds, union_of};
 pub use cache::ShadowCache;
 pub use casting::{can_shadow, casters};
+use exact_rays::GRAZING;
 pub use exact_rays::ShadowRays;
 pub use filter::DepthFilter;
 
@@ -123,12 +124,12 @@ impl ShadowMaps {
             .map(|o| 2.0 * o.mesh.chord_error)
             .collect();
         let largest_lift = lifts.iter().copied().fold(0.0, f32::max);
-        let lights = scene
-            .lights
-            .par_iter()
-            .map(|light| {
-                let casters = casters(prepared, &boxes, light);
-                let region = shadowing_region(light, &seen?, &whole, &casters, &boxes)?;
+        let casting: Vec<Vec<usize>> = (scene.lights.iter())
+            .map(|light| casters(prepared, &boxes, light))
+            .collect();
+        let lights = (scene.lights.par_iter().zip(&casting))
+            .map(|(light, casters)| {
+                let region = shadowing_region(light, &seen?, &whole, casters, &boxes)?;
                 let views = match *light {
                     Light::Directional { towards, .. } => {
                         vec![directional_view(towards, &region, settings.map_size)]
@@ -143,8 +144,8 @@ impl ShadowMaps {
                 let texels = filter.reach() + 2.0 + offset_texels;
                 let margin = texels * widest + 2.0 * largest_lift;
                 let spheres =
-                    CasterSpheres::new(prepared, &casters, &boxes, light, camera.eye, margin);
-                Some(LightMaps::draw(prepared, camera, &casters, views, spheres))
+                    CasterSpheres::new(prepared, casters, &boxes, light, camera.eye, margin);
+                Some(LightMaps::draw(prepared, camera, casters, views, spheres))
             })
             .collect();
         Some(ShadowMaps {
@@ -159,7 +160,7 @@ impl ShadowMaps {
             offset_texels,
             edges: settings
                 .exact_edges
-                .then(|| ShadowRays::new(prepared, camera))
+                .then(|| ShadowRays::against(prepared, camera, casting))
                 .flatten(),
         })
     }
@@ -267,19 +268,33 @@ struct Receiver {
 
 impl ShadowFace {
     /// The fraction of the light reaching camera-relative point `p` with facing geometric
-    /// normal `n` on `receiver`.
-    fn reach(&self, p: Vec3, n: Vec3, maps: &ShadowMaps, receiver: Receiver) -> f32 {
+    /// normal `n` on `receiver`, and whether the light grazes the surface there.
+    fn reach(&self, p: Vec3, n: Vec3, maps: &ShadowMaps, receiver: Receiver) -> MapAnswer {
         let relative = p + self.from_camera;
         if self.view.clearly_misses(relative) {
             // No caster the map holds lies between this point and the light.
-            return 1.0;
+            return MapAnswer::LIT;
         }
         let facing = n.dot(self.towards_light(relative));
+        let grazing = facing.abs() < GRAZING;
         if facing.is_nan() || facing <= 0.0 {
             // The light is behind the side of the surface that is seen: the surface itself
             // blocks it (exactly, with no map needed, so no band of light past the terminator).
-            return 0.0;
+            return MapAnswer { lit: 0.0, grazing };
         }
+        let lit = self.lit_fraction(relative, n, maps, receiver, facing);
+        MapAnswer { lit, grazing }
+    }
+
+    /// `reach`'s fraction where the surface faces the light (`facing`, the cosine, positive).
+    fn lit_fraction(
+        &self,
+        relative: Vec3,
+        n: Vec3,
+        maps: &ShadowMaps,
+        receiver: Receiver,
+        facing: f32,
+    ) -> f32 {
         let texel = self.view.texel(self.view.view.forward.dot(relative));
         let lifted = relative + n * (maps.offset_texels * texel + receiver.lift);
         let Some((x, y)) = self.texel_position(lifted) else {
@@ -372,6 +387,22 @@ impl ShadowFace {
     }
 }
 
+/// What a map says of a point: the fraction of the light reaching it, and whether the light
+/// grazes its surface (its cosine below `GRAZING`).
+#[derive(Clone, Copy)]
+struct MapAnswer {
+    lit: f32,
+    grazing: bool,
+}
+
+impl MapAnswer {
+    /// Lit, settled without the light's direction: no caster lies between point and light.
+    const LIT: MapAnswer = MapAnswer {
+        lit: 1.0,
+        grazing: false,
+    };
+}
+
 /// One lookup on a map: where it falls, the receiver's depth there, how much rounding to allow
 /// and how far the receiver's plane is trusted.
 struct Lookup {
@@ -409,24 +440,22 @@ impl Shadowing for ShadowMaps {
             },
         };
         for ((out, &p), &n) in out.iter_mut().zip(points).zip(normals) {
-            *out = if maps.casters.clear_of_all(p) {
-                1.0
+            let lookup = if maps.casters.clear_of_all(p) {
+                MapAnswer::LIT
             } else {
                 maps.face_for(p).reach(p, n, self, receiver)
             };
-        }
-        if let Some(rays) = &self.edges {
+            *out = lookup.lit;
             // The filter's edge band, where a map cannot place an edge closer than its texels,
             // and the band where the light grazes the surface, where a map's depths cannot tell
-            // a surface from its own shadow.
-            for ((out, &p), &n) in out.iter_mut().zip(points).zip(normals) {
-                if (*out > 0.0 && *out < 1.0) || rays.grazes(light, p, n) {
-                    *out = if rays.blocked_at(light, p, n) {
-                        0.0
-                    } else {
-                        1.0
-                    };
-                }
+            // a surface from its own shadow: there an exact shadow ray settles it.
+            let uncertain = (lookup.lit > 0.0 && lookup.lit < 1.0) || lookup.grazing;
+            if let Some(rays) = self.edges.as_ref().filter(|_| uncertain) {
+                *out = if rays.blocked_at(light, p, n) {
+                    0.0
+                } else {
+                    1.0
+                };
             }
         }
     }
