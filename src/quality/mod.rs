@@ -20,10 +20,11 @@ use crate::raster::{Interpolation, PreparedObject, PreparedScene, RenderTarget, 
 use crate::scene::Camera;
 use crate::scene::{Scene, Texturing};
 use crate::shade::{
-    GradientMethod, LitShader, Neighbours, NormalForm, Shadowing, SurfacePointSource, VertexNormals,
+    GradientMethod, LitShader, Neighbours, NormalForm, Reach, ReachShape, Shadowing,
+    SurfacePointSource, VertexNormals,
 };
 use crate::shadow::{ShadowMaps, ShadowSettings};
-use crate::surface::{Tessellation, push_out_to_hull};
+use crate::surface::{Surface, Tessellation, push_out_to_hull};
 use crate::texture::Filter;
 use glam::DVec3;
 use rayon::prelude::*;
@@ -404,24 +405,33 @@ fn neighbours(prepared: &PreparedScene) -> Neighbours {
         (Some(a), Some(b)) => a.intersection(b).is_some(),
         _ => false,
     };
-    let balls = prepared
+    let reaches = prepared
         .objects
         .iter()
         .zip(&bounds)
         .map(|(object, bounds)| {
             let reach = f64::from(object.mesh.chord_error);
-            match (&object.surface, bounds) {
-                (crate::surface::Surface::Sphere(s), _) => (DVec3::ZERO, s.radius as f64 + reach),
+            let ball = match (&object.surface, bounds) {
+                (Surface::Sphere(s), _) => (DVec3::ZERO, s.radius as f64 + reach),
                 (_, Some(b)) => (
                     b.centre() - object.surface.origin(),
                     b.min.distance(b.max) / 2.0,
                 ),
                 (_, None) => (DVec3::ZERO, f64::INFINITY),
+            };
+            let shape = match &object.surface {
+                Surface::Sphere(_) => ReachShape::Closed,
+                Surface::Plane(p) => ReachShape::Flat(p.normal),
+                Surface::Triangle(t) => ReachShape::Flat(t.normal),
+                _ => ReachShape::Open,
+            };
+            Reach {
+                ball: (ball.0.as_vec3(), ball.1 as f32),
+                shape,
             }
         })
-        .map(|(centre, radius): (DVec3, f64)| (centre.as_vec3(), radius as f32))
         .collect();
-    Neighbours::new(bounds.len(), overlap, balls)
+    Neighbours::new(bounds.len(), overlap, reaches)
 }
 
 fn vertex_normals(prepared: &PreparedScene) -> Arc<[VertexNormals]> {

@@ -21,6 +21,8 @@ pub struct SampleRays {
     /// One pixel to the right and one pixel down, as changes of the direction.
     pub per_pixel_x: Vec3,
     pub per_pixel_y: Vec3,
+    /// The camera's unit view direction: a point's depth is its dot product with this.
+    pub forward: Vec3,
     /// The sample spacing in pixels, which scales texture footprints (`RenderTarget::footprint`).
     pub footprint: f32,
     /// The camera's near and far clip depths: where along the rays surfaces are seen.
@@ -46,6 +48,7 @@ impl SampleRays {
             exact_per_pixel: [rays.per_pixel_x, rays.per_pixel_y],
             per_pixel_x: rays.per_pixel_x.as_vec3(),
             per_pixel_y: rays.per_pixel_y.as_vec3(),
+            forward: rays.forward().as_vec3(),
             footprint,
             near: camera.near,
             far: camera.far,

@@ -16,19 +16,55 @@ use std::ops::{Range, RangeInclusive};
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Neighbours {
     of: Vec<Vec<u32>>,
-    /// Per object, a ball around its true surface (centre relative to its anchor, radius): a
-    /// fragment of another object outside it cannot be passed in front of by this one. f32: the
-    /// ball has the chord error as its margin, far above f32 rounding at camera distances.
-    balls: Vec<(Vec3, f32)>,
+    /// Per object, what bounds where its true surface can pass in front of another's fragment.
+    reaches: Vec<Reach>,
 }
 
+/// Where an object's true surface can pass in front of another object's fragment, relative to
+/// its anchor. f32: the margins are the chord error or a relative 1e-5, far above f32 rounding
+/// at camera distances.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Reach {
+    /// A ball around the true surface (centre, radius): a fragment outside it is not passed.
+    pub ball: (Vec3, f32),
+    pub shape: ReachShape,
+}
+
+impl Reach {
+    /// Whether the near plane may pass through the hull of the object whose anchor is at
+    /// `origin` (camera-relative), which lies within half again the true surface's ball.
+    fn near_clips_hull(&self, origin: Vec3, rays: &SampleRays) -> bool {
+        let (centre, radius) = self.ball;
+        rays.forward.dot(origin + centre) - 1.5 * radius < rays.near
+    }
+}
+
+/// What an object's shape adds to its ball.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub enum ReachShape {
+    /// Nothing: the ball is all that is known.
+    #[default]
+    Open,
+    /// A closed surface whose hull holds it (a sphere): its true surface meets a ray only
+    /// behind its hull, so it passes in front of no fragment that beat its hull in depth
+    /// (a flat surface's, which never moves off its mesh), unless the near plane clips the hull.
+    Closed,
+    /// Flat, in the plane through the anchor with this unit normal: a ray passes it only where
+    /// the eye and the fragment lie on opposite sides.
+    Flat(Vec3),
+}
+
+/// How far a fragment may lie on the eye's side of a flat neighbour and still be tested against
+/// it, relative to the distances involved: room for the f32 rounding of its point.
+const FLAT_ROUNDING: f32 = 1e-5;
+
 impl Neighbours {
-    /// Objects i and j ≠ i are neighbours where `overlap(i, j)`; `balls` holds a ball around
-    /// each object's true surface, relative to its anchor.
+    /// Objects i and j ≠ i are neighbours where `overlap(i, j)`; `reaches` bounds where each
+    /// object's true surface lies, relative to its anchor.
     pub fn new(
         count: usize,
         overlap: impl Fn(usize, usize) -> bool,
-        balls: Vec<(Vec3, f32)>,
+        reaches: Vec<Reach>,
     ) -> Neighbours {
         let of = (0..count)
             .map(|i| {
@@ -36,15 +72,40 @@ impl Neighbours {
                 others.map(|j| j as u32).collect()
             })
             .collect();
-        Neighbours { of, balls }
+        Neighbours { of, reaches }
     }
 
-    /// Whether the camera-relative point `depth·direction` lies in the ball of the object
-    /// whose anchor is at `origin` (camera-relative); everywhere for an object without one.
-    fn may_reach(&self, object: usize, origin: Vec3, direction: Vec3, depth: f32) -> bool {
-        self.balls.get(object).is_none_or(|&(centre, radius)| {
-            (direction * depth - origin).distance_squared(centre) <= radius * radius
+    /// Whether the true surface of the object whose anchor is at `origin` (camera-relative)
+    /// lies behind its hull along every ray, so that it passes in front of no fragment that beat
+    /// the hull in depth: a closed surface wholly past the near plane (its hull lies within half
+    /// again its ball; the near plane could clip the hull where the true surface is not).
+    fn hidden_by_hull(&self, object: usize, origin: Vec3, rays: &SampleRays) -> bool {
+        self.reaches.get(object).is_some_and(|reach| {
+            reach.shape == ReachShape::Closed && !reach.near_clips_hull(origin, rays)
         })
+    }
+
+    /// Whether the true surface of the object whose anchor is at `origin` (camera-relative)
+    /// may pass in front of the camera-relative fragment point `depth·direction`.
+    fn may_reach(&self, object: usize, origin: Vec3, rays: &SampleRays, ray: (Vec3, f32)) -> bool {
+        let Some(reach) = self.reaches.get(object) else {
+            return true;
+        };
+        let (direction, depth) = ray;
+        let (eye, point) = (-origin, direction * depth - origin);
+        let (centre, radius) = reach.ball;
+        match reach.shape {
+            // Where the near plane clips its hull, a curved surface may pass in front of
+            // fragments far behind it, where its hull would have covered them.
+            ReachShape::Open | ReachShape::Closed if reach.near_clips_hull(origin, rays) => true,
+            _ if point.distance_squared(centre) > radius * radius => false,
+            ReachShape::Open | ReachShape::Closed => true,
+            ReachShape::Flat(normal) => {
+                let (eye_side, point_side) = (normal.dot(eye), normal.dot(point));
+                let rounding = FLAT_ROUNDING * (eye.length() + point.length());
+                eye_side * point_side <= 0.0 || point_side.abs() <= rounding
+            }
+        }
     }
 
     pub fn of(&self, object: usize) -> &[u32] {
@@ -64,8 +125,13 @@ pub(super) fn nearer_neighbours(
     scratch: &mut ExactScratch,
 ) -> usize {
     let mut count = 0;
+    // A flat surface's fragments are where its mesh put them, so they beat every hull in depth.
+    let settled = objects[index as usize].prepared.surface.is_flat();
     for &other in neighbours.of(index as usize) {
         let object = &objects[other as usize];
+        if settled && neighbours.hidden_by_hull(other as usize, object.origin, rays) {
+            continue;
+        }
         let surface = &object.prepared.surface;
         // Only the fragments within the neighbour's reach are cast against it.
         let mut candidates = std::mem::take(&mut scratch.candidates);
@@ -74,7 +140,7 @@ pub(super) fn nearer_neighbours(
             let f = &fragments[k];
             let direction = rays.through(f.x, f.y);
             !scratch.pending[k]
-                && neighbours.may_reach(other as usize, object.origin, direction, f.depth)
+                && neighbours.may_reach(other as usize, object.origin, rays, (direction, f.depth))
         }));
         let near = candidates.iter().map(|&k| &fragments[k]);
         match surface {

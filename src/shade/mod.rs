@@ -16,7 +16,7 @@ mod vertex_normals;
 
 pub use bake::{bake_color, bake_height};
 pub use bump::{NormalForm, bumped_normal};
-pub use exact_coverage::{Neighbours, nearest_true_hit};
+pub use exact_coverage::{Neighbours, Reach, ReachShape, nearest_true_hit};
 pub use exact_point::{ExactPoints, ExactScratch, SurfacePointSource, exact_fragments};
 pub use gradient::GradientMethod;
 pub use lighting::{FrameLights, blinn_phong, facing_sign};

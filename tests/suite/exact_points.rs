@@ -399,6 +399,36 @@ fn two_spheres_cutting_each_other_on_a_floor() -> Scene {
     scene
 }
 
+/// A sphere whose lower third lies below the floor, seen from above or below it: where the
+/// floor cuts it, which of the two a pixel shows is settled by the floor's plane alone.
+fn sphere_sunk_through_a_floor(from_below: bool) -> Scene {
+    let mut scene = preset("sphere-on-plane-dimples").unwrap();
+    scene.objects.truncate(1);
+    scene.objects.push(Object {
+        surface: Surface::Sphere(Sphere {
+            center: DVec3::new(20.0, 30.0, 0.0),
+            radius: 100.0,
+        }),
+        material: Material::default(),
+    });
+    if from_below {
+        scene.camera.eye = DVec3::new(150.0, -260.0, 420.0);
+        scene.camera.target = DVec3::new(0.0, 0.0, 0.0);
+    }
+    scene
+}
+
+/// A sphere on a floor with the eye so close that the near plane cuts its cap away: the hull is
+/// clipped a little before the true surface, and the floor shows through the hole.
+fn sphere_at_the_near_plane() -> Scene {
+    let mut scene = two_spheres_cutting_each_other_on_a_floor();
+    scene.objects.truncate(2);
+    scene.camera.near = 45.0;
+    scene.camera.eye = DVec3::new(-80.0, 150.0, 185.0);
+    scene.camera.target = DVec3::new(-80.0, 60.0, 0.0);
+    scene
+}
+
 #[test]
 fn exact_coverage_is_the_references_outline_and_order_of_surfaces() {
     let mut mesh_total = 0;
@@ -411,6 +441,18 @@ fn exact_coverage_is_the_references_outline_and_order_of_surfaces() {
             two_spheres_cutting_each_other_on_a_floor(),
         ),
         ("wave and spheres", preset("wave-spheres").unwrap()),
+        (
+            "a sphere sunk through a floor",
+            sphere_sunk_through_a_floor(false),
+        ),
+        (
+            "a sphere sunk through a floor, from below",
+            sphere_sunk_through_a_floor(true),
+        ),
+        (
+            "a sphere grazing the near plane",
+            sphere_at_the_near_plane(),
+        ),
     ] {
         let (mismatches, covered) = coverage_mismatches(&scene, Coverage::Exact);
         let (mesh_mismatches, _) = coverage_mismatches(&scene, Coverage::Mesh);
