@@ -6,7 +6,7 @@
 use super::exact_coverage::{Neighbours, cast_dropped, nearer_neighbours};
 use crate::raster::{Fragment, FrameObject, SampleRays};
 use crate::surface::{Frame, Surface, TrueHit, uv_derivatives};
-use glam::DVec3;
+use glam::{DVec3, Vec2, Vec3};
 
 /// Where a fragment of a curved surface is shaded.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
@@ -42,24 +42,24 @@ pub struct ExactScratch {
     pub(super) hits: Vec<TrueHit>,
     pub(super) found: Vec<bool>,
     /// By fragment of the batch: whether it moved (its derivatives are then recomputed).
-    pub(super) moved: Vec<bool>,
+    pub moved: Vec<bool>,
     /// By fragment: its ray missed its own true surface (cast against every object, with
     /// exact coverage).
     pub(super) pending: Vec<bool>,
     /// Fragments of a run tested against one neighbour.
     pub(super) candidates: Vec<usize>,
-    frames: Vec<Frame>,
+    pub derivatives: DerivativeScratch,
 }
 
-/// Moves each fragment of a curved surface, in place, to its ray's true hit: (u,v), depth and
-/// (where `derivatives` says the shader reads them, by object) (u,v) derivatives. With
-/// `coverage`, a fragment whose ray misses its own true surface is cast against every object
-/// (and becomes the nearest one's, or background: object `objects.len()`), and one whose ray
-/// meets a neighbour's true surface first becomes that neighbour's.
+/// Moves each fragment of a curved surface, in place, to its ray's true hit: (u,v) and depth,
+/// marking it in `scratch.moved` (its (u,v) derivatives are then the mesh's until
+/// `true_hit_derivatives` works them out). With `coverage`, a fragment whose ray misses its own
+/// true surface is cast against every object (and becomes the nearest one's, or background:
+/// object `objects.len()`), and one whose ray meets a neighbour's true surface first becomes
+/// that neighbour's.
 pub fn exact_fragments(
     objects: &[FrameObject],
     coverage: Option<&Neighbours>,
-    derivatives: impl Fn(&FrameObject) -> bool,
     rays: &SampleRays,
     fragments: &mut [Fragment],
     scratch: &mut ExactScratch,
@@ -96,7 +96,6 @@ pub fn exact_fragments(
         }
         None => count.kept = scratch.pending.iter().filter(|&&p| p).count(),
     }
-    exact_derivatives(objects, derivatives, rays, fragments, scratch);
     count
 }
 
@@ -147,51 +146,57 @@ pub(super) fn true_hits_along<'f>(
     surface.true_hits(eye, directions, depths, hits, found);
 }
 
-/// The (u,v) derivatives of each moved fragment from ray differentials at its (u,v), which are
-/// now the true surface's, as the reference computes them.
-fn exact_derivatives(
-    objects: &[FrameObject],
-    derivatives: impl Fn(&FrameObject) -> bool,
+/// The (u,v) derivatives of each fragment of `group` (one object's, by index into `fragments`)
+/// that `moved` marks, from ray differentials at its true hit, whose frame is `frames` (by
+/// position in the group), as the reference computes them.
+pub fn true_hit_derivatives(
+    surface: &Surface,
     rays: &SampleRays,
     fragments: &mut [Fragment],
-    scratch: &mut ExactScratch,
+    group: &[u32],
+    frames: &[Frame],
+    moved: &[bool],
+    scratch: &mut DerivativeScratch,
 ) {
     let (dx, dy) = (
         rays.per_pixel_x * rays.footprint,
         rays.per_pixel_y * rays.footprint,
     );
-    let frames = &mut scratch.frames;
-    for std::ops::Range { start, end } in same_object_runs(fragments) {
-        let index = fragments[start].object;
-        let (run, moved) = (&mut fragments[start..end], &scratch.moved[start..end]);
-        let Some(object) = objects.get(index as usize) else {
-            continue;
-        };
-        if !derivatives(object) || !moved.contains(&true) {
-            continue;
+    let domain = surface.domain();
+    let rays_and_depths = group.iter().map(|&i| {
+        let fragment = &fragments[i as usize];
+        (rays.through(fragment.x, fragment.y), fragment.depth)
+    });
+    scratch.rays.clear();
+    scratch.rays.extend(rays_and_depths);
+    scratch
+        .derivatives
+        .resize(group.len(), (Vec2::ZERO, Vec2::ZERO));
+    crate::simd::widest(
+        #[inline(always)]
+        || {
+            let each = frames.iter().zip(&scratch.rays);
+            for ((frame, &(direction, t)), out) in each.zip(&mut scratch.derivatives) {
+                *out = (
+                    uv_derivatives(frame, t, direction, dx, domain),
+                    uv_derivatives(frame, t, direction, dy, domain),
+                );
+            }
+        },
+    );
+    for (&i, &(du, dv)) in group.iter().zip(&scratch.derivatives) {
+        if moved[i as usize] {
+            let fragment = &mut fragments[i as usize];
+            (fragment.duv_dx, fragment.duv_dy) = (du, dv);
         }
-        let surface = &object.prepared.surface;
-        frames.clear();
-        surface.frames(run.len(), |k| run[k].uv, frames);
-        let domain = surface.domain();
-        crate::simd::widest(
-            #[inline(always)]
-            || {
-                let each = run.iter_mut().zip(frames.iter()).zip(moved);
-                for ((fragment, frame), &moved) in each {
-                    let direction = rays.through(fragment.x, fragment.y);
-                    let t = fragment.depth;
-                    let (du, dv) = (
-                        uv_derivatives(frame, t, direction, dx, domain),
-                        uv_derivatives(frame, t, direction, dy, domain),
-                    );
-                    if moved {
-                        (fragment.duv_dx, fragment.duv_dy) = (du, dv);
-                    }
-                }
-            },
-        );
     }
+}
+
+/// Working arrays for `true_hit_derivatives`, reused group to group.
+#[derive(Default)]
+pub struct DerivativeScratch {
+    rays: Vec<(Vec3, f32)>,
+    derivatives: Vec<(Vec2, Vec2)>,
 }
 
 /// The ranges of consecutive fragments of one object (a tile's fragments come in runs of one

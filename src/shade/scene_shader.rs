@@ -6,7 +6,7 @@ use super::bump::{
     NormalForm, blinn_normals, blinn_normals_on_flat, bumped_normal, full_normals_in_closed_form,
 };
 use super::exact_coverage::Neighbours;
-use super::exact_point::{ExactScratch, SurfacePointSource, exact_fragments};
+use super::exact_point::{ExactScratch, SurfacePointSource, exact_fragments, true_hit_derivatives};
 use super::gradient::{GradientMethod, central_difference, shifted_fragments};
 use super::lighting::{FrameLights, blinn_phong_many, facing_sign};
 use super::pattern_batch::{PatternBatch, Sites};
@@ -149,7 +149,6 @@ impl FragmentShader for LitShader {
         if self.surface_point == SurfacePointSource::Exact {
             self.move_to_true_surfaces(objects, rays, fragments, scratch, out);
         }
-        let fragments = &*fragments;
         let mut order = std::mem::take(&mut scratch.order);
         // One group past the objects' holds the background fragments (already coloured).
         group_by_object(
@@ -167,8 +166,12 @@ impl FragmentShader for LitShader {
             if start < end {
                 let group = &order[start..end];
                 for part in group.chunks(chunk_size(object)) {
-                    flattened +=
-                        self.shade_object(object_index, object, fragments, part, scratch, out);
+                    let batch = ObjectBatch {
+                        index: object_index,
+                        object,
+                        group: part,
+                    };
+                    flattened += self.shade_object(batch, rays, fragments, scratch, out);
                 }
             }
         }
@@ -195,6 +198,14 @@ fn chunk_size(object: &FrameObject) -> usize {
     }
 }
 
+/// One shading batch: fragments of one object, by index into the tile's fragments.
+#[derive(Clone, Copy)]
+struct ObjectBatch<'a> {
+    index: usize,
+    object: &'a FrameObject<'a>,
+    group: &'a [u32],
+}
+
 impl LitShader {
     /// Moves each fragment onto the true surface its ray meets (see `exact_fragments`); those
     /// that meet none are given the background colour here.
@@ -206,10 +217,8 @@ impl LitShader {
         scratch: &mut ShadeScratch,
         out: &mut [Vec3],
     ) {
-        let derivatives = |object: &FrameObject| self.reads_derivatives(object);
         let coverage = self.exact_coverage.as_deref();
-        let exact = &mut scratch.exact;
-        let moved = exact_fragments(objects, coverage, derivatives, rays, fragments, exact);
+        let moved = exact_fragments(objects, coverage, rays, fragments, &mut scratch.exact);
         if moved.background > 0 {
             let background = objects.len() as u32;
             let fragments = fragments.iter().zip(out.iter_mut());
@@ -221,18 +230,31 @@ impl LitShader {
 
     fn shade_object(
         &self,
-        object_index: usize,
-        object: &FrameObject,
-        fragments: &[Fragment],
-        group: &[u32],
+        batch: ObjectBatch,
+        rays: &SampleRays,
+        fragments: &mut [Fragment],
         scratch: &mut ShadeScratch,
         out: &mut [Vec3],
     ) -> usize {
+        let ObjectBatch {
+            index: object_index,
+            object,
+            group,
+        } = batch;
         let surface = &object.prepared.surface;
         let material = &object.prepared.material;
         scratch.frames.clear();
         let uv = |k: usize| fragments[group[k] as usize].uv;
         surface.frames(group.len(), uv, &mut scratch.frames);
+        // Fragments moved to their true hits take their derivatives from these frames, the
+        // true surface's (before any interpolated normals replace them).
+        if self.surface_point == SurfacePointSource::Exact && self.reads_derivatives(object) {
+            let (frames, exact) = (&scratch.frames, &mut scratch.exact);
+            let moved = &exact.moved;
+            let derivatives = &mut exact.derivatives;
+            true_hit_derivatives(surface, rays, fragments, group, frames, moved, derivatives);
+        }
+        let fragments = &*fragments;
         if let Some(normals) = &self.vertex_normals {
             interpolate_frames(
                 &normals[object_index],

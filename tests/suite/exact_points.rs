@@ -47,7 +47,7 @@ impl FragmentShader for Recorder {
         out: &mut [Vec3],
     ) -> usize {
         let before = fragments.to_vec();
-        exact_fragments(objects, None, |_| false, rays, fragments, scratch);
+        exact_fragments(objects, None, rays, fragments, scratch);
         let pairs = before.into_iter().zip(fragments.iter().copied());
         self.seen.lock().unwrap().extend(pairs);
         out.fill(Vec3::ONE);
@@ -343,7 +343,7 @@ impl FragmentShader for ObjectIds {
         out: &mut [Vec3],
     ) -> usize {
         let coverage = Some(&self.neighbours);
-        exact_fragments(objects, coverage, |_| false, rays, fragments, scratch);
+        exact_fragments(objects, coverage, rays, fragments, scratch);
         for (fragment, out) in fragments.iter().zip(out) {
             *out = Vec3::splat((fragment.object + 1) as f32 % (objects.len() + 1) as f32);
         }
