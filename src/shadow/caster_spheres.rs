@@ -61,6 +61,7 @@ impl CasterSpheres {
     }
 
     /// Whether the camera-relative point `p` sees the light past every caster's sphere.
+    #[inline(always)]
     pub fn clear_of_all(&self, p: Vec3) -> bool {
         let Some(spheres) = &self.spheres else {
             return false;

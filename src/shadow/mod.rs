@@ -287,6 +287,7 @@ impl ShadowFace {
     }
 
     /// `reach`'s fraction where the surface faces the light (`facing`, the cosine, positive).
+    #[inline(always)]
     fn lit_fraction(
         &self,
         relative: Vec3,
