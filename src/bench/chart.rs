@@ -223,10 +223,14 @@ fn draw_front(pixmap: &mut Pixmap, axes: &Axes, front: &[(f64, f64)]) {
         }
     }
     if let Some(path) = builder.finish() {
-        let paint = paint([220, 60, 40]);
+        let paint = paint(FRONT_RED);
         pixmap.stroke_path(&path, &paint, &stroke(2.5), Transform::identity(), None);
     }
 }
+
+/// The colour of the Pareto front: its line, and a ring around each of its dots (so a front of
+/// one dot, one variant both fastest and most accurate, still shows).
+const FRONT_RED: [u8; 3] = [220, 60, 40];
 
 fn draw_point(pixmap: &mut Pixmap, axes: &Axes, p: (f64, f64), kind: VariantKind, front: bool) {
     let (x, y) = axes.to_pixel(p);
@@ -243,6 +247,11 @@ fn draw_point(pixmap: &mut Pixmap, axes: &Axes, p: (f64, f64), kind: VariantKind
             Transform::identity(),
             None,
         );
+    }
+    let ring = PathBuilder::from_circle(x, y, radius + 2.5).filter(|_| front);
+    if let Some(ring) = ring {
+        let paint = paint(FRONT_RED);
+        pixmap.stroke_path(&ring, &paint, &stroke(1.5), Transform::identity(), None);
     }
 }
 
@@ -309,6 +318,26 @@ mod tests {
             let linear = srgb_to_linear(code as f32 / 255.0);
             assert_eq!(crate::raster::linear_to_srgb8(linear), code);
         }
+    }
+
+    #[test]
+    fn a_front_of_one_variant_still_shows_in_red() {
+        let variants = crate::bench::variants();
+        let summary = |i: usize, ms: f64, db: f64| Summary {
+            variant: variants[i].clone(),
+            total_median_ms: ms,
+            mean_psnr_db: db,
+            mean_normal_degrees: 0.0,
+        };
+        // The second is both the fastest and the most accurate: the front is it alone.
+        let summaries = [summary(0, 2.0, 30.0), summary(1, 1.0, 150.0)];
+        let chart = draw_chart(&summaries, ChartMetric::Psnr);
+        let srgb = |c: f32| crate::raster::linear_to_srgb8(c);
+        let red = chart.color().iter().filter(|c| {
+            let [r, g, b] = [c.x, c.y, c.z].map(srgb);
+            r > 180 && g < 120 && b < 120
+        });
+        assert!(red.count() > 50);
     }
 
     #[test]

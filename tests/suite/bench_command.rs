@@ -101,7 +101,8 @@ fn json_on_one_scene_has_finite_figures_and_exact_is_the_most_accurate_preset() 
     let _ = std::fs::remove_dir_all(dir);
 }
 
-/// The chart is a whole PNG with the Pareto front's red line on white, and a legend to the right
+/// The chart is a whole PNG with the Pareto front in red on white (its line, or with one variant
+/// both fastest and most accurate, the ring around that dot), and a legend to the right
 /// of the 800-pixel plot naming the presets in their dots' blue.
 fn assert_chart_decodes(path: &std::path::Path) {
     let decoder = png::Decoder::new(std::io::BufReader::new(std::fs::File::open(path).unwrap()));
