@@ -42,13 +42,13 @@ pub struct ExactScratch {
     pub(super) hits: Vec<TrueHit>,
     pub(super) found: Vec<bool>,
     /// By fragment of the batch: whether it moved (its derivatives are then recomputed).
-    pub moved: Vec<bool>,
+    pub(super) moved: Vec<bool>,
     /// By fragment: its ray missed its own true surface (cast against every object, with
     /// exact coverage).
     pub(super) pending: Vec<bool>,
     /// Fragments of a run tested against one neighbour.
     pub(super) candidates: Vec<usize>,
-    pub derivatives: DerivativeScratch,
+    pub(super) derivatives: DerivativeScratch,
 }
 
 /// Moves each fragment of a curved surface, in place, to its ray's true hit: (u,v) and depth,
@@ -149,7 +149,7 @@ pub(super) fn true_hits_along<'f>(
 /// The (u,v) derivatives of each fragment of `group` (one object's, by index into `fragments`)
 /// that `moved` marks, from ray differentials at its true hit, whose frame is `frames` (by
 /// position in the group), as the reference computes them.
-pub fn true_hit_derivatives(
+pub(super) fn true_hit_derivatives(
     surface: &Surface,
     rays: &SampleRays,
     fragments: &mut [Fragment],
@@ -194,7 +194,7 @@ pub fn true_hit_derivatives(
 
 /// Working arrays for `true_hit_derivatives`, reused group to group.
 #[derive(Default)]
-pub struct DerivativeScratch {
+pub(super) struct DerivativeScratch {
     rays: Vec<(Vec3, f32)>,
     derivatives: Vec<(Vec2, Vec2)>,
 }
