@@ -9,7 +9,7 @@
 //! when the surface is large; the angles of the (u,v) are f32 (`atan2`, within 3e-7 rad).
 
 use super::angles::atan2;
-use super::ray_hits::{Ray, intersect};
+use super::ray_hits::{Ray, intersect, ordered_roots};
 use super::sphere::SEED_UNITS_PER_RADIAN;
 use super::{AxisBasis, Cone, Paraboloid, Sphere, Surface, Wave};
 use glam::{DVec3, Vec2, Vec3};
@@ -261,25 +261,6 @@ fn quadric_chunk<Q: Quadric>(
     }
 }
 
-/// The roots of a·s² + b·s + c = 0 in increasing order (either may be non-finite where `a`
-/// vanishes) and whether they are real, without cancellation: c/q and q/a for
-/// q = −(b + sign(b)·√disc)/2, so a vanishing `a` (a ray along a cone's side) leaves the linear
-/// root −c/b accurate. Branch-free.
-#[inline(always)]
-fn ordered_roots(a: f64, b: f64, c: f64) -> (f64, f64, bool) {
-    let discriminant = b * b - 4.0 * a * c;
-    let real = discriminant >= 0.0;
-    let q = -0.5 * (b + discriminant.max(0.0).sqrt().copysign(b));
-    // q = 0 only when b = 0 and c = 0: a double root at the chord point.
-    let (one, other) = if q == 0.0 { (0.0, 0.0) } else { (c / q, q / a) };
-    let (first, second) = if other < one {
-        (other, one)
-    } else {
-        (one, other)
-    };
-    (first, second, real)
-}
-
 /// The chord point or direction along (e1, axis, e2).
 #[inline(always)]
 fn local(basis: &AxisBasis, v: DVec3) -> DVec3 {
@@ -340,19 +321,6 @@ fn wave_hit(wave: &Wave, q: DVec3, d: DVec3) -> Option<(Vec2, f64)> {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn roots_come_in_order_without_cancellation() {
-        // (s − 1e-6)(s − 1e6) = s² − (1e6 + 1e-6)s + 1.
-        let (small, large, real) = ordered_roots(1.0, -(1e6 + 1e-6), 1.0);
-        assert!(real && (small - 1e-6).abs() < 1e-18 && (large - 1e6).abs() < 1e-6);
-        // a = 0: the linear root, and the other one at infinity.
-        let (none, only, real) = ordered_roots(0.0, 2.0, -4.0);
-        assert!(real && only == 2.0 && !none.is_finite());
-        assert!(!ordered_roots(1.0, 0.0, 1.0).2);
-        assert_eq!(ordered_roots(1.0, 0.0, 0.0), (0.0, 0.0, true));
-        assert_eq!(ordered_roots(1.0, -2.0, -15.0), (-3.0, 5.0, true));
-    }
 
     #[test]
     fn azimuth_u_inverts_the_frames_azimuth() {

@@ -12,6 +12,7 @@ mod sphere;
 mod triangle;
 mod wave;
 
+pub(crate) use quadratic::ordered_roots;
 pub use ray::{Hit, Ray};
 
 use crate::surface::Surface;
