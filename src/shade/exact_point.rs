@@ -69,7 +69,10 @@ pub fn exact_fragments(
         flags.clear();
         flags.resize(fragments.len(), false);
     }
-    for std::ops::Range { start, end } in same_object_runs(fragments) {
+    // Each run is measured before any of its fragments moves; moving touches only the run.
+    let mut start = 0;
+    while start < fragments.len() {
+        let end = run_end(fragments, start);
         let index = fragments[start].object;
         let object = &objects[index as usize];
         let surface = &object.prepared.surface;
@@ -87,6 +90,7 @@ pub fn exact_fragments(
                 nearer_neighbours(objects, neighbours, index, rays, fragments, run, scratch);
             count.reassigned += nearer;
         }
+        start = end;
     }
     match coverage {
         Some(_) => {
@@ -199,18 +203,13 @@ pub(super) struct DerivativeScratch {
     derivatives: Vec<(Vec2, Vec2)>,
 }
 
-/// The ranges of consecutive fragments of one object (a tile's fragments come in runs of one
-/// triangle), taken before any of them moves.
-fn same_object_runs(fragments: &[Fragment]) -> Vec<std::ops::Range<usize>> {
-    let mut runs = Vec::new();
-    let mut start = 0;
-    while let Some(first) = fragments.get(start) {
-        let length = fragments[start..]
-            .iter()
-            .take_while(|f| f.object == first.object)
-            .count();
-        runs.push(start..start + length);
-        start += length;
-    }
-    runs
+/// Where the run of consecutive fragments of one object that begins at `start` ends (a tile's
+/// fragments come in runs of one triangle).
+fn run_end(fragments: &[Fragment], start: usize) -> usize {
+    let object = fragments[start].object;
+    let length = fragments[start..]
+        .iter()
+        .take_while(|f| f.object == object)
+        .count();
+    start + length
 }
