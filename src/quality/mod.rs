@@ -266,7 +266,7 @@ impl Quality {
             triangles,
             lights: scene.lights.len() as u64,
             output_bytes,
-            shadow_map_bytes: crate::shadow::map_bytes(&scene, self.shadow_map),
+            shadow_map_bytes: crate::shadow::map_bytes(&scene, &self.shadow_settings()),
         }
         .check(crate::memory_budget::budget_bytes())?;
         let objects = scene
@@ -340,6 +340,7 @@ impl Quality {
             taps: self.shadow_taps,
             bias_texels: self.shadow_bias,
             exact_edges: self.shadow_edges == ShadowEdges::Exact,
+            rays_where_cheaper: true,
         }
     }
 

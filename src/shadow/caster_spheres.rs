@@ -10,13 +10,21 @@ use glam::{DVec3, Vec3};
 
 /// The most casters whose spheres a point is tested against: past that, testing each would cost
 /// more per fragment than the lookup it saves.
-const MOST_SPHERES: usize = 16;
+pub const MOST_SPHERES: usize = 16;
 
 /// The casters' spheres and the light, relative to the camera's eye (f32, subtracted in f64).
 pub struct CasterSpheres {
     /// `None` for more casters than `MOST_SPHERES`: no point is told clear.
-    spheres: Option<Vec<(Vec3, f32)>>,
+    spheres: Option<Vec<CasterSphere>>,
     light: LightAt,
+}
+
+#[derive(Clone, Copy)]
+struct CasterSphere {
+    /// The caster's index among the scene's objects.
+    object: usize,
+    centre: Vec3,
+    radius: f32,
 }
 
 enum LightAt {
@@ -47,7 +55,11 @@ impl CasterSpheres {
                             (b.centre(), b.min.distance(b.max) / 2.0)
                         }
                     };
-                    Some(((centre - eye).as_vec3(), radius as f32 + margin))
+                    Some(CasterSphere {
+                        object: index,
+                        centre: (centre - eye).as_vec3(),
+                        radius: radius as f32 + margin,
+                    })
                 })
                 .collect()
         });
@@ -60,13 +72,15 @@ impl CasterSpheres {
         CasterSpheres { spheres, light }
     }
 
-    /// Whether the camera-relative point `p` sees the light past every caster's sphere.
+    /// Whether the camera-relative point `p` sees the light past the sphere of every caster
+    /// but object `except`.
     #[inline(always)]
-    pub fn clear_of_all(&self, p: Vec3) -> bool {
+    pub fn clear_of_all(&self, p: Vec3, except: Option<usize>) -> bool {
         let Some(spheres) = &self.spheres else {
             return false;
         };
-        spheres.iter().all(|&(centre, radius)| {
+        let mut others = spheres.iter().filter(|s| Some(s.object) != except);
+        others.all(|&CasterSphere { centre, radius, .. }| {
             let to_centre = centre - p;
             let closest = match self.light {
                 LightAt::Point(light) => {
@@ -79,6 +93,16 @@ impl CasterSpheres {
             (to_centre - closest).length_squared() > radius * radius
         })
     }
+
+    /// The cosine between the unit normal `n` at camera-relative point `p` and the way to the
+    /// light (NaN where `p` is at a point light).
+    #[inline(always)]
+    pub fn facing(&self, p: Vec3, n: Vec3) -> f32 {
+        match self.light {
+            LightAt::Point(light) => n.dot((light - p).normalize()),
+            LightAt::Directional(towards) => n.dot(towards),
+        }
+    }
 }
 
 #[cfg(test)]
@@ -87,7 +111,11 @@ mod tests {
 
     fn spheres(light: LightAt) -> CasterSpheres {
         CasterSpheres {
-            spheres: Some(vec![(Vec3::new(0.0, 1.0, 0.0), 1.0)]),
+            spheres: Some(vec![CasterSphere {
+                object: 0,
+                centre: Vec3::new(0.0, 1.0, 0.0),
+                radius: 1.0,
+            }]),
             light,
         }
     }
@@ -96,19 +124,26 @@ mod tests {
     fn only_points_whose_way_to_the_light_passes_a_sphere_are_not_clear() {
         let above = spheres(LightAt::Point(Vec3::new(0.0, 10.0, 0.0)));
         assert!(
-            !above.clear_of_all(Vec3::new(0.3, 0.0, 0.0)),
+            !above.clear_of_all(Vec3::new(0.3, 0.0, 0.0), None),
             "under the sphere"
         );
-        assert!(above.clear_of_all(Vec3::new(3.0, 0.0, 0.0)), "beside it");
+        assert!(
+            above.clear_of_all(Vec3::new(3.0, 0.0, 0.0), None),
+            "beside it"
+        );
+        assert!(
+            above.clear_of_all(Vec3::new(0.3, 0.0, 0.0), Some(0)),
+            "under the sphere, with the sphere left out"
+        );
         // Between the sphere and the light: the segment stops before the sphere.
-        assert!(above.clear_of_all(Vec3::new(0.0, 5.0, 0.0)));
+        assert!(above.clear_of_all(Vec3::new(0.0, 5.0, 0.0), None));
         let sun = spheres(LightAt::Directional(Vec3::new(1.0, 1.0, 0.0).normalize()));
         assert!(
-            !sun.clear_of_all(Vec3::new(-1.0, 0.0, 0.0)),
+            !sun.clear_of_all(Vec3::new(-1.0, 0.0, 0.0), None),
             "in the shadow's path"
         );
         assert!(
-            sun.clear_of_all(Vec3::new(2.5, 0.0, 0.0)),
+            sun.clear_of_all(Vec3::new(2.5, 0.0, 0.0), None),
             "on the lit side"
         );
     }

@@ -23,7 +23,7 @@ pub fn can_shadow(scene: &Scene) -> bool {
 
 /// Whether a surface can stand between a light and another part of itself. A sphere cannot
 /// (where it turns from the light it is already dark), nor can anything flat.
-fn can_shadow_itself(surface: &Surface) -> bool {
+pub(super) fn can_shadow_itself(surface: &Surface) -> bool {
     !matches!(
         surface,
         Surface::Sphere(_) | Surface::Plane(_) | Surface::Triangle(_)

@@ -2,9 +2,10 @@
 //! exact surface. The reference's shadows, the judge of the shadow maps; and where a map's
 //! filtered lookup is partly lit, the answer exact shadow edges take.
 
-use super::casting::can_shadow;
+use super::caster_spheres::MOST_SPHERES;
+use super::casting::{can_shadow, can_shadow_itself};
 use crate::raster::PreparedScene;
-use crate::scene::{Camera, Light};
+use crate::scene::{Camera, Light, Scene};
 use crate::shade::Shadowing;
 use crate::surface::Surface;
 use crate::surface::{Ray, intersect};
@@ -19,6 +20,15 @@ pub(super) const GRAZING: f32 = 0.1;
 /// How far a shadow ray towards a directional light looks: past any scene (finite, as the
 /// intersections clip to boxes).
 const DIRECTIONAL_REACH: f64 = 1e12;
+
+/// Whether exact rays shadow `scene` for less than maps would: every object is a sphere, plane or
+/// triangle, which a ray meets in closed form and which never shadows itself, and they are few
+/// enough to test one by one (each point is first tested against their spheres, all of them,
+/// which settles nearly every point a map lookup would have settled).
+pub fn rays_cheaper_than_maps(scene: &Scene) -> bool {
+    scene.objects.len() <= MOST_SPHERES
+        && scene.objects.iter().all(|o| !can_shadow_itself(&o.surface))
+}
 
 /// Shadow rays through the exact scene, for points relative to one camera's eye.
 pub struct ShadowRays {
@@ -54,16 +64,17 @@ impl ShadowRays {
         })
     }
 
-    /// Whether anything lies between the camera-relative point `p` (on a surface whose facing
-    /// normal is `n`) and light `light`.
-    pub fn blocked_at(&self, light: usize, p: Vec3, n: Vec3) -> bool {
+    /// Whether anything but object `except` lies between the camera-relative point `p` (on a
+    /// surface whose facing normal is `n`) and light `light`.
+    pub fn blocked_at(&self, light: usize, p: Vec3, n: Vec3, except: Option<usize>) -> bool {
         let lift = START_OFF_SURFACE * (1.0 + f64::from(p.length()));
         let from = self.eye + p.as_dvec3() + n.as_dvec3() * lift;
-        self.blocked(light, from)
+        self.blocked(light, from, except)
     }
 
-    /// Whether anything lies between the world point `from` and light `light`.
-    fn blocked(&self, light: usize, from: DVec3) -> bool {
+    /// Whether anything but object `except` lies between the world point `from` and light
+    /// `light`.
+    fn blocked(&self, light: usize, from: DVec3, except: Option<usize>) -> bool {
         let (direction, distance) = match self.lights[light] {
             Light::Point { position, .. } => {
                 let to = position - from;
@@ -77,7 +88,8 @@ impl ShadowRays {
         if !direction.is_finite() {
             return false;
         }
-        self.casting[light].iter().any(|&index| {
+        let mut casting = self.casting[light].iter().filter(|&&i| Some(i) != except);
+        casting.any(|&index| {
             let surface = &self.surfaces[index];
             let ray = Ray {
                 origin: from - surface.origin(),
@@ -102,7 +114,7 @@ impl Shadowing for ShadowRays {
         out: &mut [f32],
     ) {
         for ((out, &p), &n) in out.iter_mut().zip(points).zip(normals) {
-            *out = if self.blocked_at(light, p, n) {
+            *out = if self.blocked_at(light, p, n, None) {
                 0.0
             } else {
                 1.0

@@ -4,8 +4,11 @@
 //! off its surface only by its mesh's chord error and the bias, and each filter tap compares the
 //! map with the receiver's tangent plane along that tap's ray (`filter`); points no caster's
 //! sphere can shade (`caster_spheres`) and taps the depth blocks settle (`depth_blocks`) skip
-//! the taps. Bumps shade but do not move geometry, so they cast no shadows. Numerics: f32 in
-//! each map's own light-relative space, whose origin is subtracted from the camera's in f64.
+//! the taps. A receiver that cannot shadow itself (a sphere, anything flat) leaves its own caster
+//! out. Where every object is such a surface and exact edges are asked for, no map is drawn:
+//! exact rays (`exact_rays`) cost less than lookups there. Bumps shade but do not move geometry,
+//! so they cast no shadows. Numerics: f32 in each map's own light-relative space, whose origin is
+//! subtracted from the camera's in f64; exact rays in f64.
 
 mod bounds;
 mod cache;
@@ -18,9 +21,10 @@ mod light_views;
 
 pub use bounds::{Bounds, object_bounds, seen_bounds, union_of};
 pub use cache::ShadowCache;
+use casting::can_shadow_itself;
 pub use casting::{can_shadow, casters};
 use exact_rays::GRAZING;
-pub use exact_rays::ShadowRays;
+pub use exact_rays::{ShadowRays, rays_cheaper_than_maps};
 pub use filter::DepthFilter;
 
 use crate::raster::{DepthMap, PreparedScene, Viewport, render_depth};
@@ -46,12 +50,24 @@ pub struct ShadowSettings {
     pub bias_texels: f32,
     /// Whether a lookup the filter finds partly lit is settled by an exact shadow ray.
     pub exact_edges: bool,
+    /// With exact edges, whether lights are shadowed by exact rays alone, drawing no map, where
+    /// those cost less (`rays_cheaper_than_maps`).
+    pub rays_where_cheaper: bool,
+}
+
+impl ShadowSettings {
+    /// Whether these settings shadow `scene` by exact rays alone.
+    fn by_rays(&self, scene: &Scene) -> bool {
+        self.exact_edges && self.rays_where_cheaper && rays_cheaper_than_maps(scene)
+    }
 }
 
 /// Every light's shadow maps for one view of a prepared scene.
 pub struct ShadowMaps {
-    /// Per light of the scene, its maps; `None` where it shadows nothing the camera sees.
-    lights: Vec<Option<LightMaps>>,
+    /// Per light of the scene, its maps or rays; `None` where it shadows nothing the camera sees.
+    lights: Vec<Option<LightShadows>>,
+    /// Per object, whether it can shadow itself; where not, its lookups leave it out.
+    shadows_itself: Vec<bool>,
     /// Per object, how far a lookup on it moves off the surface along its normal before the
     /// bias: twice its mesh's chord error, as the true surface may lie that far behind the
     /// chords the maps were drawn from (inside a bowl), and bend towards the light between taps.
@@ -61,8 +77,17 @@ pub struct ShadowMaps {
     filter: DepthFilter,
     /// Texels a lookup moves off its surface along its normal, besides its lift.
     offset_texels: f32,
-    /// Where set, lookups the filter finds partly lit are settled by exact shadow rays.
+    /// Where set, lookups the filter finds partly lit are settled by exact shadow rays (and
+    /// `LightShadows::Rays` settle every point by them).
     edges: Option<ShadowRays>,
+}
+
+/// How one light's shadows are found.
+enum LightShadows {
+    Maps(LightMaps),
+    /// By exact rays alone (`rays_cheaper_than_maps`), cast only where a point's way to the
+    /// light passes a caster's sphere.
+    Rays(CasterSpheres),
 }
 
 /// One light's maps: one, or a cube's six faces.
@@ -85,12 +110,14 @@ struct ShadowFace {
 /// distance: room for the f32 rounding of the map's depths and the receiver's.
 const DEPTH_ROUNDING: f32 = 5e-5;
 
-/// The bytes the maps of `scene` take at `map_size`, counted before any is drawn: a point light's
-/// cube of six faces or single map, whichever is larger; none when nothing can shadow.
-pub fn map_bytes(scene: &Scene, map_size: u32) -> u64 {
-    if !scene.shadows || !can_shadow(scene) {
+/// The bytes the maps of `scene` take with `settings`, counted before any is drawn: a point
+/// light's cube of six faces or single map, whichever is larger; none when nothing can shadow or
+/// exact rays shadow it all.
+pub fn map_bytes(scene: &Scene, settings: &ShadowSettings) -> u64 {
+    if !scene.shadows || !can_shadow(scene) || settings.by_rays(scene) {
         return 0;
     }
+    let map_size = settings.map_size;
     let texels = u64::from(map_size).pow(2);
     let per_light = |light: &Light| match light {
         Light::Directional { .. } => texels,
@@ -127,9 +154,16 @@ impl ShadowMaps {
         let casting: Vec<Vec<usize>> = (scene.lights.iter())
             .map(|light| casters(prepared, &boxes, light))
             .collect();
+        let by_rays = settings.by_rays(scene);
         let lights = (scene.lights.par_iter().zip(&casting))
             .map(|(light, casters)| {
                 let region = shadowing_region(light, &seen?, &whole, casters, &boxes)?;
+                if by_rays {
+                    let margin = f32_rounding(camera, light, &whole);
+                    let spheres =
+                        CasterSpheres::new(prepared, casters, &boxes, light, camera.eye, margin);
+                    return Some(LightShadows::Rays(spheres));
+                }
                 let views = match *light {
                     Light::Directional { towards, .. } => {
                         vec![directional_view(towards, &region, settings.map_size)]
@@ -145,11 +179,15 @@ impl ShadowMaps {
                 let margin = texels * widest + 2.0 * largest_lift;
                 let spheres =
                     CasterSpheres::new(prepared, casters, &boxes, light, camera.eye, margin);
-                Some(LightMaps::draw(prepared, camera, casters, views, spheres))
+                let maps = LightMaps::draw(prepared, camera, casters, views, spheres);
+                Some(LightShadows::Maps(maps))
             })
             .collect();
         Some(ShadowMaps {
             lights,
+            shadows_itself: (prepared.objects.iter())
+                .map(|o| can_shadow_itself(&o.surface))
+                .collect(),
             lifts,
             curvatures: prepared
                 .objects
@@ -164,6 +202,17 @@ impl ShadowMaps {
                 .flatten(),
         })
     }
+}
+
+/// How far, in world units, the f32 camera-relative points and spheres of a light's caster test
+/// may be off: a ten-thousandth of the distances involved, far past f32's rounding.
+fn f32_rounding(camera: &Camera, light: &Light, whole: &Bounds) -> f32 {
+    let light_distance = match *light {
+        Light::Point { position, .. } => position.distance(camera.eye),
+        Light::Directional { .. } => 0.0,
+    };
+    let extent = whole.min.distance(whole.max) + whole.centre().distance(camera.eye);
+    (1e-4 * (extent + light_distance)) as f32
 }
 
 /// The part of the scene a light's map must cover: its casters, as far as they lie between the
@@ -428,10 +477,60 @@ impl Shadowing for ShadowMaps {
         normals: &[Vec3],
         out: &mut [f32],
     ) {
-        let Some(Some(maps)) = self.lights.get(light) else {
+        let Some(Some(shadows)) = self.lights.get(light) else {
             out.fill(1.0);
             return;
         };
+        let own = self.own_caster(object);
+        match shadows {
+            LightShadows::Rays(spheres) => {
+                let rays = (self.edges.as_ref()).expect("rays are drawn with exact edges");
+                for ((out, &p), &n) in out.iter_mut().zip(points).zip(normals) {
+                    let facing = spheres.facing(p, n);
+                    let lit = if facing > 0.0 {
+                        spheres.clear_of_all(p, own) || !rays.blocked_at(light, p, n, own)
+                    } else {
+                        // Where the light grazes the surface from behind, the ray decides, the
+                        // receiver included, as the reference's does.
+                        facing > -GRAZING && !rays.blocked_at(light, p, n, None)
+                    };
+                    *out = if lit { 1.0 } else { 0.0 };
+                }
+            }
+            LightShadows::Maps(maps) => {
+                self.reaching_by_maps(maps, light, object, (points, normals), out)
+            }
+        }
+    }
+}
+
+impl ShadowMaps {
+    /// How many maps are drawn, a cube's faces each counted (none for a light shadowed by rays).
+    pub fn maps_drawn(&self) -> usize {
+        let maps = |light: &LightShadows| match light {
+            LightShadows::Maps(maps) => maps.faces.len(),
+            LightShadows::Rays(_) => 0,
+        };
+        self.lights.iter().flatten().map(maps).sum()
+    }
+
+    /// The caster a lookup on `object` leaves out: itself, where it cannot shadow itself (once
+    /// the light is seen to reach the side of it that is seen).
+    fn own_caster(&self, object: usize) -> Option<usize> {
+        let shadows_itself = self.shadows_itself.get(object).copied().unwrap_or(true);
+        (!shadows_itself).then_some(object)
+    }
+
+    /// `reaching` through a light's maps, for fragments at `points` with facing `normals`.
+    fn reaching_by_maps(
+        &self,
+        maps: &LightMaps,
+        light: usize,
+        object: usize,
+        (points, normals): (&[Vec3], &[Vec3]),
+        out: &mut [f32],
+    ) {
+        let own = self.own_caster(object);
         let curvature = self.curvatures.get(object).copied().unwrap_or(0.0);
         let receiver = Receiver {
             lift: self.lifts.get(object).copied().unwrap_or(0.0),
@@ -441,10 +540,16 @@ impl Shadowing for ShadowMaps {
             },
         };
         for ((out, &p), &n) in out.iter_mut().zip(points).zip(normals) {
-            let lookup = if maps.casters.clear_of_all(p) {
-                MapAnswer::LIT
-            } else {
-                maps.face_for(p).reach(p, n, self, receiver)
+            let lookup = match (maps.casters.clear_of_all(p, own), own) {
+                (true, None) => MapAnswer::LIT,
+                (true, Some(_)) => {
+                    let facing = maps.casters.facing(p, n);
+                    MapAnswer {
+                        lit: if facing > 0.0 { 1.0 } else { 0.0 },
+                        grazing: facing.abs() < GRAZING,
+                    }
+                }
+                (false, _) => maps.face_for(p).reach(p, n, self, receiver),
             };
             *out = lookup.lit;
             // The filter's edge band, where a map cannot place an edge closer than its texels,
@@ -452,7 +557,7 @@ impl Shadowing for ShadowMaps {
             // a surface from its own shadow: there an exact shadow ray settles it.
             let uncertain = (lookup.lit > 0.0 && lookup.lit < 1.0) || lookup.grazing;
             if let Some(rays) = self.edges.as_ref().filter(|_| uncertain) {
-                *out = if rays.blocked_at(light, p, n) {
+                *out = if rays.blocked_at(light, p, n, None) {
                     0.0
                 } else {
                     1.0

@@ -110,14 +110,19 @@ fn shadow_maps_over_the_budget_are_refused_before_any_is_drawn() {
     let scene = spheres_scene(&dir, "two.toml", &["brick", "brick"]);
     // An 8192² map of 4-byte depths for the one light: 256 MiB, refused by a 64 MiB budget
     // within a 384 MiB cap.
+    // (Filtered edges: with exact ones, spheres and planes are shadowed by rays alone.)
     let budget = [("BUMPWORK_MEMORY_MIB", "64")];
-    let huge = ["--set", "quality.shadow-map=8192"];
+    let filtered = ["--set", "quality.shadow-edges=filtered"];
+    let huge = [&["--set", "quality.shadow-map=8192"][..], &filtered].concat();
     let output = render_capped(&scene, &huge, &budget, 384);
     assert_user_error(&output, "shadow maps take");
     assert!(!scene.with_extension("png").exists(), "nothing is written");
-    // Without shadows nothing is drawn, so nothing is counted.
-    let off = ["--set", "quality.shadow-map=8192", "--set", "shadows=false"];
+    // Without shadows, or with rays alone, no map is drawn, so nothing is counted.
+    let off = [&huge[..], &["--set", "shadows=false"]].concat();
     let output = render_capped(&scene, &off, &budget, 384);
+    assert!(output.status.success(), "{output:?}");
+    let by_rays = ["--set", "quality.shadow-map=8192"];
+    let output = render_capped(&scene, &by_rays, &budget, 384);
     assert!(output.status.success(), "{output:?}");
 }
 

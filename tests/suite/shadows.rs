@@ -7,7 +7,9 @@ use bumpwork::raster::{Framebuffer, PreparedScene, Viewport};
 use bumpwork::reference::{exact_shader, render_reference};
 use bumpwork::scene::{Scene, parse_scene};
 use bumpwork::shade::LitShader;
+use bumpwork::shadow::{ShadowMaps, ShadowSettings};
 use glam::Vec3;
+use std::sync::Arc;
 
 const VIEW: Viewport = Viewport {
     width: 160,
@@ -58,11 +60,33 @@ fn without_shadows(scene: &Scene) -> Scene {
     }
 }
 
+/// How the rasterizer's shadows are found.
+#[derive(Clone, Copy, Debug)]
+enum By {
+    /// As the quality chooses: by exact rays alone where those cost less than maps (scenes of
+    /// spheres, planes and triangles with exact edges).
+    Choice,
+    /// Through maps, as in a scene holding a surface that exact rays cost more for.
+    Maps,
+}
+
+const BOTH_WAYS: [By; 2] = [By::Choice, By::Maps];
+
 /// The rasterizer's frame at `quality` (one sample a pixel).
 fn raster(scene: &Scene, quality: &Quality) -> Framebuffer {
+    raster_by(scene, quality, By::Choice)
+}
+
+/// The rasterizer's frame at `quality`, its shadows found `by`.
+fn raster_by(scene: &Scene, quality: &Quality, by: By) -> Framebuffer {
     let camera = &scene.camera;
     let prepared = quality.prepare(scene.clone(), camera, VIEW, 0).unwrap();
-    let shader = quality.shader(&prepared, camera, VIEW);
+    let settings = ShadowSettings {
+        rays_where_cheaper: matches!(by, By::Choice),
+        ..quality.shadow_settings()
+    };
+    let maps = ShadowMaps::build(&prepared, camera, VIEW, settings).map(Arc::new);
+    let shader = quality.shader_with_maps(&prepared, camera, maps);
     render_with(&prepared, &quality.target(camera, VIEW), &shader).0
 }
 
@@ -143,11 +167,11 @@ fn misplaced(ours: &[Option<(bool, f32)>], exact: &[Option<(bool, f32)>]) -> Vec
     out
 }
 
-/// The raster's and the reference's shadows of `scene` at `quality`, compared pixel by pixel:
-/// returns how many pixels each says are in shadow, after asserting every difference lies on
-/// the reference's boundary.
-fn assert_boundary_within_a_pixel(scene: &Scene, quality: &Quality, what: &str) -> usize {
-    let ours = light_fractions(scene, |s| raster(s, quality));
+/// The raster's (at `quality`, its shadows found `by`) and the reference's shadows of `scene`,
+/// compared pixel by pixel: returns how many pixels the reference says are in shadow, after
+/// asserting every difference lies on its boundary.
+fn assert_boundary_within_a_pixel(scene: &Scene, quality: &Quality, by: By, what: &str) -> usize {
+    let ours = light_fractions(scene, |s| raster_by(s, quality, by));
     let exact = light_fractions(scene, reference);
     let wrong = misplaced(&shadowed(&ours), &shadowed(&exact));
     let in_shadow = shadowed(&exact)
@@ -165,7 +189,7 @@ fn assert_boundary_within_a_pixel(scene: &Scene, quality: &Quality, what: &str) 
         .collect();
     assert!(
         wrong.is_empty(),
-        "{what}: {} pixels more than a pixel from the exact shadow boundary (of {in_shadow} in \
+        "{what} by {by:?}: {} pixels more than a pixel from the exact shadow boundary (of {in_shadow} in \
          shadow): (fraction, depth) {shown:?}",
         wrong.len(),
     );
@@ -189,15 +213,20 @@ fn a_plane_lit_at_a_grazing_angle_is_nowhere_darker_than_without_shadows() {
                 &sphere([0.0, -3.0, 0.0], 1.0),
             );
             for quality in [Quality::draft(), Quality::interactive(), Quality::high()] {
-                let with = raster(&scene, &quality);
                 let without = raster(&without_shadows(&scene), &quality);
-                let darker = with
-                    .color()
-                    .iter()
-                    .zip(without.color())
-                    .filter(|(a, b)| a.x < b.x - 1e-6)
-                    .count();
-                assert_eq!(darker, 0, "{darker} pixels acne at {elevation}° ({lights})");
+                for by in BOTH_WAYS {
+                    let with = raster_by(&scene, &quality, by);
+                    let darker = with
+                        .color()
+                        .iter()
+                        .zip(without.color())
+                        .filter(|(a, b)| a.x < b.x - 1e-6)
+                        .count();
+                    assert_eq!(
+                        darker, 0,
+                        "{darker} pixels acne at {elevation}° ({lights}) by {by:?}"
+                    );
+                }
             }
         }
     }
@@ -235,17 +264,19 @@ fn a_resting_spheres_shadow_reaches_its_contact_with_the_floor() {
             touching.len()
         );
         for quality in [Quality::interactive(), Quality::high()] {
-            let in_shadow = assert_boundary_within_a_pixel(&scene, &quality, &lights);
-            assert!(in_shadow > 200, "the shadow is seen: {in_shadow} pixels");
-            let ours = shadowed(&light_fractions(&scene, |s| raster(s, &quality)));
-            for &i in &touching {
-                let (x, y) = (i as u32 % VIEW.width, i as u32 / VIEW.width);
-                let gap = ours[i].is_some_and(|(dark, _)| !dark);
-                assert!(
-                    !gap,
-                    "{lights}: a lit gap under the sphere at {x},{y} at {}",
-                    quality.describe()
-                );
+            for by in BOTH_WAYS {
+                let in_shadow = assert_boundary_within_a_pixel(&scene, &quality, by, &lights);
+                assert!(in_shadow > 200, "the shadow is seen: {in_shadow} pixels");
+                let ours = shadowed(&light_fractions(&scene, |s| raster_by(s, &quality, by)));
+                for &i in &touching {
+                    let (x, y) = (i as u32 % VIEW.width, i as u32 / VIEW.width);
+                    let gap = ours[i].is_some_and(|(dark, _)| !dark);
+                    assert!(
+                        !gap,
+                        "{lights}: a lit gap under the sphere at {x},{y} at {} by {by:?}",
+                        quality.describe()
+                    );
+                }
             }
         }
     }
@@ -264,8 +295,10 @@ fn the_shadow_boundary_is_within_a_pixel_of_the_exact_one_at_high() {
     for (lights, what) in cases {
         let objects = format!("{}\n{}", resting_sphere(), sphere([2.2, 0.6, 0.8], 0.6));
         let scene = scene([0.0, 3.0, 8.0], [0.5, 0.6, 0.0], &lights, &objects);
-        let in_shadow = assert_boundary_within_a_pixel(&scene, &Quality::high(), what);
-        assert!(in_shadow > 300, "{what}: {in_shadow} pixels in shadow");
+        for by in BOTH_WAYS {
+            let in_shadow = assert_boundary_within_a_pixel(&scene, &Quality::high(), by, what);
+            assert!(in_shadow > 300, "{what}: {in_shadow} pixels in shadow");
+        }
     }
 }
 
@@ -279,8 +312,8 @@ fn exact_shadow_edges_shadow_the_very_pixels_the_exact_shadow_rays_do_at_interac
         let scene = scene([0.0, 3.0, 8.0], [0.5, 0.6, 0.0], &lights, &objects);
         // Pixels where a tenth of the light or more reaches one frame and not the other.
         let exact = light_fractions(&scene, reference);
-        let differ = |quality: &Quality| {
-            let ours = light_fractions(&scene, |s| raster(s, quality));
+        let differ = |quality: &Quality, by: By| {
+            let ours = light_fractions(&scene, |s| raster_by(s, quality, by));
             let apart = |a: &Option<(f32, f32)>, b: &Option<(f32, f32)>| match (a, b) {
                 (Some(a), Some(b)) => (a.0 - b.0).abs() > 0.1,
                 (a, b) => a.is_some() != b.is_some(),
@@ -296,11 +329,21 @@ fn exact_shadow_edges_shadow_the_very_pixels_the_exact_shadow_rays_do_at_interac
             shadow_edges: ShadowEdges::Filtered,
             ..rays
         };
-        let (with_rays, with_filter) = (differ(&rays), differ(&filtered));
-        eprintln!("{what}: {with_rays} pixels differ ({with_filter} with filtered edges)");
+        let (with_rays, with_filter) = (differ(&rays, By::Maps), differ(&filtered, By::Maps));
+        let rays_alone = differ(&rays, By::Choice);
+        eprintln!(
+            "{what}: {with_rays} pixels differ ({with_filter} with filtered edges, {rays_alone} \
+             with rays alone)"
+        );
         assert!(
             with_rays <= 2,
             "{what}: {with_rays} pixels shadowed otherwise than exactly"
+        );
+        // Rays alone are the reference's shadow rays, so whatever pixels differ differ for
+        // another reason (the maps' run found it too).
+        assert!(
+            rays_alone <= with_rays,
+            "{what}: rays alone differ in {rays_alone}, more than maps with exact edges"
         );
         assert!(
             with_filter > 10,
@@ -320,23 +363,23 @@ fn a_light_below_the_floor_lights_nothing_above_it() {
             lights: Vec::new(),
             ..scene.clone()
         };
-        let (lit, ambient) = (
-            raster(&scene, &Quality::interactive()),
-            raster(&dark, &Quality::interactive()),
-        );
-        // Brighter by no 8-bit step: the filter's taps at the sphere's terminator, where the
-        // light grazes it, may let through a few thousandths of it.
-        let srgb = |c: &Vec3| c.to_array().map(bumpwork::raster::linear_to_srgb8);
-        let brighter = lit
-            .color()
-            .iter()
-            .zip(ambient.color())
-            .filter(|(a, b)| srgb(a) != srgb(b))
-            .count();
-        assert_eq!(
-            brighter, 0,
-            "{lights}: {brighter} pixels see the light through the floor"
-        );
+        let ambient = raster(&dark, &Quality::interactive());
+        for by in BOTH_WAYS {
+            let lit = raster_by(&scene, &Quality::interactive(), by);
+            // Brighter by no 8-bit step: the filter's taps at the sphere's terminator, where the
+            // light grazes it, may let through a few thousandths of it.
+            let srgb = |c: &Vec3| c.to_array().map(bumpwork::raster::linear_to_srgb8);
+            let brighter = lit
+                .color()
+                .iter()
+                .zip(ambient.color())
+                .filter(|(a, b)| srgb(a) != srgb(b))
+                .count();
+            assert_eq!(
+                brighter, 0,
+                "{lights} by {by:?}: {brighter} pixels see the light through the floor"
+            );
+        }
         // Without shadows the sphere's underside would be lit (it faces the light).
         let through = raster(&without_shadows(&scene), &Quality::interactive());
         assert!(
@@ -354,8 +397,11 @@ fn a_light_behind_the_camera_casts_the_exact_shadows() {
         &point_light([-5.0, 4.0, 13.0]),
         &resting_sphere(),
     );
-    let in_shadow = assert_boundary_within_a_pixel(&scene, &Quality::high(), "behind the camera");
-    assert!(in_shadow > 100, "{in_shadow} pixels in shadow");
+    for by in BOTH_WAYS {
+        let in_shadow =
+            assert_boundary_within_a_pixel(&scene, &Quality::high(), by, "behind the camera");
+        assert!(in_shadow > 100, "{in_shadow} pixels in shadow");
+    }
 }
 
 #[test]
@@ -382,7 +428,7 @@ fn a_point_light_inside_a_bowl_lights_all_of_its_inside_and_none_of_its_outside(
             "a pixel of the inside gets {worst} of the light"
         );
     }
-    assert_boundary_within_a_pixel(&scene, &Quality::interactive(), "inside a bowl");
+    assert_boundary_within_a_pixel(&scene, &Quality::interactive(), By::Choice, "inside a bowl");
 }
 
 #[test]
@@ -394,10 +440,7 @@ fn a_sphere_lit_from_behind_darkens_the_floor_before_it_to_ambient_and_changes_n
         &resting_sphere(),
     );
     let quality = Quality::interactive();
-    let (with, without) = (
-        raster(&scene, &quality),
-        raster(&without_shadows(&scene), &quality),
-    );
+    let without = raster(&without_shadows(&scene), &quality);
     let exact = shadowed(&light_fractions(&scene, reference));
     let (w, h) = (VIEW.width as i64, VIEW.height as i64);
     let near_exact_shadow = |x: i64, y: i64| {
@@ -409,31 +452,64 @@ fn a_sphere_lit_from_behind_darkens_the_floor_before_it_to_ambient_and_changes_n
         })
     };
     let floor_ambient = Vec3::splat(0.6 * AMBIENT);
-    let (mut changed, mut at_ambient) = (0, 0);
-    for y in 0..h {
-        for x in 0..w {
-            let i = (y * w + x) as usize;
-            let (a, b) = (with.color()[i], without.color()[i]);
-            if a == b {
-                continue;
-            }
-            changed += 1;
-            assert!(
-                near_exact_shadow(x, y),
-                "pixel {x},{y} changed outside the shadow: {a} vs {b}"
-            );
-            assert!(a.x < b.x, "pixel {x},{y} brighter with shadows");
-            if (a - floor_ambient).abs().max_element() < 1e-5 {
-                at_ambient += 1;
+    for by in BOTH_WAYS {
+        let with = raster_by(&scene, &quality, by);
+        let (mut changed, mut at_ambient) = (0, 0);
+        for y in 0..h {
+            for x in 0..w {
+                let i = (y * w + x) as usize;
+                let (a, b) = (with.color()[i], without.color()[i]);
+                if a == b {
+                    continue;
+                }
+                changed += 1;
+                assert!(
+                    near_exact_shadow(x, y),
+                    "pixel {x},{y} changed outside the shadow by {by:?}: {a} vs {b}"
+                );
+                assert!(a.x < b.x, "pixel {x},{y} brighter with shadows by {by:?}");
+                if (a - floor_ambient).abs().max_element() < 1e-5 {
+                    at_ambient += 1;
+                }
             }
         }
+        assert!(changed > 300, "{changed} pixels in shadow by {by:?}");
+        // Inside the shadow, all but its edge is at the ambient level exactly.
+        assert!(
+            at_ambient as f64 > 0.7 * changed as f64,
+            "{at_ambient} of {changed} at ambient by {by:?}"
+        );
     }
-    assert!(changed > 300, "{changed} pixels in shadow");
-    // Inside the shadow, all but its edge is at the ambient level exactly.
-    assert!(
-        at_ambient as f64 > 0.7 * changed as f64,
-        "{at_ambient} of {changed} at ambient"
-    );
+}
+
+#[test]
+fn spheres_and_planes_with_exact_edges_draw_no_map_and_a_cone_brings_the_maps_back() {
+    let objects = format!("{}\n{}", resting_sphere(), sphere([2.2, 0.6, 0.8], 0.6));
+    let cone = "[[object]]\nsurface = { cone = { apex = [-3, 1, -2], axis = [0, -1, 0], \
+                half-angle = 25, height = 1 } }";
+    let maps_drawn = |objects: &str, quality: &Quality| {
+        let scene = scene(
+            [0.0, 3.0, 8.0],
+            [0.5, 0.6, 0.0],
+            &point_light([3.0, 3.0, -1.0]),
+            objects,
+        );
+        let camera = &scene.camera;
+        let prepared = quality.prepare(scene.clone(), camera, VIEW, 0).unwrap();
+        let maps = ShadowMaps::build(&prepared, camera, VIEW, quality.shadow_settings());
+        maps.expect("the spheres shadow the floor").maps_drawn()
+    };
+    for quality in [Quality::interactive(), Quality::high()] {
+        assert_eq!(maps_drawn(&objects, &quality), 0, "{}", quality.describe());
+        let with_cone = format!("{objects}\n{cone}");
+        assert!(
+            maps_drawn(&with_cone, &quality) > 0,
+            "{}",
+            quality.describe()
+        );
+    }
+    // Filtered edges keep the maps' soft edges.
+    assert!(maps_drawn(&objects, &Quality::draft()) > 0);
 }
 
 #[test]
