@@ -1,6 +1,8 @@
-//! A sphere around each caster of a light, to tell without a map that a point is in no caster's
-//! shadow: when its segment to the light (its ray, for a directional light) passes no sphere.
-//! Most of a floor under a sphere is told so.
+//! A sphere around each caster of a light, to tell without a map or a ray that a point is in no
+//! caster's shadow: when its segment to the light (its ray, for a directional light) passes no
+//! sphere. Most of a floor under a sphere is told so. Where the caster is itself a sphere, a
+//! segment passing well inside it is as surely in its shadow. Points are screened a lane of them
+//! at a time (structure-of-arrays loops, compiled to SIMD over points).
 
 use super::bounds::Bounds;
 use crate::raster::PreparedScene;
@@ -11,6 +13,9 @@ use glam::{DVec3, Vec3};
 /// The most casters whose spheres a point is tested against: past that, testing each would cost
 /// more per fragment than the lookup it saves.
 pub const MOST_SPHERES: usize = 16;
+
+/// Points screened at once.
+pub const SCREEN_LANES: usize = 64;
 
 /// The casters' spheres and the light, relative to the camera's eye (f32, subtracted in f64).
 pub struct CasterSpheres {
@@ -25,6 +30,9 @@ struct CasterSphere {
     object: usize,
     centre: Vec3,
     radius: f32,
+    /// Within this distance of the centre a segment surely meets the caster: a sphere caster's
+    /// own radius less the margin; zero for any other caster.
+    solid: f32,
 }
 
 enum LightAt {
@@ -33,9 +41,31 @@ enum LightAt {
     Directional(Vec3),
 }
 
+/// What the spheres tell of a lane of points (the first `len` lanes).
+pub struct Screened {
+    pub len: usize,
+    /// The cosine between each point's normal and its way to the light (NaN at a point light).
+    pub facing: [f32; SCREEN_LANES],
+    /// Whether the point's way to the light passes every sphere left in.
+    pub clear: [bool; SCREEN_LANES],
+    /// Whether its way passes well inside a sphere caster left in: surely in shadow.
+    pub blocked: [bool; SCREEN_LANES],
+}
+
+impl Default for Screened {
+    fn default() -> Self {
+        Screened {
+            len: 0,
+            facing: [0.0; SCREEN_LANES],
+            clear: [false; SCREEN_LANES],
+            blocked: [false; SCREEN_LANES],
+        }
+    }
+}
+
 impl CasterSpheres {
     /// Spheres around `casters`, grown by `margin` world units (what a lookup's taps and lift
-    /// may reach past a caster's outline).
+    /// may reach past a caster's outline, and f32's rounding).
     pub fn new(
         prepared: &PreparedScene,
         casters: &[usize],
@@ -48,17 +78,20 @@ impl CasterSpheres {
             casters
                 .iter()
                 .filter_map(|&index| {
-                    let (centre, radius) = match &prepared.objects[index].surface {
-                        Surface::Sphere(s) => (s.center, f64::from(s.radius)),
+                    let (centre, radius, solid) = match &prepared.objects[index].surface {
+                        Surface::Sphere(s) => {
+                            (s.center, f64::from(s.radius), (s.radius - margin).max(0.0))
+                        }
                         _ => {
                             let b = boxes[index]?;
-                            (b.centre(), b.min.distance(b.max) / 2.0)
+                            (b.centre(), b.min.distance(b.max) / 2.0, 0.0)
                         }
                     };
                     Some(CasterSphere {
                         object: index,
                         centre: (centre - eye).as_vec3(),
                         radius: radius as f32 + margin,
+                        solid,
                     })
                 })
                 .collect()
@@ -72,35 +105,74 @@ impl CasterSpheres {
         CasterSpheres { spheres, light }
     }
 
-    /// Whether the camera-relative point `p` sees the light past the sphere of every caster
-    /// but object `except`.
-    #[inline(always)]
-    pub fn clear_of_all(&self, p: Vec3, except: Option<usize>) -> bool {
-        let Some(spheres) = &self.spheres else {
-            return false;
-        };
-        let mut others = spheres.iter().filter(|s| Some(s.object) != except);
-        others.all(|&CasterSphere { centre, radius, .. }| {
-            let to_centre = centre - p;
-            let closest = match self.light {
-                LightAt::Point(light) => {
-                    let to_light = light - p;
-                    let t = (to_centre.dot(to_light) / to_light.length_squared()).clamp(0.0, 1.0);
-                    to_light * t
-                }
-                LightAt::Directional(towards) => towards * to_centre.dot(towards).max(0.0),
-            };
-            (to_centre - closest).length_squared() > radius * radius
-        })
+    /// Screens up to `SCREEN_LANES` camera-relative points with unit `normals` into `out`,
+    /// leaving object `except`'s sphere out.
+    pub fn screen(
+        &self,
+        points: &[Vec3],
+        normals: &[Vec3],
+        except: Option<usize>,
+        out: &mut Screened,
+    ) {
+        crate::simd::widest(
+            #[inline(always)]
+            || self.screen_lanes(points, normals, except, out),
+        );
     }
 
-    /// The cosine between the unit normal `n` at camera-relative point `p` and the way to the
-    /// light (NaN where `p` is at a point light).
+    /// `screen`'s loops, inlined into its call so they are compiled for the widest SIMD.
     #[inline(always)]
-    pub fn facing(&self, p: Vec3, n: Vec3) -> f32 {
-        match self.light {
-            LightAt::Point(light) => n.dot((light - p).normalize()),
-            LightAt::Directional(towards) => n.dot(towards),
+    fn screen_lanes(
+        &self,
+        points: &[Vec3],
+        normals: &[Vec3],
+        except: Option<usize>,
+        out: &mut Screened,
+    ) {
+        let len = points.len().min(normals.len()).min(SCREEN_LANES);
+        out.len = len;
+        let (mut p, mut n) = ([[0.0f32; SCREEN_LANES]; 3], [[0.0f32; SCREEN_LANES]; 3]);
+        for (k, (point, normal)) in points.iter().zip(normals).take(len).enumerate() {
+            (p[0][k], p[1][k], p[2][k]) = (point.x, point.y, point.z);
+            (n[0][k], n[1][k], n[2][k]) = (normal.x, normal.y, normal.z);
+        }
+        let to_light = match self.light {
+            LightAt::Point(light) => {
+                let towards = |axis: usize| p[axis].map(|p| light[axis] - p);
+                [towards(0), towards(1), towards(2)]
+            }
+            LightAt::Directional(towards) => towards.to_array().map(|t| [t; SCREEN_LANES]),
+        };
+        let at = |lanes: &[[f32; SCREEN_LANES]; 3], k: usize| {
+            Vec3::new(lanes[0][k], lanes[1][k], lanes[2][k])
+        };
+        for k in 0..SCREEN_LANES {
+            let way = at(&to_light, k);
+            out.facing[k] = at(&n, k).dot(way) / way.length();
+        }
+        let Some(spheres) = &self.spheres else {
+            out.clear = [false; SCREEN_LANES];
+            out.blocked = [false; SCREEN_LANES];
+            return;
+        };
+        out.clear = [true; SCREEN_LANES];
+        out.blocked = [false; SCREEN_LANES];
+        let point_light = matches!(self.light, LightAt::Point(_));
+        for sphere in spheres.iter().filter(|s| Some(s.object) != except) {
+            for k in 0..SCREEN_LANES {
+                let way = at(&to_light, k);
+                let to_centre = sphere.centre - at(&p, k);
+                // The segment's (or ray's) nearest point to the centre.
+                let along = to_centre.dot(way);
+                let t = if point_light {
+                    (along / way.length_squared()).clamp(0.0, 1.0)
+                } else {
+                    along.max(0.0)
+                };
+                let apart = (to_centre - way * t).length_squared();
+                out.clear[k] &= apart > sphere.radius * sphere.radius;
+                out.blocked[k] |= apart < sphere.solid * sphere.solid;
+            }
         }
     }
 }
@@ -115,35 +187,40 @@ mod tests {
                 object: 0,
                 centre: Vec3::new(0.0, 1.0, 0.0),
                 radius: 1.0,
+                solid: 0.9,
             }]),
             light,
         }
     }
 
+    /// What `spheres` tell of one point on a floor (normal +y), leaving `except` out.
+    fn screened(spheres: &CasterSpheres, p: Vec3, except: Option<usize>) -> (bool, bool, f32) {
+        let mut out = Screened::default();
+        spheres.screen(&[p], &[Vec3::Y], except, &mut out);
+        assert_eq!(out.len, 1);
+        (out.clear[0], out.blocked[0], out.facing[0])
+    }
+
     #[test]
     fn only_points_whose_way_to_the_light_passes_a_sphere_are_not_clear() {
         let above = spheres(LightAt::Point(Vec3::new(0.0, 10.0, 0.0)));
-        assert!(
-            !above.clear_of_all(Vec3::new(0.3, 0.0, 0.0), None),
-            "under the sphere"
-        );
-        assert!(
-            above.clear_of_all(Vec3::new(3.0, 0.0, 0.0), None),
-            "beside it"
-        );
-        assert!(
-            above.clear_of_all(Vec3::new(0.3, 0.0, 0.0), Some(0)),
-            "under the sphere, with the sphere left out"
-        );
+        let (clear, blocked, _) = screened(&above, Vec3::new(0.3, 0.0, 0.0), None);
+        assert!(!clear && blocked, "under the sphere");
+        let (clear, blocked, facing) = screened(&above, Vec3::new(3.0, 0.0, 0.0), None);
+        assert!(clear && !blocked, "beside it");
+        assert!((facing - 10.0 / 109f32.sqrt()).abs() < 1e-6, "{facing}");
+        let (clear, _, _) = screened(&above, Vec3::new(0.3, 0.0, 0.0), Some(0));
+        assert!(clear, "under the sphere, with the sphere left out");
+        // Passing 0.95 from the centre: inside the sphere but not surely.
+        let (clear, blocked, _) = screened(&above, Vec3::new(1.056, 0.0, 0.0), None);
+        assert!(!clear && !blocked, "at the edge");
         // Between the sphere and the light: the segment stops before the sphere.
-        assert!(above.clear_of_all(Vec3::new(0.0, 5.0, 0.0), None));
+        assert!(screened(&above, Vec3::new(0.0, 5.0, 0.0), None).0);
         let sun = spheres(LightAt::Directional(Vec3::new(1.0, 1.0, 0.0).normalize()));
+        let (clear, blocked, _) = screened(&sun, Vec3::new(-1.0, 0.0, 0.0), None);
+        assert!(!clear && blocked, "in the shadow's path");
         assert!(
-            !sun.clear_of_all(Vec3::new(-1.0, 0.0, 0.0), None),
-            "in the shadow's path"
-        );
-        assert!(
-            sun.clear_of_all(Vec3::new(2.5, 0.0, 0.0), None),
+            screened(&sun, Vec3::new(2.5, 0.0, 0.0), None).0,
             "on the lit side"
         );
     }

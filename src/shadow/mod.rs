@@ -30,7 +30,7 @@ pub use filter::DepthFilter;
 use crate::raster::{DepthMap, PreparedScene, Viewport, render_depth};
 use crate::scene::{Camera, Light, Scene};
 use crate::shade::Shadowing;
-use caster_spheres::CasterSpheres;
+use caster_spheres::{CasterSpheres, SCREEN_LANES, Screened};
 use depth_blocks::DepthBlocks;
 use glam::Vec3;
 use light_views::{MapView, cube_face_of, cube_face_size, directional_view, point_views};
@@ -451,6 +451,11 @@ impl MapAnswer {
         lit: 1.0,
         grazing: false,
     };
+    /// In shadow, settled without a map: the way to the light passes well inside a sphere.
+    const DARK: MapAnswer = MapAnswer {
+        lit: 0.0,
+        grazing: false,
+    };
 }
 
 /// One lookup on a map: where it falls, the receiver's depth there, how much rounding to allow
@@ -485,16 +490,25 @@ impl Shadowing for ShadowMaps {
         match shadows {
             LightShadows::Rays(spheres) => {
                 let rays = (self.edges.as_ref()).expect("rays are drawn with exact edges");
-                for ((out, &p), &n) in out.iter_mut().zip(points).zip(normals) {
-                    let facing = spheres.facing(p, n);
-                    let lit = if facing > 0.0 {
-                        spheres.clear_of_all(p, own) || !rays.blocked_at(light, p, n, own)
-                    } else {
-                        // Where the light grazes the surface from behind, the ray decides, the
-                        // receiver included, as the reference's does.
-                        facing > -GRAZING && !rays.blocked_at(light, p, n, None)
-                    };
-                    *out = if lit { 1.0 } else { 0.0 };
+                let mut screened = Screened::default();
+                for (first, out) in (0..)
+                    .step_by(SCREEN_LANES)
+                    .zip(out.chunks_mut(SCREEN_LANES))
+                {
+                    let (points, normals) = (&points[first..], &normals[first..]);
+                    spheres.screen(points, normals, own, &mut screened);
+                    for (k, out) in out.iter_mut().enumerate() {
+                        let (p, n, facing) = (points[k], normals[k], screened.facing[k]);
+                        let lit = if facing > 0.0 {
+                            screened.clear[k]
+                                || !(screened.blocked[k] || rays.blocked_at(light, p, n, own))
+                        } else {
+                            // Where the light grazes the surface from behind, the ray decides,
+                            // the receiver included, as the reference's does.
+                            facing > -GRAZING && !rays.blocked_at(light, p, n, None)
+                        };
+                        *out = if lit { 1.0 } else { 0.0 };
+                    }
                 }
             }
             LightShadows::Maps(maps) => {
@@ -539,30 +553,39 @@ impl ShadowMaps {
                 curvature => 2.0 * (2.0 * self.filter.reach() / curvature).sqrt(),
             },
         };
-        for ((out, &p), &n) in out.iter_mut().zip(points).zip(normals) {
-            let lookup = match (maps.casters.clear_of_all(p, own), own) {
-                (true, None) => MapAnswer::LIT,
-                (true, Some(_)) => {
-                    let facing = maps.casters.facing(p, n);
-                    MapAnswer {
-                        lit: if facing > 0.0 { 1.0 } else { 0.0 },
-                        grazing: facing.abs() < GRAZING,
-                    }
-                }
-                (false, _) => maps.face_for(p).reach(p, n, self, receiver),
-            };
-            *out = lookup.lit;
-            // The filter's edge band, where a map cannot place an edge closer than its texels,
-            // and the band where the light grazes the surface, where a map's depths cannot tell
-            // a surface from its own shadow: there an exact shadow ray settles it.
-            let uncertain = (lookup.lit > 0.0 && lookup.lit < 1.0) || lookup.grazing;
-            if let Some(rays) = self.edges.as_ref().filter(|_| uncertain) {
-                *out = if rays.blocked_at(light, p, n, None) {
-                    0.0
-                } else {
-                    1.0
+        let mut screened = Screened::default();
+        for (first, out) in (0..)
+            .step_by(SCREEN_LANES)
+            .zip(out.chunks_mut(SCREEN_LANES))
+        {
+            let (points, normals) = (&points[first..], &normals[first..]);
+            maps.casters.screen(points, normals, own, &mut screened);
+            for (k, out) in out.iter_mut().enumerate() {
+                let (p, n) = (points[k], normals[k]);
+                let lookup = match (screened.clear[k], own) {
+                    (true, None) => MapAnswer::LIT,
+                    (true, Some(_)) => MapAnswer {
+                        lit: if screened.facing[k] > 0.0 { 1.0 } else { 0.0 },
+                        grazing: screened.facing[k].abs() < GRAZING,
+                    },
+                    _ if screened.blocked[k] => MapAnswer::DARK,
+                    (false, _) => maps.face_for(p).reach(p, n, self, receiver),
                 };
+                *out = self.settled_at_edges(lookup, light, p, n);
             }
+        }
+    }
+
+    /// A map's answer, or where it is uncertain and exact edges are asked for, the exact ray's.
+    fn settled_at_edges(&self, lookup: MapAnswer, light: usize, p: Vec3, n: Vec3) -> f32 {
+        // The filter's edge band, where a map cannot place an edge closer than its texels, and
+        // the band where the light grazes the surface, where a map's depths cannot tell a
+        // surface from its own shadow: there an exact shadow ray settles it.
+        let uncertain = (lookup.lit > 0.0 && lookup.lit < 1.0) || lookup.grazing;
+        match self.edges.as_ref().filter(|_| uncertain) {
+            Some(rays) if rays.blocked_at(light, p, n, None) => 0.0,
+            Some(_) => 1.0,
+            None => lookup.lit,
         }
     }
 }
