@@ -303,6 +303,24 @@ fn the_shadow_boundary_is_within_a_pixel_of_the_exact_one_at_high() {
 }
 
 #[test]
+fn a_hovering_square_and_triangle_cast_shadows_within_a_pixel_of_the_exact_ones() {
+    let objects = "[[object]]\nsurface = { plane = { origin = [-2.5, 1.5, 1.5], normal = [0, 1, 0], \
+                   u-axis = [1, 0, 0], size = [1.2, 1.2] } }\n\
+                   [[object]]\nsurface = { triangle = { a = [1, 1.2, 1], b = [2.5, 1.4, 1.2], \
+                   c = [1.8, 1.0, -0.5] } }";
+    for (lights, what) in [
+        (directional_light([0.6, 1.0, 0.3]), "directional"),
+        (point_light([-1.0, 5.0, 3.0]), "point light"),
+    ] {
+        let scene = scene([0.0, 3.0, 8.0], [0.0, 0.6, 0.0], &lights, objects);
+        for by in BOTH_WAYS {
+            let in_shadow = assert_boundary_within_a_pixel(&scene, &Quality::high(), by, what);
+            assert!(in_shadow > 200, "{what}: {in_shadow} pixels in shadow");
+        }
+    }
+}
+
+#[test]
 fn exact_shadow_edges_shadow_the_very_pixels_the_exact_shadow_rays_do_at_interactive() {
     let objects = format!("{}\n{}", resting_sphere(), sphere([2.2, 0.6, 0.8], 0.6));
     for (lights, what) in [
