@@ -30,8 +30,9 @@ struct CasterSphere {
     object: usize,
     centre: Vec3,
     radius: f32,
-    /// Within this distance of the centre a segment surely meets the caster: a sphere caster's
-    /// own radius less the margin; zero for any other caster.
+    /// Within this distance of the centre a point's way to the light surely meets the caster: a
+    /// sphere caster's own radius less the margin, where the light is outside it (a way between
+    /// two points inside a sphere meets none of it); zero for any other caster.
     solid: f32,
 }
 
@@ -80,7 +81,12 @@ impl CasterSpheres {
                 .filter_map(|&index| {
                     let (centre, radius, solid) = match &prepared.objects[index].surface {
                         Surface::Sphere(s) => {
-                            (s.center, f64::from(s.radius), (s.radius - margin).max(0.0))
+                            let solid = if light_outside(light, s.center, s.radius + margin) {
+                                (s.radius - margin).max(0.0)
+                            } else {
+                                0.0
+                            };
+                            (s.center, f64::from(s.radius), solid)
                         }
                         _ => {
                             let b = boxes[index]?;
@@ -174,6 +180,15 @@ impl CasterSpheres {
                 out.blocked[k] |= apart < sphere.solid * sphere.solid;
             }
         }
+    }
+}
+
+/// Whether `light` lies outside the sphere of `radius` around `centre` (a directional light
+/// always does).
+fn light_outside(light: &Light, centre: DVec3, radius: f32) -> bool {
+    match *light {
+        Light::Point { position, .. } => position.distance(centre) > f64::from(radius),
+        Light::Directional { .. } => true,
     }
 }
 

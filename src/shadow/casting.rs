@@ -5,7 +5,7 @@ use super::bounds::Bounds;
 use crate::raster::PreparedScene;
 use crate::scene::{Light, Scene};
 use crate::surface::Surface;
-use glam::DVec3;
+use glam::{DVec3, Vec3};
 
 /// Whether a shadow can fall anywhere in the scene. One sphere, plane or triangle alone cannot
 /// shadow itself (its own back side is already turned from the light); a bowl, a cone's inside
@@ -28,6 +28,47 @@ pub(super) fn can_shadow_itself(surface: &Surface) -> bool {
         surface,
         Surface::Sphere(_) | Surface::Plane(_) | Surface::Triangle(_)
     )
+}
+
+/// When a receiver may be left out of its own shadow test.
+#[derive(Clone, Copy, Debug)]
+pub(super) enum SelfShadowing {
+    /// It can shadow itself (a cone, a bowl, a wave).
+    Possible,
+    /// Never: it is flat.
+    Never,
+    /// A sphere (its camera-relative centre): never where its outside is seen. Seen from within,
+    /// the rest of it can stand between a point and the light.
+    WhereOutsideSeen(Vec3),
+}
+
+impl SelfShadowing {
+    pub(super) fn of(surface: &Surface, eye: DVec3) -> SelfShadowing {
+        match surface {
+            Surface::Sphere(s) => SelfShadowing::WhereOutsideSeen((s.center - eye).as_vec3()),
+            _ if can_shadow_itself(surface) => SelfShadowing::Possible,
+            _ => SelfShadowing::Never,
+        }
+    }
+
+    /// `object`, where none of the camera-relative `points` (with normals facing the viewer)
+    /// can be shadowed by the object it lies on, so a shadow test of them may leave it out.
+    pub(super) fn left_out(
+        self,
+        object: usize,
+        points: &[Vec3],
+        normals: &[Vec3],
+    ) -> Option<usize> {
+        let outside_seen = |centre: Vec3| {
+            let mut seen = points.iter().zip(normals);
+            seen.all(|(&p, &n)| n.dot(p - centre) >= 0.0)
+        };
+        match self {
+            SelfShadowing::Possible => None,
+            SelfShadowing::Never => Some(object),
+            SelfShadowing::WhereOutsideSeen(centre) => outside_seen(centre).then_some(object),
+        }
+    }
 }
 
 /// The objects that may cast a shadow from `light` onto any object, by index, given each

@@ -21,7 +21,7 @@ mod light_views;
 
 pub use bounds::{Bounds, object_bounds, seen_bounds, union_of};
 pub use cache::ShadowCache;
-use casting::can_shadow_itself;
+use casting::SelfShadowing;
 pub use casting::{can_shadow, casters};
 use exact_rays::GRAZING;
 pub use exact_rays::{ShadowRays, rays_cheaper_than_maps};
@@ -66,8 +66,8 @@ impl ShadowSettings {
 pub struct ShadowMaps {
     /// Per light of the scene, its maps or rays; `None` where it shadows nothing the camera sees.
     lights: Vec<Option<LightShadows>>,
-    /// Per object, whether it can shadow itself; where not, its lookups leave it out.
-    shadows_itself: Vec<bool>,
+    /// Per object, where it cannot shadow itself, so its lookups leave it out.
+    self_shadowing: Vec<SelfShadowing>,
     /// Per object, how far a lookup on it moves off the surface along its normal before the
     /// bias: twice its mesh's chord error, as the true surface may lie that far behind the
     /// chords the maps were drawn from (inside a bowl), and bend towards the light between taps.
@@ -185,8 +185,8 @@ impl ShadowMaps {
             .collect();
         Some(ShadowMaps {
             lights,
-            shadows_itself: (prepared.objects.iter())
-                .map(|o| can_shadow_itself(&o.surface))
+            self_shadowing: (prepared.objects.iter())
+                .map(|o| SelfShadowing::of(&o.surface, camera.eye))
                 .collect(),
             lifts,
             curvatures: prepared
@@ -486,7 +486,7 @@ impl Shadowing for ShadowMaps {
             out.fill(1.0);
             return;
         };
-        let own = self.own_caster(object);
+        let own = self.own_caster(object, points, normals);
         match shadows {
             LightShadows::Rays(spheres) => {
                 let rays = (self.edges.as_ref()).expect("rays are drawn with exact edges");
@@ -530,9 +530,9 @@ impl ShadowMaps {
 
     /// The caster a lookup on `object` leaves out: itself, where it cannot shadow itself (once
     /// the light is seen to reach the side of it that is seen).
-    fn own_caster(&self, object: usize) -> Option<usize> {
-        let shadows_itself = self.shadows_itself.get(object).copied().unwrap_or(true);
-        (!shadows_itself).then_some(object)
+    fn own_caster(&self, object: usize, points: &[Vec3], normals: &[Vec3]) -> Option<usize> {
+        let self_shadowing = self.self_shadowing.get(object);
+        self_shadowing.and_then(|s| s.left_out(object, points, normals))
     }
 
     /// `reaching` through a light's maps, for fragments at `points` with facing `normals`.
@@ -544,7 +544,7 @@ impl ShadowMaps {
         (points, normals): (&[Vec3], &[Vec3]),
         out: &mut [f32],
     ) {
-        let own = self.own_caster(object);
+        let own = self.own_caster(object, points, normals);
         let curvature = self.curvatures.get(object).copied().unwrap_or(0.0);
         let receiver = Receiver {
             lift: self.lifts.get(object).copied().unwrap_or(0.0),

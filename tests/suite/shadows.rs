@@ -408,6 +408,45 @@ fn a_light_below_the_floor_lights_nothing_above_it() {
 }
 
 #[test]
+fn inside_a_dome_a_light_within_casts_the_exact_shadows_and_one_without_lights_nothing() {
+    // The camera, the floor and a resting sphere inside a sphere of radius 15: seen from
+    // within, the dome can stand between its own inside and the light.
+    let objects = format!("{}\n{}", resting_sphere(), sphere([0.0, 0.0, 0.0], 15.0));
+    let within = scene(
+        [0.0, 3.0, 8.0],
+        [0.0, 1.0, 0.0],
+        &point_light([-3.0, 6.0, 2.0]),
+        &objects,
+    );
+    for by in BOTH_WAYS {
+        let in_shadow =
+            assert_boundary_within_a_pixel(&within, &Quality::interactive(), by, "light within");
+        assert!(in_shadow > 100, "{in_shadow} pixels in shadow");
+    }
+    let without = scene(
+        [0.0, 3.0, 8.0],
+        [0.0, 1.0, 0.0],
+        &point_light([2.0, 40.0, 1.0]),
+        &objects,
+    );
+    let dark = Scene {
+        lights: Vec::new(),
+        ..within.clone()
+    };
+    let ambient = raster(&dark, &Quality::interactive());
+    for by in BOTH_WAYS {
+        let lit = raster_by(&without, &Quality::interactive(), by);
+        let brighter = (lit.color().iter().zip(ambient.color()))
+            .filter(|(a, b)| a.max_element() > b.max_element() + 1e-4)
+            .count();
+        assert_eq!(
+            brighter, 0,
+            "{brighter} pixels lit through the dome by {by:?}"
+        );
+    }
+}
+
+#[test]
 fn a_light_behind_the_camera_casts_the_exact_shadows() {
     let scene = scene(
         [0.0, 3.0, 8.0],
