@@ -8,15 +8,16 @@ use crate::surface::Surface;
 use glam::{DVec3, Vec3};
 
 /// Whether a shadow can fall anywhere in the scene. One sphere, plane or triangle alone cannot
-/// shadow itself (its own back side is already turned from the light); a bowl, a cone's inside
-/// or a wave can, and any two objects can shadow each other.
+/// shadow itself (its own back side is already turned from the light), unless the camera is
+/// inside the sphere; a bowl, a cone's inside or a wave can, and any two objects can shadow each
+/// other.
 pub fn can_shadow(scene: &Scene) -> bool {
     if scene.lights.is_empty() {
         return false;
     }
     match scene.objects.as_slice() {
         [] => false,
-        [only] => can_shadow_itself(&only.surface),
+        [only] => can_shadow_itself(&only.surface) || seen_from_within(&only.surface, scene),
         _ => true,
     }
 }
@@ -28,6 +29,15 @@ pub(super) fn can_shadow_itself(surface: &Surface) -> bool {
         surface,
         Surface::Sphere(_) | Surface::Plane(_) | Surface::Triangle(_)
     )
+}
+
+/// Whether the camera is inside a sphere: seen from within, one part of it can stand between
+/// another and the light.
+fn seen_from_within(surface: &Surface, scene: &Scene) -> bool {
+    match surface {
+        Surface::Sphere(s) => s.center.distance(scene.camera.eye) < f64::from(s.radius),
+        _ => false,
+    }
 }
 
 /// When a receiver may be left out of its own shadow test.
@@ -102,7 +112,11 @@ pub fn casters(prepared: &PreparedScene, boxes: &[Option<Bounds>], light: &Light
                     };
                     others(index).any(beyond)
                 }
-                None => can_shadow_itself(surface) || others(index).next().is_some(),
+                None => {
+                    can_shadow_itself(surface)
+                        || seen_from_within(surface, &prepared.scene)
+                        || others(index).next().is_some()
+                }
             }
         })
         .collect()
