@@ -22,8 +22,8 @@ pub fn can_shadow(scene: &Scene) -> bool {
     }
 }
 
-/// Whether a surface can stand between a light and another part of itself. A sphere cannot
-/// (where it turns from the light it is already dark), nor can anything flat.
+/// Whether a surface can stand between a light and another part of itself, seen from outside.
+/// A sphere cannot (where it turns from the light it is already dark), nor can anything flat.
 pub(super) fn can_shadow_itself(surface: &Surface) -> bool {
     !matches!(
         surface,

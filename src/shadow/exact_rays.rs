@@ -22,9 +22,10 @@ pub(super) const GRAZING: f32 = 0.1;
 const DIRECTIONAL_REACH: f64 = 1e12;
 
 /// Whether exact rays shadow `scene` for less than maps would: every object is a sphere, plane or
-/// triangle, which a ray meets in closed form and which never shadows itself, and they are few
-/// enough to test one by one (each point is first tested against their spheres, all of them,
-/// which settles nearly every point a map lookup would have settled).
+/// triangle, which a ray meets in closed form and which shadows itself only where a sphere is
+/// seen from within, and they are few enough to test one by one (each point is first tested
+/// against their spheres, all of them, which settles nearly every point a map lookup would
+/// have settled).
 pub fn rays_cheaper_than_maps(scene: &Scene) -> bool {
     scene.objects.len() <= MOST_SPHERES
         && scene.objects.iter().all(|o| !can_shadow_itself(&o.surface))
