@@ -72,6 +72,13 @@ enum By {
 
 const BOTH_WAYS: [By; 2] = [By::Choice, By::Maps];
 
+fn without_lights(scene: &Scene) -> Scene {
+    Scene {
+        lights: Vec::new(),
+        ..scene.clone()
+    }
+}
+
 /// The rasterizer's frame at `quality` (one sample a pixel).
 fn raster(scene: &Scene, quality: &Quality) -> Framebuffer {
     raster_by(scene, quality, By::Choice)
@@ -107,10 +114,7 @@ fn light_fractions(
     scene: &Scene,
     render: impl Fn(&Scene) -> Framebuffer,
 ) -> Vec<Option<(f32, f32)>> {
-    let dark = Scene {
-        lights: Vec::new(),
-        ..scene.clone()
-    };
+    let dark = without_lights(scene);
     let (on, off, ambient) = (
         render(scene),
         render(&without_shadows(scene)),
@@ -377,10 +381,7 @@ fn a_light_below_the_floor_lights_nothing_above_it() {
         directional_light([0.2, -1.0, 0.1]),
     ] {
         let scene = scene([0.0, 3.0, 8.0], [0.0, 0.7, 0.0], &lights, &resting_sphere());
-        let dark = Scene {
-            lights: Vec::new(),
-            ..scene.clone()
-        };
+        let dark = without_lights(&scene);
         let ambient = raster(&dark, &Quality::interactive());
         for by in BOTH_WAYS {
             let lit = raster_by(&scene, &Quality::interactive(), by);
@@ -429,10 +430,7 @@ fn inside_a_dome_a_light_within_casts_the_exact_shadows_and_one_without_lights_n
         &point_light([2.0, 40.0, 1.0]),
         &objects,
     );
-    let dark = Scene {
-        lights: Vec::new(),
-        ..within.clone()
-    };
+    let dark = without_lights(&within);
     let ambient = raster(&dark, &Quality::interactive());
     for by in BOTH_WAYS {
         let lit = raster_by(&without, &Quality::interactive(), by);
@@ -609,10 +607,7 @@ fn a_lone_sphere_seen_from_within_is_dark_inside_where_the_light_is_outside() {
                 [[light]]\npoint = { position = [0, 20, -10] }\n\
                 [[object]]\nsurface = { sphere = { center = [0, 0, 0], radius = 10 } }";
     let scene = parse_scene(text, "dome").unwrap();
-    let dark = Scene {
-        lights: Vec::new(),
-        ..scene.clone()
-    };
+    let dark = without_lights(&scene);
     let ambient = raster(&dark, &Quality::interactive());
     let lit_pixels = |frame: &Framebuffer| {
         (frame.color().iter().zip(ambient.color()))
