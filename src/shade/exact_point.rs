@@ -162,6 +162,10 @@ pub(super) fn true_hit_derivatives(
     moved: &[bool],
     scratch: &mut DerivativeScratch,
 ) {
+    // Nothing moved (a plane's fragments, unless recast onto it): nothing to work out.
+    if !group.iter().any(|&i| moved[i as usize]) {
+        return;
+    }
     let (dx, dy) = (
         rays.per_pixel_x * rays.footprint,
         rays.per_pixel_y * rays.footprint,

@@ -126,8 +126,8 @@ impl Quadric for SphereQuadric<'_> {
         v
     }
 
-    /// |q + s·d|² = r². Products of f32 values are exact in f64, so |q|² − r² keeps the chord
-    /// point's small distance from the surface.
+    /// |q + s·d|² = r². Formed in f64 around the chord point, |q|² − r² keeps the chord point's
+    /// small distance from the surface.
     #[inline(always)]
     fn coefficients(&self, q: DVec3, d: DVec3) -> [f64; 3] {
         let r = self.0.radius as f64;
