@@ -21,8 +21,8 @@ use crate::raster::{
 use crate::scene::Camera;
 use crate::scene::{BumpSource, Material, Scene, Texturing};
 use crate::surface::{Frame, Surface};
-use crate::texture::{Footprint, Mapping, SurfacePoint, SurfaceUv, Texel, Wrap};
-use glam::{Vec2, Vec3};
+use crate::texture::{Footprint, HeightSample, Mapping, SurfacePoint, SurfaceUv, Texel, Wrap};
+use glam::{Mat2, Vec2, Vec3};
 use std::borrow::Cow;
 use std::ops::Range;
 use std::sync::Arc;
@@ -94,6 +94,7 @@ pub struct ShadeScratch {
     gradients: Vec<Vec2>,
     patterns: PatternBatch,
     texture: TextureBatch,
+    height_lookups: HeightLookups,
     /// Inputs and outputs of shifted height evaluations (central differences, the seed lattice).
     shifted: Shifted,
 }
@@ -105,6 +106,16 @@ struct TextureBatch {
     st: Vec<Vec2>,
     footprints: Vec<Footprint>,
     texels: Vec<Texel>,
+}
+
+/// A batch's bump-map lookups: texture coordinates, footprints, the mapping's Jacobians and
+/// the samples.
+#[derive(Default)]
+struct HeightLookups {
+    st: Vec<Vec2>,
+    footprints: Vec<Footprint>,
+    jacobians: Vec<Mat2>,
+    samples: Vec<HeightSample>,
 }
 
 #[derive(Default)]
@@ -504,7 +515,11 @@ impl LitShader {
             GradientMethod::SeedLattice => {
                 let shifted = &mut scratch.shifted;
                 shifted_fragments(fragments, group, Vec2::floor, &mut shifted.fragments);
-                let flattened = self.shifted_bump(object, shifted, &mut scratch.patterns);
+                let flattened = self.shifted_bump(
+                    object,
+                    shifted,
+                    (&mut scratch.patterns, &mut scratch.height_lookups),
+                );
                 std::mem::swap(&mut scratch.heights, &mut shifted.heights);
                 std::mem::swap(&mut scratch.gradients, &mut shifted.gradients);
                 flattened
@@ -542,7 +557,8 @@ impl LitShader {
         let shifted = &mut scratch.shifted;
         for (k, shift) in shifts.into_iter().enumerate() {
             shifted_fragments(fragments, group, |uv| uv + shift, &mut shifted.fragments);
-            self.shifted_bump(object, shifted, &mut scratch.patterns);
+            let work = (&mut scratch.patterns, &mut scratch.height_lookups);
+            self.shifted_bump(object, shifted, work);
             std::mem::swap(&mut shifted.around[k], &mut shifted.heights);
         }
         let around = &shifted.around;
@@ -558,7 +574,7 @@ impl LitShader {
         &self,
         object: &FrameObject,
         shifted: &mut Shifted,
-        patterns: &mut PatternBatch,
+        (patterns, height_lookups): (&mut PatternBatch, &mut HeightLookups),
     ) -> usize {
         let surface = &object.prepared.surface;
         let n = shifted.fragments.len();
@@ -570,6 +586,7 @@ impl LitShader {
         let mut output = BumpOutput {
             frames: &shifted.frames,
             patterns,
+            height_lookups,
             heights: &mut shifted.heights,
             gradients: &mut shifted.gradients,
         };
@@ -587,6 +604,7 @@ impl LitShader {
         let mut output = BumpOutput {
             frames: &scratch.frames,
             patterns: &mut scratch.patterns,
+            height_lookups: &mut scratch.height_lookups,
             heights: &mut scratch.heights,
             gradients: &mut scratch.gradients,
         };
@@ -625,17 +643,31 @@ impl LitShader {
                 let surface = &object.prepared.surface;
                 let mapping = mapping_on(&image.mapping, surface, image.wrap_s);
                 let points = self.surface_points(fragments, group, output.frames);
-                let (heights, gradients) = (&mut *output.heights, &mut *output.gradients);
+                let lookups = &mut *output.height_lookups;
+                // Every entry is written below: resized, not cleared.
+                lookups.st.resize(group.len(), Vec2::ZERO);
+                lookups.footprints.resize(group.len(), Footprint::POINT);
+                lookups.jacobians.resize(group.len(), Mat2::ZERO);
                 mapping.map_each(points, |k, mapped| {
                     let fragment = &fragments[group[k] as usize];
-                    let footprint = mapped.footprint(fragment.duv_dx, fragment.duv_dy);
-                    let sample =
-                        image
-                            .map
-                            .sample_gradient(mapped.st, image.wrap_s, image.wrap_t, footprint);
-                    heights[k] = sample.height;
-                    gradients[k] = sample.surface_gradient(mapped.jacobian);
+                    lookups.st[k] = mapped.st;
+                    lookups.footprints[k] = mapped.footprint(fragment.duv_dx, fragment.duv_dy);
+                    lookups.jacobians[k] = mapped.jacobian;
                 });
+                lookups.samples.resize(group.len(), HeightSample::default());
+                let wraps = (image.wrap_s, image.wrap_t);
+                let (st, footprints) = (&lookups.st, &lookups.footprints);
+                (image.map).sample_gradient_many(st, footprints, wraps, &mut lookups.samples);
+                let samples = lookups.samples.iter().zip(&lookups.jacobians);
+                for ((height, gradient), (sample, &jacobian)) in output
+                    .heights
+                    .iter_mut()
+                    .zip(output.gradients.iter_mut())
+                    .zip(samples)
+                {
+                    *height = sample.height;
+                    *gradient = sample.surface_gradient(jacobian);
+                }
                 0
             }
         }
@@ -666,6 +698,7 @@ impl LitShader {
 struct BumpOutput<'a> {
     frames: &'a [Frame],
     patterns: &'a mut PatternBatch,
+    height_lookups: &'a mut HeightLookups,
     heights: &'a mut Vec<f32>,
     gradients: &'a mut Vec<Vec2>,
 }

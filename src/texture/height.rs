@@ -62,7 +62,7 @@ impl std::ops::Mul<f32> for HeightSample {
 /// linear ramp in the file must give a constant slope. Colour images use their luma.
 #[derive(Debug, Clone)]
 pub struct HeightMap {
-    chain: MipChain<f32>,
+    pub(super) chain: MipChain<f32>,
 }
 
 impl HeightMap {
@@ -119,19 +119,44 @@ impl HeightMap {
     }
 }
 
-/// Catmull-Rom on a 4×4 neighbourhood, with the derivatives of its weights. The four rows
-/// are weighted into one column sum (and its slope along t) four lanes at a time, then the
-/// columns are weighted along s: three dot products instead of sixteen scalar taps.
+/// Catmull-Rom on a 4×4 neighbourhood, with the derivatives of its weights.
 fn bicubic(level: &TexelGrid<f32>, st: Vec2, wrap_s: Wrap, wrap_t: Wrap) -> HeightSample {
-    let (x, fx) = first_tap(wrap_s, st.x, level.width());
-    let (y, fy) = first_tap(wrap_t, st.y, level.height());
-    let (wy, dy) = (catmull_rom(fy), catmull_rom_slope(fy));
+    let across = first_tap(wrap_s, st.x, level.width());
+    let down = first_tap(wrap_t, st.y, level.height());
+    neighbourhood(level, across, down, wrap_s, wrap_t)
+}
+
+/// `bicubic` from its first taps and fractions along s (`across`) and t (`down`).
+#[inline(always)]
+pub(super) fn neighbourhood(
+    level: &TexelGrid<f32>,
+    (x, fx): (i32, f32),
+    (y, fy): (i32, f32),
+    wrap_s: Wrap,
+    wrap_t: Wrap,
+) -> HeightSample {
+    let row = |j| row_taps(level, wrap_s, x, wrap_t.index(y + j, level.height()));
+    let rows = [row(0), row(1), row(2), row(3)];
+    weigh_rows(level, rows, fx, fy)
+}
+
+/// The Catmull-Rom sample from the 4×4 neighbourhood's `rows`, at fractions `fx` along s and
+/// `fy` along t. The rows are weighted into one column sum (and its slope along t) four lanes
+/// at a time, then the columns are weighted along s: three dot products instead of sixteen
+/// scalar taps.
+#[inline(always)]
+pub(super) fn weigh_rows(
+    level: &TexelGrid<f32>,
+    rows: [Vec4; 4],
+    fx: f32,
+    fy: f32,
+) -> HeightSample {
+    let (wy, dy) = (catmull_rom(fy).to_array(), catmull_rom_slope(fy).to_array());
     let mut column = Vec4::ZERO;
     let mut column_slope = Vec4::ZERO;
-    for j in 0..4 {
-        let row = row_taps(level, wrap_s, x, wrap_t.index(y + j as i32, level.height()));
-        column += row * wy[j];
-        column_slope += row * dy[j];
+    for (row, (w, d)) in rows.into_iter().zip(wy.into_iter().zip(dy)) {
+        column += row * w;
+        column_slope += row * d;
     }
     let (wx, dx) = (catmull_rom(fx), catmull_rom_slope(fx));
     // Per texel → per unit of texture coordinate.
@@ -145,7 +170,7 @@ fn bicubic(level: &TexelGrid<f32>, st: Vec2, wrap_s: Wrap, wrap_t: Wrap) -> Heig
 /// The first of the four taps along an axis of `n` texels (unwrapped: it and the next three
 /// go through `wrap`) and the fraction between the second and third.
 #[inline(always)]
-fn first_tap(wrap: Wrap, s: f32, n: u32) -> (i32, f32) {
+pub(super) fn first_tap(wrap: Wrap, s: f32, n: u32) -> (i32, f32) {
     let x = wrap.reduce(s) * n as f32 - 0.5;
     let x0 = floor(x);
     (x0 as i32 - 1, x - x0)

@@ -18,6 +18,7 @@ mod colour;
 mod encoding;
 mod error;
 mod height;
+mod height_batch;
 mod image_cache;
 mod load;
 mod mapping;
