@@ -111,6 +111,50 @@ impl CasterSpheres {
         CasterSpheres { spheres, light }
     }
 
+    /// Whether every one of `points` (camera-relative) has a way to the light that passes every
+    /// sphere but `except`'s: tested once for a ball around them all. A way from a point of
+    /// the ball stays within its radius of the way from its centre (the two meet at the light,
+    /// or run parallel), so the ball is clear where the centre's way passes each sphere by more
+    /// than that radius. `false` when no spheres are kept, for no points or a non-finite one.
+    pub fn all_clear(&self, points: &[Vec3], except: Option<usize>) -> bool {
+        let Some(spheres) = &self.spheres else {
+            return false;
+        };
+        let Some((centre, radius)) = ball_around(points) else {
+            return false;
+        };
+        let way = match self.light {
+            LightAt::Point(light) => light - centre,
+            LightAt::Directional(towards) => towards,
+        };
+        let point_light = matches!(self.light, LightAt::Point(_));
+        spheres
+            .iter()
+            .filter(|s| Some(s.object) != except)
+            .all(|sphere| {
+                let to_centre = sphere.centre - centre;
+                let along = to_centre.dot(way);
+                let t = if point_light {
+                    (along / way.length_squared()).clamp(0.0, 1.0)
+                } else {
+                    along.max(0.0)
+                };
+                let apart = (to_centre - way * t).length();
+                apart > sphere.radius + radius
+            })
+    }
+
+    /// The cosine between unit `normal` and the way from camera-relative `point` to the light,
+    /// as `screen` gives it.
+    #[inline(always)]
+    pub fn facing(&self, point: Vec3, normal: Vec3) -> f32 {
+        let way = match self.light {
+            LightAt::Point(light) => light - point,
+            LightAt::Directional(towards) => towards,
+        };
+        normal.dot(way) / way.length()
+    }
+
     /// Screens up to `SCREEN_LANES` camera-relative points with unit `normals` into `out`,
     /// leaving object `except`'s sphere out.
     pub fn screen(
@@ -183,6 +227,65 @@ impl CasterSpheres {
     }
 }
 
+/// The centre and radius of a ball holding `points` (around their bounding box); `None` for no
+/// points or a non-finite one.
+fn ball_around(points: &[Vec3]) -> Option<(Vec3, f32)> {
+    if points.is_empty() {
+        return None;
+    }
+    let [min, max, sum] = crate::simd::widest(
+        #[inline(always)]
+        || extents(bytemuck::cast_slice(points)),
+    );
+    let centre = (min + max) * 0.5;
+    // Rounded up by what rounding the centre and the length may have lost.
+    let rounding = 4.0 * f32::EPSILON;
+    let radius = (max - min).length() * 0.5 * (1.0 + rounding)
+        + rounding * min.abs().max(max.abs()).length();
+    (sum.is_finite() && radius.is_finite()).then_some((centre, radius))
+}
+
+/// The least and greatest x, y and z of points laid out as x, y, z, x, y, z…, and their sum
+/// (which only tells whether one is not finite: the comparisons pass NaN by). Eight points a
+/// step, each lane keeping one coordinate, so the loop compiles to vector compares.
+#[inline(always)]
+fn extents(coordinates: &[f32]) -> [Vec3; 3] {
+    const LANES: usize = 24;
+    let (mut least, mut most, mut sum) = (
+        [f32::INFINITY; LANES],
+        [f32::NEG_INFINITY; LANES],
+        [0.0; LANES],
+    );
+    let mut take = |lane: usize, x: f32| {
+        least[lane] = if x < least[lane] { x } else { least[lane] };
+        most[lane] = if x > most[lane] { x } else { most[lane] };
+        sum[lane] += x;
+    };
+    let steps = coordinates.chunks_exact(LANES);
+    let rest = steps.remainder();
+    for step in steps {
+        for (lane, &x) in step.iter().enumerate() {
+            take(lane, x);
+        }
+    }
+    // The rest is whole points too, so lane k still holds axis k mod 3.
+    for (lane, &x) in rest.iter().enumerate() {
+        take(lane, x);
+    }
+    let axes = |lanes: &[f32; LANES], pick: fn(f32, f32) -> f32| {
+        let mut axes = [lanes[0], lanes[1], lanes[2]];
+        for (lane, &x) in lanes.iter().enumerate().skip(3) {
+            axes[lane % 3] = pick(axes[lane % 3], x);
+        }
+        Vec3::from_array(axes)
+    };
+    [
+        axes(&least, f32::min),
+        axes(&most, f32::max),
+        axes(&sum, |a, b| a + b),
+    ]
+}
+
 /// Whether `light` lies outside the sphere of `radius` around `centre` (a directional light
 /// always does).
 fn light_outside(light: &Light, centre: DVec3, radius: f32) -> bool {
@@ -238,5 +341,73 @@ mod tests {
             screened(&sun, Vec3::new(2.5, 0.0, 0.0), None).0,
             "on the lit side"
         );
+    }
+
+    /// Clusters of floor points from under the sphere to well beside it: a cluster is told
+    /// clear only where `screen` finds every one of its points clear, and the test is not
+    /// idle (some clusters are told clear, some not).
+    #[test]
+    fn a_batch_is_told_clear_only_where_every_point_is() {
+        let lights = [
+            LightAt::Point(Vec3::new(2.0, 10.0, 1.0)),
+            LightAt::Directional(Vec3::new(1.0, 1.0, 0.5).normalize()),
+        ];
+        let mut told = [0, 0];
+        for light in lights {
+            let spheres = spheres(light);
+            for step in 0..400 {
+                let centre = Vec3::new(
+                    step as f32 * 0.05 - 10.0,
+                    0.0,
+                    (step % 17) as f32 * 0.4 - 3.0,
+                );
+                let spread = 0.05 + (step % 5) as f32 * 0.3;
+                let points: Vec<Vec3> = (0..37)
+                    .map(|k| {
+                        let k = k as f32;
+                        centre + spread * Vec3::new((k * 1.7).sin(), 0.0, (k * 2.3).cos())
+                    })
+                    .collect();
+                let clear = spheres.all_clear(&points, None);
+                told[usize::from(clear)] += 1;
+                if clear {
+                    for &p in &points {
+                        assert!(screened(&spheres, p, None).0, "{p} of a clear cluster");
+                    }
+                }
+                assert!(
+                    spheres.all_clear(&points, Some(0)),
+                    "with the sphere left out"
+                );
+            }
+        }
+        assert!(told[0] > 100 && told[1] > 100, "{told:?}");
+    }
+
+    #[test]
+    fn extents_are_those_of_the_points_and_a_non_finite_one_shows_in_the_sum() {
+        for count in [1, 2, 7, 8, 9, 23, 50] {
+            let mut points: Vec<Vec3> = (0..count)
+                .map(|k| {
+                    let k = k as f32;
+                    Vec3::new((k * 0.9).sin() * 5.0, k - 3.0, (k * 1.3).cos() * -2.0)
+                })
+                .collect();
+            let [min, max, sum] = extents(bytemuck::cast_slice(&points));
+            let fold = |pick: fn(Vec3, Vec3) -> Vec3| points.iter().copied().reduce(pick).unwrap();
+            assert_eq!(
+                (min, max),
+                (fold(Vec3::min), fold(Vec3::max)),
+                "{count} points"
+            );
+            assert!(sum.is_finite());
+            points[count / 2].y = f32::NAN;
+            assert!(
+                !extents(bytemuck::cast_slice(&points))[2].is_finite(),
+                "{count} points"
+            );
+            assert!(ball_around(&points).is_none());
+        }
+        assert!(ball_around(&[]).is_none());
     }
 }

@@ -456,6 +456,15 @@ impl MapAnswer {
         lit: 0.0,
         grazing: false,
     };
+
+    /// Settled by the receiver alone, its way passing every other caster: lit where the light
+    /// is in front of it (its cosine `facing`).
+    fn facing(facing: f32) -> MapAnswer {
+        MapAnswer {
+            lit: if facing > 0.0 { 1.0 } else { 0.0 },
+            grazing: facing.abs() < GRAZING,
+        }
+    }
 }
 
 /// One lookup on a map: where it falls, the receiver's depth there, how much rounding to allow
@@ -488,6 +497,16 @@ impl Shadowing for ShadowMaps {
         };
         let own = self.own_caster(object, points, normals);
         match shadows {
+            LightShadows::Rays(spheres) if spheres.all_clear(points, own) => {
+                let rays = (self.edges.as_ref()).expect("rays are drawn with exact edges");
+                for ((out, &p), &n) in out.iter_mut().zip(points).zip(normals) {
+                    let facing = spheres.facing(p, n);
+                    // As below, for a way known to pass every caster but the receiver.
+                    let lit =
+                        facing > 0.0 || (facing > -GRAZING && !rays.blocked_at(light, p, n, None));
+                    *out = if lit { 1.0 } else { 0.0 };
+                }
+            }
             LightShadows::Rays(spheres) => {
                 let rays = (self.edges.as_ref()).expect("rays are drawn with exact edges");
                 let mut screened = Screened::default();
@@ -553,6 +572,16 @@ impl ShadowMaps {
                 curvature => 2.0 * (2.0 * self.filter.reach() / curvature).sqrt(),
             },
         };
+        if maps.casters.all_clear(points, own) {
+            for ((out, &p), &n) in out.iter_mut().zip(points).zip(normals) {
+                let lookup = match own {
+                    None => MapAnswer::LIT,
+                    Some(_) => MapAnswer::facing(maps.casters.facing(p, n)),
+                };
+                *out = self.settled_at_edges(lookup, light, p, n);
+            }
+            return;
+        }
         let mut screened = Screened::default();
         for (first, out) in (0..)
             .step_by(SCREEN_LANES)
@@ -564,10 +593,7 @@ impl ShadowMaps {
                 let (p, n) = (points[k], normals[k]);
                 let lookup = match (screened.clear[k], own) {
                     (true, None) => MapAnswer::LIT,
-                    (true, Some(_)) => MapAnswer {
-                        lit: if screened.facing[k] > 0.0 { 1.0 } else { 0.0 },
-                        grazing: screened.facing[k].abs() < GRAZING,
-                    },
+                    (true, Some(_)) => MapAnswer::facing(screened.facing[k]),
                     _ if screened.blocked[k] => MapAnswer::DARK,
                     (false, _) => maps.face_for(p).reach(p, n, self, receiver),
                 };
