@@ -342,11 +342,10 @@ impl LitShader {
         let (points, normals) = (&mut scratch.shadow_points, &mut scratch.shadow_normals);
         points.clear();
         normals.clear();
-        for frame in &scratch.frames {
-            let p = object.origin + frame.p;
-            points.push(p);
-            normals.push(frame.n * facing_sign(p, frame.n));
-        }
+        let frames = &scratch.frames;
+        points.extend(frames.iter().map(|frame| object.origin + frame.p));
+        let facing = |(&p, frame): (&Vec3, &Frame)| frame.n * facing_sign(p, frame.n);
+        normals.extend(points.iter().zip(frames).map(facing));
         let count = points.len();
         scratch.reach.resize(lights * count, 1.0);
         for (light, reach) in scratch.reach.chunks_mut(count.max(1)).enumerate() {
