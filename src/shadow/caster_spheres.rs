@@ -1,8 +1,9 @@
 //! A sphere around each caster of a light, to tell without a map or a ray that a point is in no
 //! caster's shadow: when its segment to the light (its ray, for a directional light) passes no
 //! sphere. Most of a floor under a sphere is told so. Where the caster is itself a sphere, a
-//! segment passing well inside it is as surely in its shadow. Points are screened a lane of them
-//! at a time (structure-of-arrays loops, compiled to SIMD over points).
+//! segment passing well inside it is as surely in its shadow. A batch whose bounding ball passes
+//! every sphere is told clear at once; other points are screened a lane of them at a time
+//! (structure-of-arrays loops, compiled to SIMD over points).
 
 use super::bounds::Bounds;
 use crate::raster::PreparedScene;
