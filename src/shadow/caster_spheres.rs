@@ -124,35 +124,32 @@ impl CasterSpheres {
         let Some((centre, radius)) = ball_around(points) else {
             return false;
         };
-        let way = match self.light {
-            LightAt::Point(light) => light - centre,
-            LightAt::Directional(towards) => towards,
-        };
+        let way = self.way_from(centre);
         let point_light = matches!(self.light, LightAt::Point(_));
         spheres
             .iter()
             .filter(|s| Some(s.object) != except)
             .all(|sphere| {
-                let to_centre = sphere.centre - centre;
-                let along = to_centre.dot(way);
-                let t = if point_light {
-                    (along / way.length_squared()).clamp(0.0, 1.0)
-                } else {
-                    along.max(0.0)
-                };
-                let apart = (to_centre - way * t).length();
+                let apart = past_way(sphere.centre - centre, way, point_light).length();
                 apart > sphere.radius + radius
             })
+    }
+
+    /// The way from camera-relative `point` towards the light: to a point light, or the
+    /// direction of a directional one.
+    #[inline(always)]
+    fn way_from(&self, point: Vec3) -> Vec3 {
+        match self.light {
+            LightAt::Point(light) => light - point,
+            LightAt::Directional(towards) => towards,
+        }
     }
 
     /// The cosine between unit `normal` and the way from camera-relative `point` to the light,
     /// as `screen` gives it.
     #[inline(always)]
     pub fn facing(&self, point: Vec3, normal: Vec3) -> f32 {
-        let way = match self.light {
-            LightAt::Point(light) => light - point,
-            LightAt::Directional(towards) => towards,
-        };
+        let way = self.way_from(point);
         normal.dot(way) / way.length()
     }
 
@@ -211,21 +208,26 @@ impl CasterSpheres {
         let point_light = matches!(self.light, LightAt::Point(_));
         for sphere in spheres.iter().filter(|s| Some(s.object) != except) {
             for k in 0..SCREEN_LANES {
-                let way = at(&to_light, k);
                 let to_centre = sphere.centre - at(&p, k);
-                // The segment's (or ray's) nearest point to the centre.
-                let along = to_centre.dot(way);
-                let t = if point_light {
-                    (along / way.length_squared()).clamp(0.0, 1.0)
-                } else {
-                    along.max(0.0)
-                };
-                let apart = (to_centre - way * t).length_squared();
+                let apart = past_way(to_centre, at(&to_light, k), point_light).length_squared();
                 out.clear[k] &= apart > sphere.radius * sphere.radius;
                 out.blocked[k] |= apart < sphere.solid * sphere.solid;
             }
         }
     }
+}
+
+/// From the nearest point of the way `way` from a point (a segment to a point light, else a
+/// ray) to a centre `to_centre` away from that point.
+#[inline(always)]
+fn past_way(to_centre: Vec3, way: Vec3, point_light: bool) -> Vec3 {
+    let along = to_centre.dot(way);
+    let t = if point_light {
+        (along / way.length_squared()).clamp(0.0, 1.0)
+    } else {
+        along.max(0.0)
+    };
+    to_centre - way * t
 }
 
 /// The centre and radius of a ball holding `points` (around their bounding box); `None` for no
