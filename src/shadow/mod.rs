@@ -531,7 +531,7 @@ impl Shadowing for ShadowMaps {
                 }
             }
             LightShadows::Maps(maps) => {
-                self.reaching_by_maps(maps, light, object, (points, normals), out)
+                self.reaching_by_maps(maps, (light, object, own), (points, normals), out)
             }
         }
     }
@@ -554,16 +554,15 @@ impl ShadowMaps {
         self_shadowing.and_then(|s| s.left_out(object, points, normals))
     }
 
-    /// `reaching` through a light's maps, for fragments at `points` with facing `normals`.
+    /// `reaching` through a light's maps, for fragments of `object` at `points` with facing
+    /// `normals`, leaving its own caster `own` out.
     fn reaching_by_maps(
         &self,
         maps: &LightMaps,
-        light: usize,
-        object: usize,
+        (light, object, own): (usize, usize, Option<usize>),
         (points, normals): (&[Vec3], &[Vec3]),
         out: &mut [f32],
     ) {
-        let own = self.own_caster(object, points, normals);
         let curvature = self.curvatures.get(object).copied().unwrap_or(0.0);
         let receiver = Receiver {
             lift: self.lifts.get(object).copied().unwrap_or(0.0),
