@@ -21,6 +21,7 @@ mod strips;
 mod tile;
 mod top_first;
 mod view_rays;
+mod wanted_spans;
 mod window;
 
 pub use bin::{TILE_SIZE, TileBins};

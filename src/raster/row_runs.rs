@@ -5,7 +5,7 @@ use super::bin::TILE_SIZE;
 use std::ops::Range;
 
 /// A row's pixels as bits: bit i is the row's i-th pixel from the tile's left edge.
-type RowBits = u64;
+pub(super) type RowBits = u64;
 const _: () = assert!(TILE_SIZE <= RowBits::BITS);
 
 /// What the tile does at a pixel; consecutive pixels of one kind are handled as a run.
@@ -70,7 +70,7 @@ fn positive_bits(row: &[f32]) -> RowBits {
 
 /// The bit set of a row's true elements (at most 64); a whole tile row, sixteen at a time.
 #[inline(always)]
-fn true_bits(row: &[bool]) -> RowBits {
+pub(super) fn true_bits(row: &[bool]) -> RowBits {
     #[cfg(target_arch = "x86_64")]
     if let Ok(row) = <&[bool; ROW]>::try_from(row) {
         use std::arch::x86_64::{

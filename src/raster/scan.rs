@@ -21,6 +21,16 @@ impl PixelRect {
         };
         (r.x0 <= r.x1 && r.y0 <= r.y1).then_some(r)
     }
+
+    /// The smallest rectangle holding both.
+    pub fn union(&self, other: &PixelRect) -> PixelRect {
+        PixelRect {
+            x0: self.x0.min(other.x0),
+            y0: self.y0.min(other.y0),
+            x1: self.x1.max(other.x1),
+            y1: self.y1.max(other.y1),
+        }
+    }
 }
 
 /// One row of a triangle's bounds cut to a clip rectangle: pixels `x0..=x1` of row `y`, and the
@@ -55,6 +65,30 @@ impl EdgeWalk {
         for (at, step) in self.at.iter_mut().zip(self.steps) {
             *at += step;
         }
+    }
+
+    /// The edge functions `pixels` further along the row.
+    #[inline(always)]
+    pub fn skipped(self, pixels: u32) -> EdgeWalk {
+        let mut at = self.at;
+        for (at, step) in at.iter_mut().zip(self.steps) {
+            *at += step * i64::from(pixels);
+        }
+        EdgeWalk { at, ..self }
+    }
+}
+
+impl RowSpan {
+    /// The part of the row within columns `first..=last`, if any.
+    #[inline(always)]
+    pub fn within(self, first: u32, last: u32) -> Option<RowSpan> {
+        let (x0, x1) = (self.x0.max(first), self.x1.min(last));
+        (x0 <= x1).then(|| RowSpan {
+            x0,
+            x1,
+            edges: self.edges.skipped(x0 - self.x0),
+            ..self
+        })
     }
 }
 

@@ -11,6 +11,7 @@ use super::scan::PixelRect;
 use super::setup::{SampleShift, ScreenTriangle, ShiftSpan, Viewport};
 use super::tile::{StripOutput, TileBuffers, TileFrame, TileRows, any_wanted};
 use super::view_rays::ViewRays;
+use super::wanted_spans::WantedSpans;
 use glam::Vec3;
 
 /// Rows in a strip: the unit of work a thread takes and of finished rows handed on. Half a
@@ -230,7 +231,19 @@ impl<'a, S: FragmentShader> Pass<'a, S> {
             *known_background = self.whole_and_replacing;
             return (0, 0);
         }
-        tile.resolve_visibility(self.triangles, bin, rect, &self.frame.shift);
+        let rows = TileRows {
+            width: out.width,
+            first_row: out.first_row,
+            rect,
+        };
+        let wanted = out.mask.map(|mask| WantedSpans::of(mask, &rows));
+        tile.resolve_visibility(
+            self.triangles,
+            bin,
+            rect,
+            &self.frame.shift,
+            wanted.as_ref(),
+        );
         let (shaded, flattened) = tile.shade(self.triangles, &self.frame, scratch, rect, out);
         *known_background = shaded == 0 && self.whole_and_replacing;
         (shaded, flattened)

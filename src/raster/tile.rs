@@ -8,6 +8,7 @@ use super::row_runs::{PixelKind, RowRuns};
 use super::sample_rays::SampleRays;
 use super::scan::{PixelRect, RowSpan, triangle_rows};
 use super::setup::{AttributePlane, SampleShift, ScreenTriangle};
+use super::wanted_spans::WantedSpans;
 use glam::{Vec2, Vec3};
 use std::ops::Range;
 
@@ -208,25 +209,46 @@ fn fill_colour(pixels: &mut [Vec3], colour: Vec3) {
 }
 
 impl TileBuffers {
+    /// Finds the nearest triangle of `bin` at each pixel of `rect`, or only at the `wanted`
+    /// spans of its rows when given (the other slots are then left as they were).
     pub fn resolve_visibility(
         &mut self,
         triangles: &[ScreenTriangle],
         bin: &[u32],
         rect: &PixelRect,
         shift: &SampleShift,
+        wanted: Option<&WantedSpans>,
     ) {
         // A triangle is recorded only where it wins, which needs 1/w > 0: the triangle slots
         // are read only where `inv_w` says one was drawn, so they need no clearing. Only the
-        // rect's rows are read (a strip's tile is half a tile high).
-        let rows = (rect.y1 - rect.y0 + 1) as usize;
-        self.inv_w[..rows * TILE_SIZE as usize].fill(0.0);
+        // rect's rows are read (a strip's tile is half a tile high), and of a masked pass's
+        // only the wanted pixels.
+        let clip = match wanted {
+            None => {
+                let rows = (rect.y1 - rect.y0 + 1) as usize;
+                self.inv_w[..rows * TILE_SIZE as usize].fill(0.0);
+                *rect
+            }
+            Some(spans) => {
+                spans
+                    .slots(rect.x0)
+                    .for_each(|slots| self.inv_w[slots].fill(0.0));
+                let Some(bounds) = spans.bounds() else {
+                    return;
+                };
+                bounds
+            }
+        };
         // AVX2 compares four of the i64 edge functions at once; SSE2 has no 64-bit compare.
         crate::simd::widest(
             #[inline(always)]
             || {
                 for &index in bin {
                     let t = &triangles[index as usize];
-                    triangle_rows(t, rect, shift, |row| {
+                    triangle_rows(t, &clip, shift, |row| {
+                        let Some(row) = wanted.map_or(Some(row), |spans| spans.clip(row)) else {
+                            return;
+                        };
                         let first = ((row.y - rect.y0) * TILE_SIZE + (row.x0 - rect.x0)) as usize;
                         let slots = first..=first + (row.x1 - row.x0) as usize;
                         let nearest = RowNearest {
@@ -531,6 +553,7 @@ mod tests {
         let mut triangles: Vec<ScreenTriangle> = (0..300)
             .filter_map(|k| triangle([0; 3].map(|_| corner(if k % 3 == 0 { 120.0 } else { 40.0 }))))
             .collect();
+        let mut random = Lcg(11);
         // Exact copies tie at every pixel: the first drawn must stay.
         let copies: Vec<ScreenTriangle> = triangles.iter().step_by(7).copied().collect();
         triangles.extend(copies);
@@ -552,7 +575,7 @@ mod tests {
                 y1: 89,
             },
         ] {
-            tile.resolve_visibility(&triangles, &bin, &rect, &SampleShift::NONE);
+            tile.resolve_visibility(&triangles, &bin, &rect, &SampleShift::NONE, None);
             // The rect's rows are all that is read (and cleared).
             let slots = (rect.y1 - rect.y0 + 1) as usize * TILE_SIZE as usize;
             let expected = &nearest_by_pixel(&triangles, &rect)[..slots];
@@ -562,6 +585,35 @@ mod tests {
             assert_eq!(nearest, expected, "tile {rect:?}");
             let drawn = expected.iter().filter(|&&t| t != NO_TRIANGLE).count();
             assert!(drawn > 500, "the tile saw triangles: {drawn} pixels");
+            // Masked: at every wanted pixel the same, whatever the buffer held before.
+            for share in [0.0, 0.02, 0.3, 1.0] {
+                let width = VIEWPORT.width;
+                let mask: Vec<bool> = (0..width * TILE_SIZE)
+                    .map(|_| random.next() < share)
+                    .collect();
+                let rows = TileRows {
+                    width,
+                    first_row: rect.y0,
+                    rect: &rect,
+                };
+                let spans = WantedSpans::of(&mask, &rows);
+                tile.resolve_visibility(&triangles, &bin, &rect, &SampleShift::NONE, Some(&spans));
+                let wanted = rows.each().flat_map(|pixels| mask[pixels].to_vec());
+                let slots = (rect.y0..=rect.y1).flat_map(|y| {
+                    let first = (y - rect.y0) * TILE_SIZE;
+                    first..first + rect.x1 - rect.x0 + 1
+                });
+                let mut checked = 0;
+                for (slot, wanted) in slots.zip(wanted) {
+                    if wanted {
+                        let slot = slot as usize;
+                        let nearest = tile.nearest(slot).unwrap_or(NO_TRIANGLE);
+                        assert_eq!(nearest, expected[slot], "slot {slot}, {share} wanted");
+                        checked += 1;
+                    }
+                }
+                assert_eq!(spans.bounds().is_some(), checked > 0);
+            }
         }
     }
 }

@@ -1,0 +1,70 @@
+//! The columns a masked pass wants on each row of a tile, so that its visibility is resolved
+//! only there: an adaptive still's later passes want a few pixels of most tiles, and resolving
+//! every pixel of each tile for them cost as much as shading what they wanted.
+
+use super::bin::TILE_SIZE;
+use super::row_runs::true_bits;
+use super::scan::{PixelRect, RowSpan};
+use super::tile::TileRows;
+use std::ops::RangeInclusive;
+
+/// Per row of a tile (from the first row of its rect): the first and last wanted column, in
+/// pixels of the frame; `None` where the row wants nothing.
+pub struct WantedSpans {
+    rows: [Option<(u32, u32)>; TILE_SIZE as usize],
+    /// The rect's first row.
+    first_row: u32,
+    /// The smallest rect holding every span.
+    bounds: Option<PixelRect>,
+}
+
+impl WantedSpans {
+    /// The wanted spans of the tile at `rows`, from `mask` over its strip.
+    pub fn of(mask: &[bool], rows: &TileRows) -> WantedSpans {
+        let first_row = rows.rect.y0;
+        let mut spans = WantedSpans {
+            rows: [None; TILE_SIZE as usize],
+            first_row,
+            bounds: None,
+        };
+        for ((span, pixels), y) in spans.rows.iter_mut().zip(rows.each()).zip(first_row..) {
+            let bits = true_bits(&mask[pixels]);
+            if bits == 0 {
+                continue;
+            }
+            let x0 = rows.rect.x0;
+            let (first, last) = (x0 + bits.trailing_zeros(), x0 + 63 - bits.leading_zeros());
+            *span = Some((first, last));
+            let row = PixelRect {
+                x0: first,
+                y0: y,
+                x1: last,
+                y1: y,
+            };
+            spans.bounds = Some(spans.bounds.map_or(row, |b| b.union(&row)));
+        }
+        spans
+    }
+
+    /// The smallest rect holding every wanted pixel; `None` when none is.
+    pub fn bounds(&self) -> Option<PixelRect> {
+        self.bounds
+    }
+
+    /// The part of `row` that is wanted, if any.
+    #[inline(always)]
+    pub fn clip(&self, row: RowSpan) -> Option<RowSpan> {
+        let (first, last) = self.rows[(row.y - self.first_row) as usize]?;
+        row.within(first, last)
+    }
+
+    /// The wanted pixels' slots in a tile buffer of `TILE_SIZE`-slot rows whose first slot is
+    /// pixel (`x0`, the first row), one range per row with any.
+    pub fn slots(&self, x0: u32) -> impl Iterator<Item = RangeInclusive<usize>> + '_ {
+        (0..).zip(&self.rows).filter_map(move |(row, span)| {
+            let (first, last) = (*span)?;
+            let start = (row * TILE_SIZE + first - x0) as usize;
+            Some(start..=start + (last - first) as usize)
+        })
+    }
+}
