@@ -81,6 +81,9 @@ pub(crate) trait Lane: Scalar {
     const SLOT: usize;
     fn get(slot: &[Self::Real], i: usize) -> Self;
     fn set(slot: &mut [Self::Real], i: usize, value: Self);
+    /// Sets the first `values.len()` lanes of `slot` to the inputs `values` with `partials`
+    /// (as long, when per fragment).
+    fn load(slot: &mut [Self::Real], values: &[f32], partials: Seed);
 }
 
 impl<R: Real> Lane for R {
@@ -94,6 +97,11 @@ impl<R: Real> Lane for R {
     #[inline(always)]
     fn set(slot: &mut [R], i: usize, value: R) {
         slot[i] = value;
+    }
+
+    #[inline(always)]
+    fn load(slot: &mut [R], values: &[f32], _: Seed) {
+        copy_lanes(slot, values);
     }
 }
 
@@ -110,6 +118,24 @@ impl<R: Real> Lane for Dual<R> {
         slot[i] = value.value;
         slot[CHUNK + i] = value.du;
         slot[2 * CHUNK + i] = value.dv;
+    }
+
+    #[inline(always)]
+    fn load(slot: &mut [R], values: &[f32], partials: Seed) {
+        let n = values.len();
+        let (value, partial) = slot.split_at_mut(CHUNK);
+        let (du, dv) = partial.split_at_mut(CHUNK);
+        copy_lanes(value, values);
+        match partials {
+            Seed::Constant(u, v) => {
+                du[..n].fill(R::of_f32(u));
+                dv[..n].fill(R::of_f32(v));
+            }
+            Seed::PerFragment(u, v) => {
+                copy_lanes(du, &u[..n]);
+                copy_lanes(dv, &v[..n]);
+            }
+        }
     }
 }
 
@@ -152,7 +178,7 @@ pub(crate) fn load_inputs<T: Lane>(
     n: usize,
     slots: &mut [T::Real],
 ) {
-    let of = T::Real::of_f32;
+    let fragments = start..start + n;
     for (index, source) in program.sources.iter().enumerate() {
         let Source::Input(input) = *source else {
             continue;
@@ -165,20 +191,23 @@ pub(crate) fn load_inputs<T: Lane>(
             Input::Z => (inputs.z, point::<T>(inputs.z_u, inputs.z_v)),
             Input::T => continue, // uniform
         };
-        let lanes = slot_mut::<T>(slots, index);
-        for (i, &x) in values[start..start + n].iter().enumerate() {
-            let (du, dv) = match partials {
-                Seed::Constant(du, dv) => (of(du), of(dv)),
-                Seed::PerFragment(du, dv) => (of(du[start + i]), of(dv[start + i])),
-            };
-            T::set(lanes, i, T::input(of(x), du, dv));
-        }
+        let partials = match partials {
+            Seed::PerFragment(du, dv) => {
+                Seed::PerFragment(&du[fragments.clone()], &dv[fragments.clone()])
+            }
+            constant => constant,
+        };
+        T::load(
+            slot_mut::<T>(slots, index),
+            &values[fragments.clone()],
+            partials,
+        );
     }
 }
 
 /// Partials (∂/∂u, ∂/∂v) of an input.
 #[derive(Clone, Copy)]
-enum Seed<'a> {
+pub(crate) enum Seed<'a> {
     Constant(f32, f32),
     PerFragment(&'a [f32], &'a [f32]),
 }
@@ -189,6 +218,15 @@ fn point<'a, T: Lane>(du: &'a [f32], dv: &'a [f32]) -> Seed<'a> {
         Seed::PerFragment(du, dv)
     } else {
         Seed::Constant(0.0, 0.0)
+    }
+}
+
+/// Lanes `0..values.len()` of `lanes` set to `values`, exactly, as whole slices (which the
+/// compiler vectorises; a lane at a time it did not).
+#[inline(always)]
+fn copy_lanes<R: Real>(lanes: &mut [R], values: &[f32]) {
+    for (lane, &x) in lanes[..values.len()].iter_mut().zip(values) {
+        *lane = R::of_f32(x);
     }
 }
 
