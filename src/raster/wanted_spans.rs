@@ -3,7 +3,7 @@
 //! every pixel of each tile for them cost as much as shading what they wanted.
 
 use super::bin::TILE_SIZE;
-use super::row_runs::true_bits;
+use super::row_runs::{RowBits, true_bits};
 use super::scan::{PixelRect, RowSpan};
 use super::tile::TileRows;
 use std::ops::RangeInclusive;
@@ -33,7 +33,8 @@ impl WantedSpans {
                 continue;
             }
             let x0 = rows.rect.x0;
-            let (first, last) = (x0 + bits.trailing_zeros(), x0 + 63 - bits.leading_zeros());
+            let last_bit = RowBits::BITS - 1 - bits.leading_zeros();
+            let (first, last) = (x0 + bits.trailing_zeros(), x0 + last_bit);
             *span = Some((first, last));
             let row = PixelRect {
                 x0: first,
