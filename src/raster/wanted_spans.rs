@@ -1,6 +1,6 @@
 //! The columns a masked pass wants on each row of a tile, so that its visibility is resolved
 //! only there: an adaptive still's later passes want a few pixels of most tiles, and resolving
-//! every pixel of each tile for them cost as much as shading what they wanted.
+//! every pixel of each tile for them was a large share of the still's work.
 
 use super::bin::TILE_SIZE;
 use super::row_runs::{RowBits, true_bits};
