@@ -563,14 +563,6 @@ impl ShadowMaps {
         (points, normals): (&[Vec3], &[Vec3]),
         out: &mut [f32],
     ) {
-        let curvature = self.curvatures.get(object).copied().unwrap_or(0.0);
-        let receiver = Receiver {
-            lift: self.lifts.get(object).copied().unwrap_or(0.0),
-            trust: match curvature {
-                0.0 => f32::INFINITY,
-                curvature => 2.0 * (2.0 * self.filter.reach() / curvature).sqrt(),
-            },
-        };
         if maps.casters.all_clear(points, own) {
             for ((out, &p), &n) in out.iter_mut().zip(points).zip(normals) {
                 let lookup = match own {
@@ -581,6 +573,14 @@ impl ShadowMaps {
             }
             return;
         }
+        let curvature = self.curvatures.get(object).copied().unwrap_or(0.0);
+        let receiver = Receiver {
+            lift: self.lifts.get(object).copied().unwrap_or(0.0),
+            trust: match curvature {
+                0.0 => f32::INFINITY,
+                curvature => 2.0 * (2.0 * self.filter.reach() / curvature).sqrt(),
+            },
+        };
         let mut screened = Screened::default();
         for (first, out) in (0..)
             .step_by(SCREEN_LANES)
