@@ -245,18 +245,28 @@ impl TileBuffers {
             || {
                 for &index in bin {
                     let t = &triangles[index as usize];
-                    triangle_rows(t, &clip, shift, |row| {
-                        let Some(row) = wanted.map_or(Some(row), |spans| spans.clip(row)) else {
-                            return;
-                        };
-                        let first = ((row.y - rect.y0) * TILE_SIZE + (row.x0 - rect.x0)) as usize;
-                        let slots = first..=first + (row.x1 - row.x0) as usize;
-                        let nearest = RowNearest {
-                            inv_w: &mut self.inv_w[slots.clone()],
-                            triangle: &mut self.triangle[slots],
-                        };
-                        nearest.cover(t, &row, index, shift);
-                    });
+                    // Inlined, or its coverage loop stays SSE2 (the compiler left it out of
+                    // line in some builds).
+                    triangle_rows(
+                        t,
+                        &clip,
+                        shift,
+                        #[inline(always)]
+                        |row| {
+                            let Some(row) = wanted.map_or(Some(row), |spans| spans.clip(row))
+                            else {
+                                return;
+                            };
+                            let first =
+                                ((row.y - rect.y0) * TILE_SIZE + (row.x0 - rect.x0)) as usize;
+                            let slots = first..=first + (row.x1 - row.x0) as usize;
+                            let nearest = RowNearest {
+                                inv_w: &mut self.inv_w[slots.clone()],
+                                triangle: &mut self.triangle[slots],
+                            };
+                            nearest.cover(t, &row, index, shift);
+                        },
+                    );
                 }
             },
         );

@@ -1,7 +1,6 @@
 //! Where adaptive supersampling must sample a pixel fully, read off a pass at pixel centres.
 
 use crate::raster::Framebuffer;
-use glam::Vec3;
 use rayon::prelude::*;
 
 /// Marks the pixels of a centre pass that adaptive supersampling must sample fully: where a
@@ -26,10 +25,7 @@ pub fn contrast_mask(pass: &Framebuffer, threshold: f32, mask: &mut Vec<bool>) {
     if w == 0 {
         return;
     }
-    let keys = |y: usize, row: &mut RowKeys| {
-        let pixels = y * w..(y + 1) * w;
-        row.fill(&pass.color()[pixels.clone()], &pass.depth()[pixels]);
-    };
+    let pixels_of_row = |y: usize| y * w..(y + 1) * w;
     // Each job marks a run of rows, reading every row's keys once: the three in hand roll down.
     let rows_per_job = 16;
     mask.par_chunks_mut(w * rows_per_job)
@@ -37,14 +33,20 @@ pub fn contrast_mask(pass: &Framebuffer, threshold: f32, mask: &mut Vec<bool>) {
         .for_each(|(job, marks)| {
             let first = job * rows_per_job;
             let mut rows = <[RowKeys; 3]>::default();
-            keys(first.saturating_sub(1), &mut rows[0]);
-            keys(first, &mut rows[1]);
-            for (y, marks) in (first..).zip(marks.chunks_mut(w)) {
-                keys((y + 1).min(h - 1), &mut rows[2]);
-                let [up, row, down] = &rows;
-                mark_row([up, row, down], threshold, marks);
-                rows.rotate_left(1);
-            }
+            // The keys' square roots and the marking's compares vectorise: AVX2 where there.
+            crate::simd::widest(
+                #[inline(always)]
+                || {
+                    rows[0].fill(pass, pixels_of_row(first.saturating_sub(1)));
+                    rows[1].fill(pass, pixels_of_row(first));
+                    for (y, marks) in (first..).zip(marks.chunks_mut(w)) {
+                        rows[2].fill(pass, pixels_of_row((y + 1).min(h - 1)));
+                        let [up, row, down] = &rows;
+                        mark_row([up, row, down], threshold, marks);
+                        rows.rotate_left(1);
+                    }
+                },
+            )
         });
 }
 
@@ -56,7 +58,10 @@ struct RowKeys {
 }
 
 impl RowKeys {
-    fn fill(&mut self, colors: &[Vec3], depth: &[f32]) {
+    /// Takes the keys of `pixels` of `pass`.
+    #[inline(always)]
+    fn fill(&mut self, pass: &Framebuffer, pixels: std::ops::Range<usize>) {
+        let (colors, depth) = (&pass.color()[pixels.clone()], &pass.depth()[pixels]);
         for (c, channel) in self.channels.iter_mut().enumerate() {
             channel.clear();
             channel.extend(colors.iter().map(|colour| colour[c].max(0.0).sqrt()));
@@ -67,6 +72,7 @@ impl RowKeys {
 }
 
 /// Marks one row from the keys of the rows above, at and below it.
+#[inline(always)]
 fn mark_row(rows: [&RowKeys; 3], threshold: f32, marks: &mut [bool]) {
     let last = marks.len() - 1;
     if last >= 2 {
@@ -99,6 +105,7 @@ fn marked_at([up, row, down]: [&RowKeys; 3], threshold: f32, x: usize, last: usi
 
 /// `marked_at` for the pixels between a row's ends, where no column is clamped: whole slices
 /// shifted by a pixel, which the compiler turns into vector code.
+#[inline(always)]
 fn mark_interior([up, row, down]: [&RowKeys; 3], threshold: f32, marks: &mut [bool]) {
     let n = marks.len();
     // Each key row as (left neighbours, the pixels, right neighbours) of the n interior pixels.
@@ -129,6 +136,7 @@ fn mark_interior([up, row, down]: [&RowKeys; 3], threshold: f32, marks: &mut [bo
 #[cfg(test)]
 mod tests {
     use super::*;
+    use glam::Vec3;
 
     /// The mask's definition, pixel by pixel over the whole pass.
     fn mask_by_definition(pass: &Framebuffer, threshold: f32) -> Vec<bool> {
