@@ -81,14 +81,14 @@ pub struct ShadeScratch {
     group_starts: Vec<usize>,
     frames: Vec<Frame>,
     colors: Vec<Vec3>,
-    /// Camera-relative positions and facing normals to light, and the lit colours.
+    /// Camera-relative positions (for shadows and lighting), facing normals to light, and the
+    /// lit colours.
     points: Vec<Vec3>,
     normals: Vec<Vec3>,
     lit: Vec<Vec3>,
     /// Per light, per fragment, the fraction of the light reaching it; empty without shadows.
     reach: Vec<f32>,
-    /// The fragments' camera-relative points and facing geometric normals, for shadows.
-    shadow_points: Vec<Vec3>,
+    /// The fragments' facing geometric normals, for shadows.
     shadow_normals: Vec<Vec3>,
     heights: Vec<f32>,
     gradients: Vec<Vec2>,
@@ -276,17 +276,20 @@ impl LitShader {
         }
         let mut flattened = self.base_colors(object, fragments, group, scratch);
         flattened += self.bump_gradients(object, fragments, group, scratch);
+        let (points, origin) = (&mut scratch.points, object.origin);
+        points.clear();
+        points.extend(scratch.frames.iter().map(|frame| origin + frame.p));
         if self.mode == ShaderMode::Shaded {
-            self.light_reach(object_index, object, scratch);
+            self.light_reach(object_index, scratch);
         }
         if self.mode == ShaderMode::Shaded && material.bump.is_none() {
-            // The frames' own points and normals, read straight into the lighting's lanes.
-            let (frames, origin) = (&scratch.frames, object.origin);
+            // The frames' own normals, read straight into the lighting's lanes.
+            let (frames, points) = (&scratch.frames, &scratch.points);
             let surface = |range: Range<usize>| {
-                frames[range].iter().map(move |frame| {
-                    let p = origin + frame.p;
-                    (p, frame.n * facing_sign(p, frame.n))
-                })
+                let points = points[range.clone()].iter();
+                points
+                    .zip(&frames[range])
+                    .map(|(&p, frame)| (p, frame.n * facing_sign(p, frame.n)))
             };
             self.lighting(material, group, &scratch.colors, &scratch.reach)
                 .light(surface, &mut scratch.lit, out);
@@ -328,9 +331,10 @@ impl LitShader {
         }
     }
 
-    /// How much of each light reaches the group's fragments, into `scratch.reach` (left empty
-    /// when no light is blocked anywhere). Shadows follow the geometric surface, not the bumps.
-    fn light_reach(&self, object_index: usize, object: &FrameObject, scratch: &mut ShadeScratch) {
+    /// How much of each light reaches the group's fragments (at `scratch.points`), into
+    /// `scratch.reach` (left empty when no light is blocked anywhere). Shadows follow the
+    /// geometric surface, not the bumps.
+    fn light_reach(&self, object_index: usize, scratch: &mut ShadeScratch) {
         scratch.reach.clear();
         let Some(shadows) = &self.shadows else {
             return;
@@ -339,11 +343,9 @@ impl LitShader {
         if !(0..lights).any(|light| shadows.casts(light)) {
             return;
         }
-        let (points, normals) = (&mut scratch.shadow_points, &mut scratch.shadow_normals);
-        points.clear();
+        let (points, normals) = (&scratch.points, &mut scratch.shadow_normals);
         normals.clear();
         let frames = &scratch.frames;
-        points.extend(frames.iter().map(|frame| object.origin + frame.p));
         let facing = |(&p, frame): (&Vec3, &Frame)| frame.n * facing_sign(p, frame.n);
         normals.extend(points.iter().zip(frames).map(facing));
         let count = points.len();
@@ -355,8 +357,8 @@ impl LitShader {
         }
     }
 
-    /// Camera-relative points and facing (bumped) normals of the group, into `scratch.points`
-    /// and `scratch.normals` (shading without a bump reads them from the frames instead).
+    /// Facing (bumped) normals of the group at `scratch.points`, into `scratch.normals`
+    /// (shading without a bump reads them from the frames instead).
     fn lighting_inputs(
         &self,
         object: &FrameObject,
@@ -366,9 +368,8 @@ impl LitShader {
     ) {
         let surface = &object.prepared.surface;
         let bumped = object.prepared.material.bump.is_some();
-        // Every point and normal is written below: resized, not cleared.
-        let (points, normals) = (&mut scratch.points, &mut scratch.normals);
-        points.resize(group.len(), Vec3::ZERO);
+        // Every normal is written below: resized, not cleared.
+        let (points, normals) = (&scratch.points, &mut scratch.normals);
         normals.resize(group.len(), Vec3::ZERO);
         let (frames, heights, gradients) = (&scratch.frames, &scratch.heights, &scratch.gradients);
         // Normals worked out as a batch (or `false`: one by one below).
@@ -392,9 +393,8 @@ impl LitShader {
             _ => false,
         };
         let frames = group.iter().zip(&scratch.frames);
-        let outputs = points.iter_mut().zip(normals);
-        for (k, ((&i, frame), (point, normal))) in frames.zip(outputs).enumerate() {
-            let p = object.origin + frame.p;
+        let outputs = points.iter().zip(normals);
+        for (k, ((&i, frame), (&p, normal))) in frames.zip(outputs).enumerate() {
             let n = if batched {
                 *normal
             } else if bumped {
@@ -412,7 +412,6 @@ impl LitShader {
             } else {
                 frame.n
             };
-            *point = p;
             *normal = n * facing_sign(p, frame.n);
         }
     }
