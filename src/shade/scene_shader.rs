@@ -279,8 +279,13 @@ impl LitShader {
         let (points, origin) = (&mut scratch.points, object.origin);
         points.clear();
         points.extend(scratch.frames.iter().map(|frame| origin + frame.p));
+        // On a flat surface every frame has the same normal: read once, not from each frame.
+        let constant_normal = match scratch.frames.first() {
+            Some(frame) if self.frame_is_constant(surface) => Some(frame.n),
+            _ => None,
+        };
         if self.mode == ShaderMode::Shaded {
-            self.light_reach(object_index, scratch);
+            self.light_reach(object_index, constant_normal, scratch);
         }
         if self.mode == ShaderMode::Shaded && material.bump.is_none() {
             // The frames' own normals, read straight into the lighting's lanes.
@@ -295,7 +300,7 @@ impl LitShader {
                 .light(surface, &mut scratch.lit, out);
             return flattened;
         }
-        self.lighting_inputs(object, fragments, group, scratch);
+        self.lighting_inputs(object, fragments, group, constant_normal, scratch);
         if self.mode == ShaderMode::Shaded {
             let (points, normals) = (&scratch.points, &scratch.normals);
             let surface = |range: Range<usize>| {
@@ -333,8 +338,14 @@ impl LitShader {
 
     /// How much of each light reaches the group's fragments (at `scratch.points`), into
     /// `scratch.reach` (left empty when no light is blocked anywhere). Shadows follow the
-    /// geometric surface, not the bumps.
-    fn light_reach(&self, object_index: usize, scratch: &mut ShadeScratch) {
+    /// geometric surface, not the bumps. `constant_normal` is every frame's normal, if they share
+    /// one.
+    fn light_reach(
+        &self,
+        object_index: usize,
+        constant_normal: Option<Vec3>,
+        scratch: &mut ShadeScratch,
+    ) {
         scratch.reach.clear();
         let Some(shadows) = &self.shadows else {
             return;
@@ -345,9 +356,14 @@ impl LitShader {
         }
         let (points, normals) = (&scratch.points, &mut scratch.shadow_normals);
         normals.clear();
-        let frames = &scratch.frames;
-        let facing = |(&p, frame): (&Vec3, &Frame)| frame.n * facing_sign(p, frame.n);
-        normals.extend(points.iter().zip(frames).map(facing));
+        let facing = |p: Vec3, n: Vec3| n * facing_sign(p, n);
+        match constant_normal {
+            Some(n) => normals.extend(points.iter().map(|&p| facing(p, n))),
+            None => {
+                let frames = points.iter().zip(&scratch.frames);
+                normals.extend(frames.map(|(&p, frame)| facing(p, frame.n)));
+            }
+        }
         let count = points.len();
         scratch.reach.resize(lights * count, 1.0);
         for (light, reach) in scratch.reach.chunks_mut(count.max(1)).enumerate() {
@@ -358,12 +374,14 @@ impl LitShader {
     }
 
     /// Facing (bumped) normals of the group at `scratch.points`, into `scratch.normals`
-    /// (shading without a bump reads them from the frames instead).
+    /// (shading without a bump reads them from the frames instead). `constant_normal` is every
+    /// frame's normal, if they share one.
     fn lighting_inputs(
         &self,
         object: &FrameObject,
         fragments: &[Fragment],
         group: &[u32],
+        constant_normal: Option<Vec3>,
         scratch: &mut ShadeScratch,
     ) {
         let surface = &object.prepared.surface;
@@ -372,17 +390,18 @@ impl LitShader {
         let (points, normals) = (&scratch.points, &mut scratch.normals);
         normals.resize(group.len(), Vec3::ZERO);
         let (frames, heights, gradients) = (&scratch.frames, &scratch.heights, &scratch.gradients);
+        let blinn_when_flat =
+            bumped && matches!(self.normal_form, NormalForm::Blinn | NormalForm::Full);
+        if let (true, Some(frame), Some(n)) = (blinn_when_flat, frames.first(), constant_normal) {
+            // On a flat surface the full normal is Blinn's (see `bumped_normal`).
+            blinn_normals_on_flat(frame, heights, gradients, normals);
+            let facing = normals.iter_mut().zip(points);
+            facing.for_each(|(normal, &p)| *normal *= facing_sign(p, n));
+            return;
+        }
         // Normals worked out as a batch (or `false`: one by one below).
         let batched = match frames.first() {
             _ if !bumped => false,
-            // On a flat surface the full normal is Blinn's (see `bumped_normal`).
-            Some(frame)
-                if matches!(self.normal_form, NormalForm::Blinn | NormalForm::Full)
-                    && self.frame_is_constant(surface) =>
-            {
-                blinn_normals_on_flat(frame, heights, gradients, normals);
-                true
-            }
             _ if self.normal_form == NormalForm::Blinn => {
                 blinn_normals(frames, heights, gradients, normals);
                 true
