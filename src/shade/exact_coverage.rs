@@ -58,6 +58,56 @@ pub enum ReachShape {
 /// it, relative to the distances involved: room for the f32 rounding of its point.
 const FLAT_ROUNDING: f32 = 1e-5;
 
+/// Whether a neighbour's true surface may pass in front of a fragment (`Neighbours::reach_test`):
+/// `origin` is the neighbour's camera-relative anchor, `ball` its ball (centre relative to the
+/// anchor, squared radius).
+#[derive(Clone, Copy, Debug)]
+enum ReachTest {
+    Everywhere,
+    /// Within the ball.
+    Ball {
+        origin: Vec3,
+        ball: (Vec3, f32),
+    },
+    /// Within the ball, and on the far side of the plane through `origin` with unit `normal`
+    /// (on which side the eye lies, and how far it is from the anchor), or within rounding of it.
+    Flat {
+        origin: Vec3,
+        ball: (Vec3, f32),
+        normal: Vec3,
+        eye_side: f32,
+        eye_distance: f32,
+    },
+}
+
+impl ReachTest {
+    /// Whether the surface may pass in front of the fragment point `depth·direction`.
+    #[inline(always)]
+    fn may_reach(&self, direction: Vec3, depth: f32) -> bool {
+        // The fragment relative to the anchor, and whether it lies outside the ball.
+        let outside = |origin: Vec3, (centre, radius_squared): (Vec3, f32)| {
+            let point = direction * depth - origin;
+            (point.distance_squared(centre) > radius_squared, point)
+        };
+        match *self {
+            ReachTest::Everywhere => true,
+            ReachTest::Ball { origin, ball } => !outside(origin, ball).0,
+            ReachTest::Flat {
+                origin,
+                ball,
+                normal,
+                eye_side,
+                eye_distance,
+            } => {
+                let (outside, point) = outside(origin, ball);
+                let point_side = normal.dot(point);
+                let rounding = FLAT_ROUNDING * (eye_distance + point.length());
+                !outside && (eye_side * point_side <= 0.0 || point_side.abs() <= rounding)
+            }
+        }
+    }
+}
+
 impl Neighbours {
     /// Objects i and j ≠ i are neighbours where `overlap(i, j)`; `reaches` bounds where each
     /// object's true surface lies, relative to its anchor.
@@ -85,25 +135,33 @@ impl Neighbours {
         })
     }
 
-    /// Whether the true surface of the object whose anchor is at `origin` (camera-relative)
-    /// may pass in front of the camera-relative fragment point `depth·direction`.
-    fn may_reach(&self, object: usize, origin: Vec3, rays: &SampleRays, ray: (Vec3, f32)) -> bool {
+    /// Whether the true surface of the object whose anchor is at `origin` (camera-relative) may
+    /// pass in front of a fragment: the test, its parts that do not depend on the fragment
+    /// worked out once.
+    fn reach_test(&self, object: usize, origin: Vec3, rays: &SampleRays) -> ReachTest {
         let Some(reach) = self.reaches.get(object) else {
-            return true;
+            return ReachTest::Everywhere;
         };
-        let (direction, depth) = ray;
-        let (eye, point) = (-origin, direction * depth - origin);
         let (centre, radius) = reach.ball;
+        let ball = (centre, radius * radius);
         match reach.shape {
             // Where the near plane clips its hull, a curved surface may pass in front of
             // fragments far behind it, where its hull would have covered them.
-            ReachShape::Open | ReachShape::Closed if reach.near_clips_hull(origin, rays) => true,
-            _ if point.distance_squared(centre) > radius * radius => false,
-            ReachShape::Open | ReachShape::Closed => true,
+            ReachShape::Open | ReachShape::Closed if reach.near_clips_hull(origin, rays) => {
+                ReachTest::Everywhere
+            }
+            ReachShape::Open | ReachShape::Closed => ReachTest::Ball { origin, ball },
             ReachShape::Flat(normal) => {
-                let (eye_side, point_side) = (normal.dot(eye), normal.dot(point));
-                let rounding = FLAT_ROUNDING * (eye.length() + point.length());
-                eye_side * point_side <= 0.0 || point_side.abs() <= rounding
+                let eye = -origin;
+                let eye_side = normal.dot(eye);
+                let eye_distance = eye.length();
+                ReachTest::Flat {
+                    origin,
+                    ball,
+                    normal,
+                    eye_side,
+                    eye_distance,
+                }
             }
         }
     }
@@ -134,13 +192,12 @@ pub(super) fn nearer_neighbours(
         }
         let surface = &object.prepared.surface;
         // Only the fragments within the neighbour's reach are cast against it.
+        let test = neighbours.reach_test(other as usize, object.origin, rays);
         let mut candidates = std::mem::take(&mut scratch.candidates);
         candidates.clear();
         candidates.extend(run.clone().filter(|&k| {
             let f = &fragments[k];
-            let direction = rays.through(f.x, f.y);
-            !scratch.pending[k]
-                && neighbours.may_reach(other as usize, object.origin, rays, (direction, f.depth))
+            !scratch.pending[k] && test.may_reach(rays.through(f.x, f.y), f.depth)
         }));
         let near = candidates.iter().map(|&k| &fragments[k]);
         match surface {
