@@ -245,6 +245,12 @@ impl TileBuffers {
             || {
                 for &index in bin {
                     let t = &triangles[index as usize];
+                    if let Some(spans) = wanted {
+                        let reached = t.bounds.intersect(&clip);
+                        if !reached.is_some_and(|rect| spans.any_in(&rect)) {
+                            continue;
+                        }
+                    }
                     // Inlined, or its coverage loop stays SSE2 (the compiler left it out of
                     // line in some builds).
                     triangle_rows(

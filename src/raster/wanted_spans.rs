@@ -12,8 +12,11 @@ use std::ops::RangeInclusive;
 /// pixels of the frame; `None` where the row wants nothing.
 pub struct WantedSpans {
     rows: [Option<(u32, u32)>; TILE_SIZE as usize],
-    /// The rect's first row.
+    /// Per row, the wanted pixels as bits from the rect's first column.
+    bits: [RowBits; TILE_SIZE as usize],
+    /// The rect's first row and column.
     first_row: u32,
+    first_column: u32,
     /// The smallest rect holding every span.
     bounds: Option<PixelRect>,
 }
@@ -24,11 +27,15 @@ impl WantedSpans {
         let first_row = rows.rect.y0;
         let mut spans = WantedSpans {
             rows: [None; TILE_SIZE as usize],
+            bits: [0; TILE_SIZE as usize],
             first_row,
+            first_column: rows.rect.x0,
             bounds: None,
         };
-        for ((span, pixels), y) in spans.rows.iter_mut().zip(rows.each()).zip(first_row..) {
+        let each_row = spans.rows.iter_mut().zip(&mut spans.bits);
+        for (((span, row_bits), pixels), y) in each_row.zip(rows.each()).zip(first_row..) {
             let bits = true_bits(&mask[pixels]);
+            *row_bits = bits;
             if bits == 0 {
                 continue;
             }
@@ -52,11 +59,31 @@ impl WantedSpans {
         self.bounds
     }
 
-    /// The part of `row` that is wanted, if any.
+    /// Whether any pixel of `rect` (within the tile) is wanted.
+    #[inline(always)]
+    pub fn any_in(&self, rect: &PixelRect) -> bool {
+        let rows = (rect.y0 - self.first_row) as usize..=(rect.y1 - self.first_row) as usize;
+        let wanted = self.bits[rows].iter().fold(0, |any, &bits| any | bits);
+        wanted & self.columns(rect.x0, rect.x1) != 0
+    }
+
+    /// The part of `row` (within the tile) from its first to its last wanted pixel, if any.
     #[inline(always)]
     pub fn clip(&self, row: RowSpan) -> Option<RowSpan> {
-        let (first, last) = self.rows[(row.y - self.first_row) as usize]?;
+        let bits = self.bits[(row.y - self.first_row) as usize] & self.columns(row.x0, row.x1);
+        if bits == 0 {
+            return None;
+        }
+        let first = self.first_column + bits.trailing_zeros();
+        let last = self.first_column + (RowBits::BITS - 1 - bits.leading_zeros());
         row.within(first, last)
+    }
+
+    /// The bits of columns `x0..=x1` (within the tile).
+    #[inline(always)]
+    fn columns(&self, x0: u32, x1: u32) -> RowBits {
+        let (first, last) = (x0 - self.first_column, x1 - self.first_column);
+        (RowBits::MAX >> (RowBits::BITS - 1 - last)) & (RowBits::MAX << first)
     }
 
     /// The wanted pixels' slots in a tile buffer of `TILE_SIZE`-slot rows whose first slot is
