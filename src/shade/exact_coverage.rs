@@ -69,15 +69,32 @@ enum ReachTest {
         origin: Vec3,
         ball: (Vec3, f32),
     },
-    /// Within the ball, and on the far side of the plane through `origin` with unit `normal`
-    /// (on which side the eye lies, and how far it is from the anchor), or within rounding of it.
+    /// Within the ball, and past the neighbour's plane.
     Flat {
         origin: Vec3,
         ball: (Vec3, f32),
-        normal: Vec3,
-        eye_side: f32,
-        eye_distance: f32,
+        plane: FlatSide,
     },
+}
+
+/// A flat neighbour's plane through its anchor, with unit `normal`, as the eye sees it: on which
+/// side the eye lies, and how far it is from the anchor.
+#[derive(Clone, Copy, Debug)]
+struct FlatSide {
+    normal: Vec3,
+    eye_side: f32,
+    eye_distance: f32,
+}
+
+impl FlatSide {
+    /// Whether `point` (relative to the anchor) lies on the far side of the plane from the eye,
+    /// or within rounding of it.
+    #[inline(always)]
+    fn passed(&self, point: Vec3) -> bool {
+        let point_side = self.normal.dot(point);
+        let rounding = FLAT_ROUNDING * (self.eye_distance + point.length());
+        self.eye_side * point_side <= 0.0 || point_side.abs() <= rounding
+    }
 }
 
 impl ReachTest {
@@ -95,14 +112,10 @@ impl ReachTest {
             ReachTest::Flat {
                 origin,
                 ball,
-                normal,
-                eye_side,
-                eye_distance,
+                plane,
             } => {
                 let (outside, point) = outside(origin, ball);
-                let point_side = normal.dot(point);
-                let rounding = FLAT_ROUNDING * (eye_distance + point.length());
-                !outside && (eye_side * point_side <= 0.0 || point_side.abs() <= rounding)
+                !outside && plane.passed(point)
             }
         }
     }
@@ -153,14 +166,15 @@ impl Neighbours {
             ReachShape::Open | ReachShape::Closed => ReachTest::Ball { origin, ball },
             ReachShape::Flat(normal) => {
                 let eye = -origin;
-                let eye_side = normal.dot(eye);
-                let eye_distance = eye.length();
+                let plane = FlatSide {
+                    normal,
+                    eye_side: normal.dot(eye),
+                    eye_distance: eye.length(),
+                };
                 ReachTest::Flat {
                     origin,
                     ball,
-                    normal,
-                    eye_side,
-                    eye_distance,
+                    plane,
                 }
             }
         }
