@@ -775,11 +775,12 @@ impl GroupLighting<'_> {
     }
 }
 
-/// The range `group` lists, when its indices are consecutive and ascending.
+/// The range `group` lists, when its indices are consecutive. A group ascends without repeats
+/// (`group_by_object` orders it so): then its ends alone tell.
 fn consecutive(group: &[u32]) -> Option<Range<usize>> {
-    let first = *group.first()?;
-    let ascending = (first..).zip(group).all(|(expected, &i)| i == expected);
-    ascending.then(|| first as usize..first as usize + group.len())
+    debug_assert!(group.windows(2).all(|pair| pair[0] < pair[1]), "ascending");
+    let (first, last) = (*group.first()? as usize, *group.last()? as usize);
+    (last - first + 1 == group.len()).then_some(first..last + 1)
 }
 
 fn reset<T: Copy>(values: &mut Vec<T>, len: usize, value: T) {
@@ -915,6 +916,15 @@ mod tests {
             },
             chosen_live: false,
         })
+    }
+
+    #[test]
+    fn a_group_is_consecutive_when_its_ends_span_it() {
+        assert_eq!(consecutive(&[3, 4, 5]), Some(3..6));
+        assert_eq!(consecutive(&[7]), Some(7..8));
+        assert_eq!(consecutive(&[3, 5, 6]), None);
+        assert_eq!(consecutive(&[0, 1, 3]), None);
+        assert_eq!(consecutive(&[]), None);
     }
 
     /// The shader skips derivatives only where nothing it reads needs them, object by object:
