@@ -230,9 +230,7 @@ impl TileBuffers {
                 *rect
             }
             Some(spans) => {
-                spans
-                    .slots(rect.x0)
-                    .for_each(|slots| self.inv_w[slots].fill(0.0));
+                spans.slots().for_each(|slots| self.inv_w[slots].fill(0.0));
                 let Some(bounds) = spans.bounds() else {
                     return;
                 };

@@ -8,10 +8,8 @@ use super::scan::{PixelRect, RowSpan};
 use super::tile::TileRows;
 use std::ops::RangeInclusive;
 
-/// Per row of a tile (from the first row of its rect): the first and last wanted column, in
-/// pixels of the frame; `None` where the row wants nothing.
+/// The wanted pixels of a tile's rows (from the first row of its rect).
 pub struct WantedSpans {
-    rows: [Option<(u32, u32)>; TILE_SIZE as usize],
     /// Per row, the wanted pixels as bits from the rect's first column.
     bits: [RowBits; TILE_SIZE as usize],
     /// The rect's first row and column.
@@ -26,27 +24,20 @@ impl WantedSpans {
     pub fn of(mask: &[bool], rows: &TileRows) -> WantedSpans {
         let first_row = rows.rect.y0;
         let mut spans = WantedSpans {
-            rows: [None; TILE_SIZE as usize],
             bits: [0; TILE_SIZE as usize],
             first_row,
             first_column: rows.rect.x0,
             bounds: None,
         };
-        let each_row = spans.rows.iter_mut().zip(&mut spans.bits);
-        for (((span, row_bits), pixels), y) in each_row.zip(rows.each()).zip(first_row..) {
-            let bits = true_bits(&mask[pixels]);
-            *row_bits = bits;
-            if bits == 0 {
+        for ((row_bits, pixels), y) in spans.bits.iter_mut().zip(rows.each()).zip(first_row..) {
+            *row_bits = true_bits(&mask[pixels]);
+            let Some((first, last)) = ends(*row_bits) else {
                 continue;
-            }
-            let x0 = rows.rect.x0;
-            let last_bit = RowBits::BITS - 1 - bits.leading_zeros();
-            let (first, last) = (x0 + bits.trailing_zeros(), x0 + last_bit);
-            *span = Some((first, last));
+            };
             let row = PixelRect {
-                x0: first,
+                x0: spans.first_column + first,
                 y0: y,
-                x1: last,
+                x1: spans.first_column + last,
                 y1: y,
             };
             spans.bounds = Some(spans.bounds.map_or(row, |b| b.union(&row)));
@@ -71,12 +62,8 @@ impl WantedSpans {
     #[inline(always)]
     pub fn clip(&self, row: RowSpan) -> Option<RowSpan> {
         let bits = self.bits[(row.y - self.first_row) as usize] & self.columns(row.x0, row.x1);
-        if bits == 0 {
-            return None;
-        }
-        let first = self.first_column + bits.trailing_zeros();
-        let last = self.first_column + (RowBits::BITS - 1 - bits.leading_zeros());
-        row.within(first, last)
+        let (first, last) = ends(bits)?;
+        row.within(self.first_column + first, self.first_column + last)
     }
 
     /// The bits of columns `x0..=x1` (within the tile).
@@ -86,13 +73,25 @@ impl WantedSpans {
         (RowBits::MAX >> (RowBits::BITS - 1 - last)) & (RowBits::MAX << first)
     }
 
-    /// The wanted pixels' slots in a tile buffer of `TILE_SIZE`-slot rows whose first slot is
-    /// pixel (`x0`, the first row), one range per row with any.
-    pub fn slots(&self, x0: u32) -> impl Iterator<Item = RangeInclusive<usize>> + '_ {
-        (0..).zip(&self.rows).filter_map(move |(row, span)| {
-            let (first, last) = (*span)?;
-            let start = (row * TILE_SIZE + first - x0) as usize;
+    /// The slots from each row's first to its last wanted pixel, in a tile buffer of
+    /// `TILE_SIZE`-slot rows whose first slot is the rect's first pixel; one range per row with
+    /// any.
+    pub fn slots(&self) -> impl Iterator<Item = RangeInclusive<usize>> + '_ {
+        (0..).zip(&self.bits).filter_map(|(row, &bits)| {
+            let (first, last) = ends(bits)?;
+            let start = (row * TILE_SIZE + first) as usize;
             Some(start..=start + (last - first) as usize)
         })
     }
+}
+
+/// The first and last set bit of a row, if any.
+#[inline(always)]
+fn ends(bits: RowBits) -> Option<(u32, u32)> {
+    (bits != 0).then(|| {
+        (
+            bits.trailing_zeros(),
+            RowBits::BITS - 1 - bits.leading_zeros(),
+        )
+    })
 }
