@@ -58,22 +58,16 @@ pub enum ReachShape {
 /// it, relative to the distances involved: room for the f32 rounding of its point.
 const FLAT_ROUNDING: f32 = 1e-5;
 
-/// Whether a neighbour's true surface may pass in front of a fragment (`Neighbours::reach_test`):
-/// `origin` is the neighbour's camera-relative anchor, `ball` its ball (centre relative to the
-/// anchor, squared radius).
+/// Whether a neighbour's true surface may pass in front of a fragment (`Neighbours::reach_test`).
 #[derive(Clone, Copy, Debug)]
 enum ReachTest {
     Everywhere,
-    /// Within the ball.
-    Ball {
+    /// Within the neighbour's ball (centre relative to its camera-relative anchor `origin`,
+    /// squared radius), and, for a flat neighbour, past its plane.
+    Within {
         origin: Vec3,
         ball: (Vec3, f32),
-    },
-    /// Within the ball, and past the neighbour's plane.
-    Flat {
-        origin: Vec3,
-        ball: (Vec3, f32),
-        plane: FlatSide,
+        plane: Option<FlatSide>,
     },
 }
 
@@ -101,21 +95,17 @@ impl ReachTest {
     /// Whether the surface may pass in front of the fragment point `depth·direction`.
     #[inline(always)]
     fn may_reach(&self, direction: Vec3, depth: f32) -> bool {
-        // The fragment relative to the anchor, and whether it lies outside the ball.
-        let outside = |origin: Vec3, (centre, radius_squared): (Vec3, f32)| {
-            let point = direction * depth - origin;
-            (point.distance_squared(centre) > radius_squared, point)
-        };
         match *self {
             ReachTest::Everywhere => true,
-            ReachTest::Ball { origin, ball } => !outside(origin, ball).0,
-            ReachTest::Flat {
+            ReachTest::Within {
                 origin,
-                ball,
+                ball: (centre, radius_squared),
                 plane,
             } => {
-                let (outside, point) = outside(origin, ball);
-                !outside && plane.passed(point)
+                // The fragment relative to the anchor.
+                let point = direction * depth - origin;
+                let outside = point.distance_squared(centre) > radius_squared;
+                !outside && plane.is_none_or(|plane| plane.passed(point))
             }
         }
     }
@@ -163,7 +153,11 @@ impl Neighbours {
             ReachShape::Open | ReachShape::Closed if reach.near_clips_hull(origin, rays) => {
                 ReachTest::Everywhere
             }
-            ReachShape::Open | ReachShape::Closed => ReachTest::Ball { origin, ball },
+            ReachShape::Open | ReachShape::Closed => ReachTest::Within {
+                origin,
+                ball,
+                plane: None,
+            },
             ReachShape::Flat(normal) => {
                 let eye = -origin;
                 let plane = FlatSide {
@@ -171,10 +165,10 @@ impl Neighbours {
                     eye_side: normal.dot(eye),
                     eye_distance: eye.length(),
                 };
-                ReachTest::Flat {
+                ReachTest::Within {
                     origin,
                     ball,
-                    plane,
+                    plane: Some(plane),
                 }
             }
         }
