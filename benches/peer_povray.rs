@@ -260,15 +260,15 @@ fn povray_error(dir: &std::path::Path, scene: &str) -> ChannelError {
 }
 
 /// The pixels a one-sample frame leaves more than 2 steps (of 255) from full supersampling in
-/// some channel, and what refining exactly those with all their samples would shade: a bound
+/// some channel, and what refining exactly those with all `samples` would shade: a bound
 /// no contrast mask beats without settling some of them on fewer samples.
-fn report_needed(full: &[[u8; 3]], (one_sample, fragments): (Vec<[u8; 3]>, usize)) {
+fn report_needed(full: &[[u8; 3]], samples: u32, (one_sample, fragments): (Vec<[u8; 3]>, usize)) {
     let needed = full
         .iter()
         .zip(&one_sample)
         .filter(|(a, b)| (0..3).any(|c| a[c].abs_diff(b[c]) > 2))
         .count();
-    let further = pov_peer_settings(16, None).quality.samples as usize - 1;
+    let further = samples as usize - 1;
     println!(
         "  one sample against full 16 spp: {needed} pixels ({:.1}%) more than 2 steps off; \
          refining only those, fully, shades {:.2}x the one-sample fragments",
@@ -304,7 +304,7 @@ fn adaptive_errors(prepared: &PreparedScene, camera: &Camera) -> Vec<(f32, Chann
         samples: 1,
         ..base.supersampling()
     };
-    report_needed(&full, render(one_sample, None));
+    report_needed(&full, base.quality.samples, render(one_sample, None));
     CONTRASTS
         .into_iter()
         .map(|contrast| {

@@ -400,16 +400,16 @@ impl LitShader {
             return;
         }
         // Normals worked out as a batch (or `false`: one by one below).
-        let batched = match frames.first() {
+        let batched = match self.normal_form {
             _ if !bumped => false,
-            _ if self.normal_form == NormalForm::Blinn => {
+            NormalForm::Blinn => {
                 blinn_normals(frames, heights, gradients, normals);
                 true
             }
-            _ if self.normal_form == NormalForm::Full => {
+            NormalForm::Full => {
                 full_normals_in_closed_form(surface, frames, heights, gradients, normals)
             }
-            _ => false,
+            NormalForm::Seed => false,
         };
         let frames = group.iter().zip(&scratch.frames);
         let outputs = points.iter().zip(normals);
