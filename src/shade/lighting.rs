@@ -25,6 +25,18 @@ pub enum RelativeLight {
     },
 }
 
+impl RelativeLight {
+    /// The way from camera-relative point `p` to the light: to a point light (not unit), or a
+    /// directional light's unit direction. Its sign against a normal tells which side it lights.
+    #[inline(always)]
+    pub fn way_from(&self, p: Vec3) -> Vec3 {
+        match *self {
+            RelativeLight::Point { position, .. } => position - p,
+            RelativeLight::Directional { towards, .. } => towards,
+        }
+    }
+}
+
 impl FrameLights {
     pub fn new(ambient: Vec3, lights: &[Light], eye: DVec3) -> FrameLights {
         let lights = lights

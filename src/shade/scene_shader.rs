@@ -8,7 +8,7 @@ use super::bump::{
 use super::exact_coverage::Neighbours;
 use super::exact_point::{ExactScratch, SurfacePointSource, exact_fragments, true_hit_derivatives};
 use super::gradient::{GradientMethod, central_difference, shifted_fragments};
-use super::lighting::{FrameLights, blinn_phong_many, facing_sign};
+use super::lighting::{FrameLights, RelativeLight, blinn_phong_many, facing_sign};
 use super::pattern_batch::{PatternBatch, Sites};
 use super::shader_mode::ShaderMode;
 use super::shadowing::Shadowing;
@@ -41,7 +41,12 @@ pub struct LitShader {
     pub vertex_normals: Option<Arc<[VertexNormals]>>,
     /// Depth that the depth view shows as mid-grey.
     pub depth_scale: f32,
-    /// What blocks the lights (`None`: nothing does).
+    /// Whether each light stops at every surface's geometric terminator: it reaches a point only
+    /// where the point's unbumped seen side faces it, as shadows require (a bump facing the light
+    /// past a sphere's terminator lies inside the sphere's own shadow). Off, as with shadows off,
+    /// bumps are lit wherever their own normal faces a light, as in Blinn's pictures.
+    pub terminators: bool,
+    /// What else blocks the lights (`None`: nothing does).
     pub shadows: Option<Arc<dyn Shadowing>>,
     /// Which objects each one's true surface may pass in front of, for resolving coverage
     /// exactly at the true surfaces (`None`: the mesh's coverage stands).
@@ -63,10 +68,22 @@ impl LitShader {
             pattern_precision: Precision::Fastest,
             vertex_normals: None,
             depth_scale: (camera.target - camera.eye).length() as f32,
+            terminators: scene.shadows,
             shadows: None,
             exact_coverage: None,
             background: scene.background,
             surface_point: SurfacePointSource::Interpolated,
+        }
+    }
+}
+
+/// Zeroes `reach` where the light is behind the seen side of the geometric surface (facing
+/// unit `normals` at camera-relative `points`), or the side cannot be told (a NaN normal).
+fn stop_at_terminator(light: &RelativeLight, points: &[Vec3], normals: &[Vec3], reach: &mut [f32]) {
+    for ((reach, &p), &n) in reach.iter_mut().zip(points).zip(normals) {
+        let faces_light = n.dot(light.way_from(p)) > 0.0;
+        if !faces_light {
+            *reach = 0.0;
         }
     }
 }
@@ -337,9 +354,9 @@ impl LitShader {
     }
 
     /// How much of each light reaches the group's fragments (at `scratch.points`), into
-    /// `scratch.reach` (left empty when no light is blocked anywhere). Shadows follow the
-    /// geometric surface, not the bumps. `constant_normal` is every frame's normal, if they share
-    /// one.
+    /// `scratch.reach` (left empty when lights reach every fragment whole: no terminators).
+    /// Shadows and terminators follow the geometric surface, not the bumps. `constant_normal` is
+    /// every frame's normal, if they share one.
     fn light_reach(
         &self,
         object_index: usize,
@@ -347,11 +364,7 @@ impl LitShader {
         scratch: &mut ShadeScratch,
     ) {
         scratch.reach.clear();
-        let Some(shadows) = &self.shadows else {
-            return;
-        };
-        let lights = self.lights.lights.len();
-        if !(0..lights).any(|light| shadows.casts(light)) {
+        if !self.terminators || self.lights.lights.is_empty() {
             return;
         }
         let (points, normals) = (&scratch.points, &mut scratch.shadow_normals);
@@ -365,11 +378,14 @@ impl LitShader {
             }
         }
         let count = points.len();
-        scratch.reach.resize(lights * count, 1.0);
-        for (light, reach) in scratch.reach.chunks_mut(count.max(1)).enumerate() {
-            if shadows.casts(light) {
-                shadows.reaching(light, object_index, points, normals, reach);
+        scratch.reach.resize(self.lights.lights.len() * count, 1.0);
+        let per_light = scratch.reach.chunks_mut(count.max(1));
+        for ((index, light), reach) in self.lights.lights.iter().enumerate().zip(per_light) {
+            let shadows = self.shadows.as_ref().filter(|s| s.casts(index));
+            if let Some(shadows) = shadows {
+                shadows.reaching(index, object_index, points, normals, reach);
             }
+            stop_at_terminator(light, points, normals, reach);
         }
     }
 

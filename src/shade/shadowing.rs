@@ -11,6 +11,8 @@ pub trait Shadowing: Send + Sync {
     /// For fragments of object `object` at camera-relative `points` with unit geometric normals
     /// `normals` (turned to the side the viewer sees; bumps do not move geometry, so they cast no
     /// shadow), writes into `out` the fraction of light `light` that reaches each, in [0, 1].
+    /// Where a point's seen side faces away from the light the shader stops the light itself
+    /// (`LitShader::terminators`), whatever the answer there.
     fn reaching(
         &self,
         light: usize,

@@ -325,14 +325,16 @@ impl ShadowFace {
             return MapAnswer::LIT;
         }
         let facing = n.dot(self.towards_light(relative));
-        let grazing = facing.abs() < GRAZING;
         if facing.is_nan() || facing <= 0.0 {
             // The light is behind the side of the surface that is seen: the surface itself
-            // blocks it (exactly, with no map needed, so no band of light past the terminator).
-            return MapAnswer { lit: 0.0, grazing };
+            // blocks it (the shader's terminator, which no map lookup can undo).
+            return MapAnswer::DARK;
         }
         let lit = self.lit_fraction(relative, n, maps, receiver, facing);
-        MapAnswer { lit, grazing }
+        MapAnswer {
+            lit,
+            grazing: facing < GRAZING,
+        }
     }
 
     /// `reach`'s fraction where the surface faces the light (`facing`, the cosine, positive).
@@ -460,9 +462,12 @@ impl MapAnswer {
     /// Settled by the receiver alone, its way passing every other caster: lit where the light
     /// is in front of it (its cosine `facing`).
     fn facing(facing: f32) -> MapAnswer {
-        MapAnswer {
-            lit: if facing > 0.0 { 1.0 } else { 0.0 },
-            grazing: facing.abs() < GRAZING,
+        match facing > 0.0 {
+            true => MapAnswer {
+                lit: 1.0,
+                grazing: facing < GRAZING,
+            },
+            false => MapAnswer::DARK,
         }
     }
 }
@@ -498,14 +503,9 @@ impl Shadowing for ShadowMaps {
         let own = self.own_caster(object, points, normals);
         match shadows {
             LightShadows::Rays(spheres) if spheres.all_clear(points, own) => {
-                let rays = (self.edges.as_ref()).expect("rays are drawn with exact edges");
-                for ((out, &p), &n) in out.iter_mut().zip(points).zip(normals) {
-                    let facing = spheres.facing(p, n);
-                    // As below, for a way known to pass every caster but the receiver.
-                    let lit =
-                        facing > 0.0 || (facing > -GRAZING && !rays.blocked_at(light, p, n, None));
-                    *out = if lit { 1.0 } else { 0.0 };
-                }
+                // The way passes every caster but the receiver, which blocks it only past its
+                // terminator, where the shader stops the light.
+                out.fill(1.0);
             }
             LightShadows::Rays(spheres) => {
                 let rays = (self.edges.as_ref()).expect("rays are drawn with exact edges");
@@ -518,14 +518,10 @@ impl Shadowing for ShadowMaps {
                     spheres.screen(points, normals, own, &mut screened);
                     for (k, out) in out.iter_mut().enumerate() {
                         let (p, n, facing) = (points[k], normals[k], screened.facing[k]);
-                        let lit = if facing > 0.0 {
-                            screened.clear[k]
-                                || !(screened.blocked[k] || rays.blocked_at(light, p, n, own))
-                        } else {
-                            // Where the light grazes the surface from behind, the ray decides,
-                            // the receiver included, as the reference's does.
-                            facing > -GRAZING && !rays.blocked_at(light, p, n, None)
-                        };
+                        // Past the terminator the receiver itself blocks the light.
+                        let lit = facing > 0.0
+                            && (screened.clear[k]
+                                || !(screened.blocked[k] || rays.blocked_at(light, p, n, own)));
                         *out = if lit { 1.0 } else { 0.0 };
                     }
                 }

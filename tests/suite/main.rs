@@ -55,6 +55,7 @@ mod still_bands;
 mod term_encode;
 mod term_env;
 mod term_writer;
+mod terminators;
 mod test_dir;
 mod texture_limits;
 mod texture_loading;
