@@ -48,17 +48,23 @@ impl ColorChoice {
     /// The mode to use: the fixed one, or the one the environment (read through `var`) advertises.
     /// An explicit choice wins over NO_COLOR, as no-color.org asks.
     pub fn resolve(self, var: impl Fn(&str) -> Option<String>) -> ColorMode {
-        self.resolve_with_reason(var).mode
+        self.resolve_with_reason(var, || None).mode
     }
 
-    /// As `resolve`, with why: what the user or the environment said.
-    pub fn resolve_with_reason(self, var: impl Fn(&str) -> Option<String>) -> DetectedColors {
+    /// As `resolve`, with why: what the user or the environment said. Inside tmux (`TMUX` is
+    /// set), `tmux_features` is asked what tmux knows of the terminal outside it (see
+    /// `detect_colors_in_tmux`).
+    pub fn resolve_with_reason(
+        self,
+        var: impl Fn(&str) -> Option<String>,
+        tmux_features: impl FnOnce() -> Option<String>,
+    ) -> DetectedColors {
         match self {
             ColorChoice::Fixed(mode) => DetectedColors {
                 mode,
                 reason: "--colors".into(),
             },
-            ColorChoice::Auto => detect_colors(var),
+            ColorChoice::Auto => detect_colors_in_tmux(var, tmux_features),
         }
     }
 }
@@ -179,6 +185,37 @@ pub fn detect_colors(var: impl Fn(&str) -> Option<String>) -> DetectedColors {
         false => format!("{}, nothing more known", shown_term()),
     };
     found(ColorMode::Ansi16, reason)
+}
+
+/// As `detect_colors`, but inside tmux (`TMUX` set) the colours are those of the terminal outside
+/// it, as tmux knows them: `tmux_features` gives `#{client_termfeatures}` (`RGB,title,…`), and
+/// tmux passes 24-bit colour on only where the list has `RGB`; else it turns every colour into
+/// one of its 256 and, for a terminal with fewer, into the nearest of those itself.
+/// Where tmux says nothing (no client, tmux before 3.2), the environment decides as outside tmux
+/// (where `TERM` is tmux's own, usually `tmux-256color`). NO_COLOR and TERM=dumb win still.
+pub fn detect_colors_in_tmux(
+    var: impl Fn(&str) -> Option<String>,
+    tmux_features: impl FnOnce() -> Option<String>,
+) -> DetectedColors {
+    let plain = detect_colors(&var);
+    if plain.mode == ColorMode::Monochrome || !super::in_tmux(&var) {
+        return plain;
+    }
+    let Some(features) = tmux_features() else {
+        return plain;
+    };
+    let (mode, what) = if features.split(',').any(|f| f.trim() == "RGB") {
+        (ColorMode::TrueColor, "has RGB")
+    } else {
+        (
+            ColorMode::Ansi256,
+            "lacks RGB, so tmux shows at most its 256",
+        )
+    };
+    DetectedColors {
+        mode,
+        reason: format!("tmux says the terminal outside it {what}"),
+    }
 }
 
 /// [`detect_color_mode`] on this process's environment.

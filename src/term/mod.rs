@@ -63,13 +63,14 @@ mod sgr;
 mod signals;
 mod split;
 mod terminfo;
+mod tmux_query;
 
 pub use ansi_writer::{FrameOptions, FrameWriter, SYNC_BEGIN, SYNC_END, encode_frame};
 pub use cell::{Cell, CellGrid};
 pub use color::Color;
 pub use color_mode::{
     ColorChoice, ColorMode, DetectedColors, UnknownColorMode, detect_color_mode, detect_colors,
-    detect_from_process_env,
+    detect_colors_in_tmux, detect_from_process_env,
 };
 pub use dither::threshold_u8;
 pub use encode::{EncodeOptions, encode};
@@ -83,3 +84,4 @@ pub use quantize::{Palette, Quantizer, monochrome_lit, quantize};
 pub use sanitize::sanitize;
 pub use signals::{DEFAULT_GRACE, ShutdownSignal, ShutdownSignals, is_ctrl_c};
 pub use split::{Split, best_split, split_error};
+pub use tmux_query::{in_tmux, tmux_client_features, tmux_passes_through};

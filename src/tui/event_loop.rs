@@ -10,7 +10,9 @@ use super::screen::Screen;
 use super::status::colors_name;
 use crate::Error;
 use crate::term::graphics::{GraphicsChoice, GraphicsFound, Replies, decide, query_terminal};
-use crate::term::{ShutdownSignals, TerminalGuard};
+use crate::term::{
+    ShutdownSignals, TerminalGuard, in_tmux, tmux_client_features, tmux_passes_through,
+};
 use crossterm::event;
 use std::io;
 use std::path::Path;
@@ -33,9 +35,8 @@ pub fn run(options: &WorkbenchOptions) -> Result<(), Error> {
     {
         return Err(error);
     }
-    let colors = options
-        .colors
-        .resolve_with_reason(|name| std::env::var(name).ok());
+    let colors =
+        (options.colors).resolve_with_reason(|name| std::env::var(name).ok(), tmux_client_features);
     // Bad files and settings are told first, terminal or not.
     let mut app = App::new(options, colors.mode)?;
     if !io::stdin().is_terminal() || !io::stdout().is_terminal() {
@@ -237,41 +238,12 @@ fn cell_aspect(fixed: Option<(u32, u32)>) -> f32 {
 /// tmux, whether tmux passes them through.
 fn find_graphics(choice: GraphicsChoice) -> io::Result<GraphicsFound> {
     let var = |name: &str| std::env::var(name).ok();
-    let in_tmux = var("TMUX").is_some_and(|v| !v.is_empty());
-    let passthrough = in_tmux.then(tmux_passes_through);
+    let passthrough = in_tmux(var).then(tmux_passes_through);
     let replies = match choice {
         GraphicsChoice::Blocks => Replies::default(),
         _ => query_terminal(passthrough == Some(true))?,
     };
     Ok(decide(choice, &replies, var, passthrough))
-}
-
-/// Whether tmux's `allow-passthrough` is on, asked of tmux within a second.
-fn tmux_passes_through() -> bool {
-    let child = std::process::Command::new("tmux")
-        .args(["show-options", "-gqv", "allow-passthrough"])
-        .stdin(std::process::Stdio::null())
-        .stdout(std::process::Stdio::piped())
-        .stderr(std::process::Stdio::null())
-        .spawn();
-    let Ok(mut child) = child else {
-        return false;
-    };
-    let deadline = Instant::now() + Duration::from_secs(1);
-    while Instant::now() < deadline {
-        if let Ok(Some(_)) = child.try_wait() {
-            let mut text = String::new();
-            if let Some(out) = child.stdout.take() {
-                use std::io::Read;
-                let _ = out.take(64).read_to_string(&mut text);
-            }
-            return matches!(text.trim(), "on" | "all");
-        }
-        std::thread::sleep(Duration::from_millis(10));
-    }
-    let _ = child.kill();
-    let _ = child.wait();
-    false
 }
 
 /// A cell's size in pixels: `--cell-size`, else as the window's pixel size gives it

@@ -1,11 +1,13 @@
 //! The workbench in real terminals under Xvfb: kitty (its graphics protocol) and xterm as a
 //! VT340 (sixel), each screenshot with xwd every second until the picture has settled; the
 //! picture found on the screen is compared with a still of the same view. tmux without
-//! passthrough gets blocks and says why. Skipped, with the reason printed, where the programs
-//! are missing (`.ci/run` installs them).
+//! passthrough gets blocks and says why; inside tmux the colours are what tmux says. Skipped,
+//! with the reason printed, where the programs are missing (`.ci/run` installs them).
 
 use crate::graphics_support::psnr;
+use crate::pty_support::Session;
 use crate::tmux_support::{Tmux, missing};
+use portable_pty::CommandBuilder;
 use std::path::Path;
 use std::process::Command;
 
@@ -238,4 +240,46 @@ fn tmux_without_passthrough_gets_blocks_and_says_why() {
         "{screen}"
     );
     assert!(screen.contains('▀'), "the picture in half blocks");
+}
+
+/// The workbench in tmux, whose client runs in a test pseudo-terminal that answers no queries,
+/// so tmux knows of its terminal only what `TERM`'s terminfo and the tmux setting `conf_text`
+/// say; the workbench's colours follow what tmux says.
+fn colours_inside_tmux(name: &str, conf_text: &str) -> String {
+    let dir = tempfile::tempdir().unwrap();
+    let conf = dir.path().join("tmux.conf");
+    std::fs::write(&conf, format!("set -g remain-on-exit on\n{conf_text}")).unwrap();
+    let socket = format!("bumpwork-{name}-{}", std::process::id());
+    let _server = TmuxServer(socket.clone());
+    let bumpwork = format!("{} view {SCENE}", env!("CARGO_BIN_EXE_bumpwork"));
+    let mut command = CommandBuilder::new("tmux");
+    command.args(["-L", &socket, "-f", &conf.display().to_string()]);
+    command.args(["new-session", &bumpwork]);
+    command.env("TERM", "xterm-256color");
+    command.env_remove("TMUX");
+    command.env_remove("COLORTERM");
+    let session = Session::spawn(command, 250, 30);
+    session.wait_for("the colour mode", |s| s.contents().contains("colours ("));
+    session.contents()
+}
+
+#[test]
+fn inside_tmux_the_colours_are_what_tmux_knows_of_the_outer_terminal() {
+    if let Some(reason) = missing(&["tmux"]) {
+        eprintln!("skipped: {reason}");
+        return;
+    }
+    let rgb = colours_inside_tmux(
+        "rgb",
+        "set -g status off\nset -as terminal-features 'xterm*:RGB'\n",
+    );
+    assert!(
+        rgb.contains("truecolor colours (tmux says the terminal outside it has RGB"),
+        "{rgb}"
+    );
+    let plain = colours_inside_tmux("no-rgb", "set -g status off\n");
+    assert!(
+        plain.contains("256 colours (tmux says the terminal outside it lacks RGB, so tmux shows at most its 256"),
+        "{plain}"
+    );
 }

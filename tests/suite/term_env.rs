@@ -235,3 +235,48 @@ fn direct_colour_terminals_are_known_without_colorterm_and_the_reason_is_given()
             .contains('\u{1b}')
     );
 }
+
+#[test]
+fn inside_tmux_the_colours_are_those_tmux_knows_the_outer_terminal_has() {
+    let tmux = [
+        ("TERM", "tmux-256color"),
+        ("TMUX", "/tmp/tmux-0/default,1,0"),
+    ];
+    let detected = |vars: &[(&str, &str)], features: Option<&str>| {
+        let env: HashMap<String, String> = vars
+            .iter()
+            .map(|(k, v)| (k.to_string(), v.to_string()))
+            .collect();
+        let asked = std::cell::Cell::new(false);
+        let found = bumpwork::term::detect_colors_in_tmux(
+            |name| env.get(name).cloned(),
+            || {
+                asked.set(true);
+                features.map(str::to_string)
+            },
+        );
+        (found.mode, found.reason, asked.get())
+    };
+    let rgb = "256,RGB,bpaste,clipboard,ccolour,cstyle,extkeys,focus,margins,mouse,title";
+    let (mode, reason, _) = detected(&tmux, Some(rgb));
+    assert_eq!(mode, ColorMode::TrueColor);
+    assert_eq!(reason, "tmux says the terminal outside it has RGB");
+    let (mode, reason, _) = detected(&tmux, Some("256,bpaste,title"));
+    assert_eq!(mode, ColorMode::Ansi256);
+    assert!(reason.contains("lacks RGB"), "{reason}");
+    // tmux lists `256` only where terminfo lacks it; tmux makes 256 colours fit the terminal.
+    assert_eq!(detected(&tmux, Some("title")).0, ColorMode::Ansi256);
+    // A feature whose name merely contains RGB is not RGB.
+    assert_eq!(detected(&tmux, Some("256,xRGBx")).0, ColorMode::Ansi256);
+    // tmux says nothing (no client, tmux before 3.2): the environment decides, as before.
+    let (mode, reason, asked) = detected(&tmux, None);
+    assert_eq!(
+        (mode, reason.as_str(), asked),
+        (ColorMode::Ansi256, "TERM=tmux-256color", true)
+    );
+    // Outside tmux, tmux is not asked; NO_COLOR wins inside it.
+    let (_, _, asked) = detected(&[("TERM", "tmux-256color")], Some(rgb));
+    assert!(!asked, "tmux was asked outside tmux");
+    let no_colour = [tmux[0], tmux[1], ("NO_COLOR", "1")];
+    assert_eq!(detected(&no_colour, Some(rgb)).0, ColorMode::Monochrome);
+}
