@@ -1,4 +1,4 @@
-# The seed lecture's own dimples ("Bump Map Code – Dimples"), in slope form:
+# The seed lecture's own dimples ("Bump Map Code – Dimples"), in slope form. The seed's C:
 #   iu = (int)uu % 30 - 15;  iv = (int)vv % 30 - 15;
 #   r2 = 225.0 - iu*iu - iv*iv;
 #   if (r2 > 100) { Bu = iu == 0 ? 0 : iu / sqrt(r2);  Bv = iv == 0 ? 0 : iv / sqrt(r2); }

@@ -273,7 +273,25 @@ fn patterns_lists_every_shipped_pattern_and_prints_one() {
                 "{name}"
             );
         }
+        // The description is whole sentences, however many lines it takes; no line is wide.
+        let start = list.find(line).unwrap();
+        let first_param = match pattern.params().first() {
+            Some(param) => format!("    {}={}", param.name, param.default),
+            None => "    no parameters".to_string(),
+        };
+        let block: Vec<&str> = list[start..]
+            .lines()
+            .take_while(|l| !l.starts_with(&first_param))
+            .collect();
+        let description = block.join(" ");
+        assert!(description.ends_with('.'), "{name}: {description}");
+        assert!(block.iter().all(|l| l.chars().count() <= 100), "{block:?}");
     }
+    let dimples = list.find("dimples (height)").unwrap();
+    assert!(
+        list[dimples..].contains("without its integer steps."),
+        "the whole first sentence:\n{list}"
+    );
     let file = bumpwork(&["patterns", "dimples"]);
     assert!(file.status.success());
     let shipped = std::fs::read(Path::new(env!("CARGO_MANIFEST_DIR")).join("patterns/dimples.pat"));
