@@ -10,9 +10,9 @@ use crate::pty_support::{Session, status_contains};
 use std::path::Path;
 use std::time::{Duration, Instant};
 
-/// Well past the 0.5 s the workbench is allowed, so a loaded machine does not fail the test, yet
+/// Far past the 0.5 s the workbench is allowed, so a loaded machine does not fail the test, yet
 /// far below "stuck".
-const QUIT_LIMIT: Duration = Duration::from_secs(3);
+const QUIT_LIMIT: Duration = Duration::from_secs(10);
 
 enum Quit {
     Key(&'static str),

@@ -9,6 +9,9 @@ use std::time::{Duration, Instant};
 
 pub const DEADLINE: Duration = Duration::from_secs(90);
 
+/// How long a program asked to quit may take to end, on a loaded machine.
+pub const QUIT_DEADLINE: Duration = Duration::from_secs(30);
+
 /// Bytes of the program's output kept for `output` at most.
 const KEPT_OUTPUT: usize = 64 << 20;
 
@@ -19,7 +22,7 @@ pub struct Session {
     raw: Arc<Mutex<Vec<u8>>>,
     /// Set when the reader has read the last of it (the program's end of the terminal closed).
     read_all: Arc<std::sync::atomic::AtomicBool>,
-    writer: Box<dyn Write + Send>,
+    writer: Arc<Mutex<Box<dyn Write + Send>>>,
     pub child: Box<dyn Child + Send + Sync>,
     rows: u16,
     cols: u16,
@@ -40,13 +43,25 @@ impl Session {
             command.cwd(cwd);
         }
         command.env("TERM", "xterm-256color");
-        let session = Session::spawn(command, cols, rows);
+        let session = Session::start(command, (cols, rows), true);
         session.wait_for("the first frame", status_contains(first));
         session
     }
 
-    /// Runs `command` in a fresh pseudo-terminal of `cols` × `rows`.
+    /// Runs `command` in a fresh pseudo-terminal of `cols` × `rows` that answers no queries
+    /// (the test answers them, or tests that nothing does).
     pub fn spawn(command: CommandBuilder, cols: u16, rows: u16) -> Session {
+        Session::start(command, (cols, rows), false)
+    }
+
+    /// As `spawn`; with `answer_attributes`, the terminal answers the primary device attributes
+    /// query (DA1) as a VT220 without graphics, as every real terminal answers it, so the program
+    /// need not wait out its time-out for replies.
+    fn start(
+        command: CommandBuilder,
+        (cols, rows): (u16, u16),
+        answer_attributes: bool,
+    ) -> Session {
         let pty = native_pty_system()
             .openpty(PtySize {
                 rows,
@@ -65,9 +80,18 @@ impl Session {
         let keep = Arc::clone(&raw);
         let read_all = Arc::new(std::sync::atomic::AtomicBool::new(false));
         let done = Arc::clone(&read_all);
+        let writer = Arc::new(Mutex::new(pty.master.take_writer().unwrap()));
+        let answers = Arc::clone(&writer);
         std::thread::spawn(move || {
             let mut buffer = [0u8; 65536];
+            let mut asked = DeviceAttributesQuery::default();
             while let Ok(n @ 1..) = reader.read(&mut buffer) {
+                if answer_attributes && asked.found_in(&buffer[..n]) {
+                    let mut answers = answers.lock().unwrap();
+                    let _ = answers
+                        .write_all(b"\x1b[?62;22c")
+                        .and_then(|()| answers.flush());
+                }
                 feed.lock().unwrap().process(&buffer[..n]);
                 let mut kept = keep.lock().unwrap();
                 if kept.len() + n <= KEPT_OUTPUT {
@@ -76,7 +100,6 @@ impl Session {
             }
             done.store(true, std::sync::atomic::Ordering::Release);
         });
-        let writer = pty.master.take_writer().unwrap();
         Session {
             master: pty.master,
             raw,
@@ -90,8 +113,9 @@ impl Session {
     }
 
     pub fn send(&mut self, keys: &str) {
-        self.writer.write_all(keys.as_bytes()).unwrap();
-        self.writer.flush().unwrap();
+        let mut writer = self.writer.lock().unwrap();
+        writer.write_all(keys.as_bytes()).unwrap();
+        writer.flush().unwrap();
     }
 
     /// Polls the screen until `condition` holds; panics with the screen after the deadline.
@@ -174,5 +198,25 @@ pub fn status_contains(text: &'static str) -> impl Fn(&vt100::Screen) -> bool {
             .rows(0, cols.get())
             .nth(rows.get() as usize - 1)
             .is_some_and(|line| line.contains(text))
+    }
+}
+
+/// Finds `ESC [ c` in output read in pieces, so a query split between two reads is found too.
+#[derive(Default)]
+struct DeviceAttributesQuery {
+    /// The last bytes of the previous piece.
+    tail: Vec<u8>,
+}
+
+impl DeviceAttributesQuery {
+    const QUERY: &'static [u8] = b"\x1b[c";
+
+    fn found_in(&mut self, piece: &[u8]) -> bool {
+        let mut seen = std::mem::take(&mut self.tail);
+        seen.extend_from_slice(piece);
+        let found = seen.windows(Self::QUERY.len()).any(|w| w == Self::QUERY);
+        let keep = seen.len().min(Self::QUERY.len() - 1);
+        self.tail = seen[seen.len() - keep..].to_vec();
+        found
     }
 }

@@ -72,10 +72,17 @@ impl Shot {
 /// machine is slow); a screenshot is taken every second until then.
 const LONGEST_SECONDS: u32 = 60;
 
+/// Held while an X server runs: `xvfb-run -a` picks a free display number by looking, so two
+/// started at once can pick the same one and each screenshot then shows both terminals.
+static ONE_X_SERVER_AT_A_TIME: std::sync::Mutex<()> = std::sync::Mutex::new(());
+
 /// Runs `terminal` (a shell command that starts the workbench in a window at the top left)
 /// under Xvfb and takes a screenshot every second until one is the same as the one before and
 /// `good` accepts it, or `LONGEST_SECONDS` pass: the last screenshot taken.
 fn screenshot_until(terminal: &str, dir: &Path, good: impl Fn(&Shot) -> bool) -> Shot {
+    let _x_server = ONE_X_SERVER_AT_A_TIME
+        .lock()
+        .unwrap_or_else(|poisoned| poisoned.into_inner());
     let (stop, shots) = (dir.join("stop"), dir.join("shots"));
     std::fs::create_dir_all(&shots).unwrap();
     let script = format!(

@@ -24,18 +24,34 @@ fn the_still_follows_each_save_and_a_broken_save_keeps_the_last() {
         .stderr(Stdio::piped())
         .spawn()
         .unwrap();
+    let messages = std::sync::Arc::new(std::sync::Mutex::new(String::new()));
+    let mut stderr = child.stderr.take().unwrap();
+    let kept = std::sync::Arc::clone(&messages);
+    let reader = std::thread::spawn(move || {
+        let mut buffer = [0u8; 4096];
+        while let Ok(n @ 1..) = std::io::Read::read(&mut stderr, &mut buffer) {
+            kept.lock()
+                .unwrap()
+                .push_str(&String::from_utf8_lossy(&buffer[..n]));
+        }
+    });
     let read = || std::fs::read(&still).ok();
-    wait_until("the first still", Duration::from_secs(20), || {
+    wait_until("the first still", Duration::from_secs(60), || {
         read().is_some()
     });
     let first = read().unwrap();
     std::fs::write(&pattern, "height = 3 * sin(u / 3)\n").unwrap();
-    wait_until("the still made again", Duration::from_secs(20), || {
+    wait_until("the still made again", Duration::from_secs(60), || {
         read().is_some_and(|b| b != first)
     });
     let second = read().unwrap();
     std::fs::write(&pattern, "height = 3 *\n").unwrap();
-    std::thread::sleep(Duration::from_millis(600));
+    wait_until("the broken save reported", Duration::from_secs(60), || {
+        messages
+            .lock()
+            .unwrap()
+            .contains("is kept until the next change loads")
+    });
     assert_eq!(
         read().unwrap(),
         second,
@@ -43,7 +59,7 @@ fn the_still_follows_each_save_and_a_broken_save_keeps_the_last() {
     );
     // SAFETY: kill only sends a signal to the process we started.
     assert_eq!(unsafe { libc::kill(child.id() as i32, libc::SIGINT) }, 0);
-    let deadline = Instant::now() + Duration::from_secs(5);
+    let deadline = Instant::now() + Duration::from_secs(30);
     let status = loop {
         if let Some(status) = child.try_wait().unwrap() {
             break status;
@@ -51,8 +67,8 @@ fn the_still_follows_each_save_and_a_broken_save_keeps_the_last() {
         assert!(Instant::now() < deadline, "still watching after Ctrl-C");
         std::thread::sleep(Duration::from_millis(20));
     };
-    let mut messages = String::new();
-    std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut messages).unwrap();
+    reader.join().unwrap();
+    let messages = messages.lock().unwrap().clone();
     assert_eq!(status.code(), Some(0), "{messages}");
     assert!(
         messages.contains("rendered") && messages.contains("again"),

@@ -3,7 +3,7 @@
 //! detection answered in a pseudo-terminal, its replies never taken for keys.
 
 use crate::graphics_support::{Rgb, kitty_images, psnr, sixel_images};
-use crate::pty_support::{Session, status_contains};
+use crate::pty_support::{QUIT_DEADLINE, Session, status_contains};
 use bumpwork::term::ColorMode;
 use bumpwork::term::graphics::Protocol;
 use bumpwork::tui::{App, PixelRoute, Screen, WorkbenchOptions};
@@ -184,7 +184,7 @@ fn auto_takes_the_terminals_answer_and_its_replies_never_reach_the_keys() {
         "the sixel picture sent is {db:.1} dB from the exact one"
     );
     session.send("q");
-    assert_eq!(session.exit_within(Duration::from_secs(5)), Some(0));
+    assert_eq!(session.exit_within(QUIT_DEADLINE), Some(0));
     // A reply that comes a moment after DA1's (as the outer terminal's do through tmux) is
     // read with the replies: its `i` does not invert the bump.
     let plain = b"\x1b[?1;2c";
@@ -194,7 +194,7 @@ fn auto_takes_the_terminals_answer_and_its_replies_never_reach_the_keys() {
     session.wait_for("blocks", status_contains("blocks (the terminal answered"));
     session.wait_for("the bump as the file has it", status_contains("×1.00"));
     session.send("q");
-    assert_eq!(session.exit_within(Duration::from_secs(5)), Some(0));
+    assert_eq!(session.exit_within(QUIT_DEADLINE), Some(0));
 }
 
 #[test]
@@ -219,7 +219,7 @@ fn a_kitty_session_deletes_its_image_when_it_quits() {
         first.width, first.height
     );
     session.send("q");
-    assert_eq!(session.exit_within(Duration::from_secs(5)), Some(0));
+    assert_eq!(session.exit_within(QUIT_DEADLINE), Some(0));
     let output = session.output();
     let text = String::from_utf8_lossy(&output);
     let deleted = text.rfind("\x1b_Ga=d,d=I,i=31").expect("the image deleted");
@@ -298,5 +298,5 @@ fn a_new_cell_size_with_the_window_gives_a_picture_of_the_new_size() {
             .is_some_and(|i| (i.width, i.height) == PICTURE)
     });
     session.send("q");
-    assert_eq!(session.exit_within(Duration::from_secs(5)), Some(0));
+    assert_eq!(session.exit_within(QUIT_DEADLINE), Some(0));
 }

@@ -8,7 +8,7 @@
 #![cfg(unix)]
 
 use crate::cli_support::wait_until;
-use crate::pty_support::{Session, status_contains};
+use crate::pty_support::{QUIT_DEADLINE, Session, status_contains};
 use portable_pty::CommandBuilder;
 use std::time::Duration;
 
@@ -211,7 +211,7 @@ fn a_failed_reload_shows_the_whole_diagnostic_until_dismissed_or_fixed() {
         !overlay(screen) && status_contains("reloaded")(screen)
     });
     session.send("q");
-    assert_eq!(session.exit_within(Duration::from_secs(5)), Some(0));
+    assert_eq!(session.exit_within(QUIT_DEADLINE), Some(0));
 }
 
 /// Quitting while an export runs cancels it, leaves no file, and says so on the normal screen.
@@ -220,7 +220,7 @@ fn quitting_during_an_export_says_it_was_cancelled() {
     let dir = tempfile::tempdir().unwrap();
     let mut session = exporting_in(dir.path());
     session.send("q");
-    assert_eq!(session.exit_within(Duration::from_secs(5)), Some(0));
+    assert_eq!(session.exit_within(QUIT_DEADLINE), Some(0));
     session.wait_for("the note on the normal screen", |screen| {
         !screen.alternate_screen() && screen.contents().contains("was cancelled on quitting")
     });
@@ -277,5 +277,5 @@ fn the_parameter_panel_is_edited_with_keys_and_the_mouse() {
         !screen.contents().contains("parameters (m closes)")
     });
     session.send("q");
-    assert_eq!(session.exit_within(Duration::from_secs(5)), Some(0));
+    assert_eq!(session.exit_within(QUIT_DEADLINE), Some(0));
 }

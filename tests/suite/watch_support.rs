@@ -8,7 +8,7 @@ use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 
-pub const TIMEOUT: Duration = Duration::from_secs(10);
+pub const TIMEOUT: Duration = Duration::from_secs(60);
 
 /// A directory removed (with its files) on drop.
 pub struct TempDir(PathBuf);
@@ -177,4 +177,42 @@ pub fn wait_for_counts(threads: usize, fds: usize) {
         );
         std::thread::sleep(Duration::from_millis(10));
     }
+}
+
+/// Runs `body` in a process of its own (this test binary again, running only the test `name`),
+/// so that thread and descriptor counts are the test's own and not those of tests running
+/// beside it. Panics with the child's output if it fails or outlives `TIMEOUT` twice over.
+pub fn alone_in_a_process(name: &str, body: impl FnOnce()) {
+    const ALONE: &str = "BUMPWORK_TEST_ALONE";
+    if std::env::var(ALONE).is_ok_and(|n| n == name) {
+        body();
+        return;
+    }
+    let mut child = std::process::Command::new(std::env::current_exe().unwrap())
+        .args([name, "--exact", "--test-threads", "1", "--nocapture"])
+        .env(ALONE, name)
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let deadline = Instant::now() + 2 * TIMEOUT;
+    while child.try_wait().unwrap().is_none() {
+        if Instant::now() > deadline {
+            let _ = child.kill();
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    let output = child.wait_with_output().unwrap();
+    assert!(
+        output.status.success(),
+        "{name} alone: {}\n{}",
+        String::from_utf8_lossy(&output.stdout),
+        String::from_utf8_lossy(&output.stderr)
+    );
+    // The child ran the body: a filter matching no test would also succeed.
+    assert!(
+        String::from_utf8_lossy(&output.stdout).contains("1 passed"),
+        "{name} did not run alone: {}",
+        String::from_utf8_lossy(&output.stdout)
+    );
 }

@@ -7,12 +7,14 @@ use super::{GraphicsChoice, Protocol, kitty, tmux_passthrough};
 use std::io::{self, Write};
 use std::time::{Duration, Instant};
 
-/// The longest wait for the replies: every terminal answers DA1, which comes last.
-pub const REPLY_TIME_OUT: Duration = Duration::from_millis(400);
+/// The longest wait for the replies. Every terminal answers DA1, which comes last, and the wait
+/// ends there; this bounds it for one that does not, and is long enough that a terminal slowed by
+/// a loaded machine is not taken for one without graphics for the rest of the session.
+pub const REPLY_TIME_OUT: Duration = Duration::from_secs(2);
 
 /// The longest wait over SSH, where the replies cross the link and back: a reply after the wait
 /// would reach the key handler.
-pub const REPLY_TIME_OUT_OVER_SSH: Duration = Duration::from_millis(1500);
+pub const REPLY_TIME_OUT_OVER_SSH: Duration = Duration::from_secs(3);
 
 /// Bytes of replies read at most.
 const MAX_REPLY_BYTES: usize = 4096;
