@@ -31,18 +31,39 @@ pub struct Layout {
     pub picture_rows: u16,
     /// The status line's row, if there is room for one.
     pub status_row: Option<u16>,
+    /// The terminal reported no size (0 columns or rows), as some do before their window is
+    /// mapped: the layout is a guess, with no picture in it.
+    pub size_unknown: bool,
 }
+
+/// The screen assumed where the terminal reports none; only the status line is drawn on it.
+const ASSUMED_SIZE: (u16, u16) = (80, 24);
+
+/// The status line while the terminal reports no size.
+pub const NO_SIZE_NOTE: &str =
+    "the terminal reports its size as 0×0 cells: no picture until it tells one (resize it)";
 
 impl Layout {
     /// The picture takes all but the last row, which is the status line; a one-row screen shows
-    /// only the status line, an empty one nothing.
+    /// only the status line. A terminal that reports 0 columns or rows gets a status line where
+    /// the usual 24th row would be, and no picture.
     pub fn new(cols: u16, rows: u16) -> Layout {
-        let status_row = (cols > 0 && rows > 0).then(|| rows - 1);
+        if cols == 0 || rows == 0 {
+            let (cols, rows) = ASSUMED_SIZE;
+            return Layout {
+                cols,
+                rows,
+                picture_rows: 0,
+                status_row: Some(rows - 1),
+                size_unknown: true,
+            };
+        }
         Layout {
             cols,
             rows,
-            picture_rows: rows.saturating_sub(1),
-            status_row,
+            picture_rows: rows - 1,
+            status_row: Some(rows - 1),
+            size_unknown: false,
         }
     }
 }
@@ -151,6 +172,9 @@ impl Screen {
         if !(app.dirty.picture || app.dirty.text) {
             return Ok(switched);
         }
+        if self.layout.size_unknown {
+            return self.draw_without_picture(app, out);
+        }
         if app.dirty.picture {
             let start = Instant::now();
             match self.pixels.is_some() {
@@ -173,6 +197,24 @@ impl Screen {
         Ok(bytes)
     }
 
+    /// The status line alone, for a terminal that reports no size; a kitty image shown before
+    /// is deleted (sixel and iTerm2 pictures are text the new frame overwrites).
+    fn draw_without_picture(&mut self, app: &mut App, out: &mut impl Write) -> io::Result<usize> {
+        let mut removed = 0;
+        // Whether it was on screen is forgotten by the resize that brought this layout.
+        if let Some(pixels) = self.pixels.as_mut() {
+            let removal = pixels.removal();
+            out.write_all(&removal)?;
+            pixels.on_screen = false;
+            removed = removal.len();
+        }
+        self.picture = CellGrid::new(0, 0);
+        let grid = self.compose(app);
+        let result = self.writer.draw(out, &grid);
+        app.mark_drawn();
+        Ok(removed + result?)
+    }
+
     /// Whether the picture on screen would still gain from another pass: nothing has changed
     /// since it was started, and its mode is one the passes average (the wireframe and the error
     /// view are drawn over a single pass).
@@ -181,7 +223,7 @@ impl Screen {
             Some(pixels) => pixels.refining(),
             None => self.accumulation.wants_more(),
         };
-        !app.dirty.picture && wants_more && refines(app.view_mode)
+        !app.dirty.picture && wants_more && refines(app.view_mode) && !self.layout.size_unknown
     }
 
     /// Renders one more pass into the picture and draws the cells it changed; returns the bytes
@@ -326,7 +368,10 @@ impl Screen {
         (&self.picture).render(area, &mut buffer);
         let style = text_style(app.colors);
         if let Some(row) = self.layout.status_row {
-            let line = status_line(app, cols as usize);
+            let line = match self.layout.size_unknown {
+                true => NO_SIZE_NOTE.to_string(),
+                false => status_line(app, cols as usize),
+            };
             buffer.set_stringn(
                 0,
                 row,
@@ -427,7 +472,14 @@ mod tests {
         assert_eq!(Layout::new(80, 24).picture_rows, 23);
         assert_eq!(Layout::new(1, 1).status_row, Some(0));
         assert_eq!(Layout::new(1, 1).picture_rows, 0);
-        assert_eq!(Layout::new(5, 0).status_row, None);
-        assert_eq!(Layout::new(0, 5).status_row, None);
+        for (cols, rows) in [(5, 0), (0, 5), (0, 0)] {
+            let layout = Layout::new(cols, rows);
+            assert!(layout.size_unknown, "{cols}×{rows}");
+            assert_eq!(
+                layout.picture_rows, 0,
+                "no picture for a terminal of no size"
+            );
+            assert_eq!(layout.status_row, Some(23));
+        }
     }
 }

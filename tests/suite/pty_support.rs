@@ -72,8 +72,13 @@ impl Session {
             .unwrap();
         let child = pty.slave.spawn_command(command).unwrap();
         drop(pty.slave);
-        let size = |n| NonZeroU16::new(n).unwrap();
-        let screen = Arc::new(Mutex::new(vt100::Parser::new(size(rows), size(cols), 0)));
+        // A terminal that reports 0×0 is shown here at a size the emulator can take.
+        let size = |n, or| NonZeroU16::new(n).unwrap_or(NonZeroU16::new(or).unwrap());
+        let screen = Arc::new(Mutex::new(vt100::Parser::new(
+            size(rows, 24),
+            size(cols, 80),
+            0,
+        )));
         let mut reader = pty.master.try_clone_reader().unwrap();
         let feed = Arc::clone(&screen);
         let raw = Arc::new(Mutex::new(Vec::new()));
@@ -107,8 +112,8 @@ impl Session {
             screen,
             writer,
             child,
-            rows,
-            cols,
+            rows: if rows == 0 { 24 } else { rows },
+            cols: if cols == 0 { 80 } else { cols },
         }
     }
 

@@ -300,3 +300,39 @@ fn a_new_cell_size_with_the_window_gives_a_picture_of_the_new_size() {
     session.send("q");
     assert_eq!(session.exit_within(QUIT_DEADLINE), Some(0));
 }
+
+#[test]
+fn a_terminal_of_no_size_gets_no_picture_until_it_tells_one_and_the_status_line_says_so() {
+    let mut command = portable_pty::CommandBuilder::new(env!("CARGO_BIN_EXE_bumpwork"));
+    command.args(["view", "plane-dimples", "--graphics", "kitty"]);
+    command.env("TERM", "xterm-256color");
+    command.env_remove("TMUX");
+    let mut session = Session::spawn(command, 0, 0);
+    session.wait_for("the status line", status_contains("0×0"));
+    let before = session.output();
+    assert!(
+        kitty_images(&before).is_empty(),
+        "an image for a terminal of no size"
+    );
+    assert!(
+        !String::from_utf8_lossy(&before).contains("s=0"),
+        "a zero-size kitty image"
+    );
+    session.resize(COLS, ROWS, 0, 0);
+    session.wait_for("the picture once the size is known", |_| {
+        !kitty_images(&session.output()).is_empty()
+    });
+    // A size lost again deletes the image, and a size told again brings it back.
+    let shown = session.output().len();
+    session.resize(0, 0, 0, 0);
+    session.wait_for("the image deleted", |_| {
+        String::from_utf8_lossy(&session.output()[shown..]).contains("\x1b_Ga=d")
+    });
+    let deleted = session.output().len();
+    session.resize(COLS, ROWS, 0, 0);
+    session.wait_for("the picture again", |_| {
+        !kitty_images(&session.output()[deleted..]).is_empty()
+    });
+    session.send("q");
+    assert_eq!(session.exit_within(QUIT_DEADLINE), Some(0));
+}
