@@ -83,6 +83,17 @@ fn snippet(before: &str, after: &str) -> (String, usize) {
     (left + &escape_line(&right), caret)
 }
 
+/// Text the user gave (a command-line value, an environment variable), safe to show and cut to
+/// `CONTEXT` characters, marked with `…`: a message that quotes a 100 000-character argument
+/// whole is no help.
+pub fn shown_input(text: &str) -> String {
+    let mut shown: String = text.chars().take(CONTEXT).collect();
+    if text.chars().nth(CONTEXT).is_some() {
+        shown.push('…');
+    }
+    sanitize(&shown).into_owned()
+}
+
 /// `message` with every quoted part (between backticks or double quotes) longer than `CONTEXT`
 /// characters cut to that and marked with `…`: a message quotes what it found, and what it found
 /// may be a 900 000-digit number.

@@ -8,7 +8,7 @@ use std::path::Path;
 #[derive(Debug, thiserror::Error)]
 pub enum Error {
     #[error("unknown scene '{}'{}; `bumpwork render --list` prints the built-in names",
-        sanitize(name), suggestion.as_ref().map(|s| format!(" (did you mean '{s}'?)")).unwrap_or_default())]
+        crate::diagnostic::shown_input(name), suggestion.as_ref().map(|s| format!(" (did you mean '{s}'?)")).unwrap_or_default())]
     UnknownScene {
         name: String,
         suggestion: Option<String>,

@@ -49,7 +49,8 @@ fn main() -> ExitCode {
             let _ = e.print();
             return ExitCode::SUCCESS;
         }
-        Err(e) => {
+        Err(mut e) => {
+            shorten_quoted_arguments(&mut e);
             // Plain text (no styling), escaped: an argument may hold terminal controls.
             let rendered = sanitize_lines(&e.render().to_string());
             let (line, hints) = commands::argument_error::one_line(&rendered);
@@ -71,6 +72,22 @@ fn main() -> ExitCode {
             // Messages escape what they quote; this is the backstop for any that does not.
             eprintln!("bumpwork: error: {}", sanitize_lines(&e.to_string()));
             ExitCode::FAILURE
+        }
+    }
+}
+
+/// Cuts the arguments clap's message quotes (a value it refused, an unknown argument) to the
+/// length file diagnostics quote, so a 100 000-character argument is not echoed whole.
+fn shorten_quoted_arguments(e: &mut clap::Error) {
+    use clap::error::{ContextKind, ContextValue};
+    for kind in [
+        ContextKind::InvalidValue,
+        ContextKind::InvalidArg,
+        ContextKind::InvalidSubcommand,
+    ] {
+        if let Some(ContextValue::String(text)) = e.get(kind) {
+            let short = bumpwork::diagnostic::shown_input(text);
+            e.insert(kind, ContextValue::String(short));
         }
     }
 }

@@ -40,7 +40,7 @@ pub fn check_budget_var() -> Result<Option<u64>, String> {
         .ok_or_else(|| {
             format!(
                 "{MEMORY_BUDGET_VAR} must be a whole number of MiB from 1 to {MAX_MEMORY_MIB}, not '{}'",
-                crate::term::sanitize(&value.to_string_lossy())
+                crate::diagnostic::shown_input(&value.to_string_lossy())
             )
         })
 }

@@ -49,7 +49,7 @@ enum Slot {
 impl Override {
     /// `KEY=VALUE`, or a message saying what keys there are (a command-line value parser).
     pub fn parse(text: &str) -> Result<Override, String> {
-        let shown = crate::diagnostic::sanitize(text);
+        let shown = crate::diagnostic::shown_input(text);
         let (key, value) = text
             .split_once('=')
             .ok_or_else(|| format!("expected KEY=VALUE, found '{shown}'"))?;
@@ -87,7 +87,7 @@ impl Override {
 
     /// The setting as given, safe to show.
     pub fn shown(&self) -> String {
-        crate::diagnostic::sanitize(&self.text).into_owned()
+        crate::diagnostic::shown_input(&self.text)
     }
 
     /// Whether it sets a binding of the scene (not the quality).
@@ -203,12 +203,19 @@ fn apply_binding(o: &Override, scene: &mut Scene) -> Result<Applied, String> {
             scene.objects.len()
         ));
     }
-    let value: f32 = o
+    // f64 first, so a number too large for the f32 a parameter holds is told as out of range.
+    let value: f64 = o
         .value
         .parse()
         .ok()
-        .filter(|v: &f32| v.is_finite())
-        .ok_or_else(|| format!("--set {}: expected a number", o.shown()))?;
+        .filter(|v: &f64| v.is_finite())
+        .ok_or_else(|| {
+            format!(
+                "--set {}: expected a number, found '{}'",
+                o.shown(),
+                crate::diagnostic::shown_input(&o.value)
+            )
+        })?;
     let mut taken = false;
     let mut known = Vec::new();
     for (index, material) in scene
@@ -223,7 +230,8 @@ fn apply_binding(o: &Override, scene: &mut Scene) -> Result<Applied, String> {
         let name = match name {
             Name::Strength => {
                 if let Some(bump) = &mut material.bump {
-                    bump.strength = value;
+                    bump.strength =
+                        strength(value).map_err(|e| format!("--set {}: {e}", o.shown()))?;
                     taken = true;
                 }
                 continue;
@@ -257,17 +265,40 @@ fn apply_binding(o: &Override, scene: &mut Scene) -> Result<Applied, String> {
 
 /// Sets parameter `name` of `binding` to `value` within its range; `Ok(false)` if it has none
 /// of that name.
-fn set_param(binding: &mut PatternBinding, name: &str, value: f32) -> Result<bool, String> {
+fn set_param(binding: &mut PatternBinding, name: &str, value: f64) -> Result<bool, String> {
     let Some(index) = binding.pattern.params().iter().position(|p| p.name == name) else {
         return Ok(false);
     };
     let param = &binding.pattern.params()[index];
-    if !(param.min..=param.max).contains(&value) {
+    if !(f64::from(param.min)..=f64::from(param.max)).contains(&value) {
         return Err(format!(
-            "{value} is outside {}'s range {}..{}",
-            param.name, param.min, param.max
+            "{} is outside {}'s range {}..{}",
+            shown_number(value),
+            param.name,
+            param.min,
+            param.max
         ));
     }
-    binding.params[index] = value;
+    binding.params[index] = value as f32;
     Ok(true)
+}
+
+/// A bump's strength (an f32 with no range of its own) from `value`.
+fn strength(value: f64) -> Result<f32, String> {
+    let max = f64::from(f32::MAX);
+    match value.abs() <= max {
+        true => Ok(value as f32),
+        false => Err(format!(
+            "{} is beyond ±{max:.1e}, the most a strength can be",
+            shown_number(value)
+        )),
+    }
+}
+
+/// `value` as a person writes it: plainly, or in exponent form where that would run long.
+fn shown_number(value: f64) -> String {
+    match value == 0.0 || (1e-4..1e7).contains(&value.abs()) {
+        true => value.to_string(),
+        false => format!("{value:e}"),
+    }
 }

@@ -15,10 +15,21 @@ pub fn one_line(rendered: &str) -> (String, String) {
     }
     let hints = hints
         .lines()
-        .map(str::trim_start)
+        .map(|hint| cut(hint.trim_start()))
         .collect::<Vec<_>>()
         .join("\n");
     (line, hints)
+}
+
+/// The most of a hint line shown: clap's tips repeat the argument they are about.
+const HINT_CHARS: usize = 160;
+
+fn cut(hint: &str) -> String {
+    let mut shown: String = hint.chars().take(HINT_CHARS).collect();
+    if hint.chars().nth(HINT_CHARS).is_some() {
+        shown.push('…');
+    }
+    shown
 }
 
 #[cfg(test)]
@@ -39,6 +50,15 @@ mod tests {
             hints,
             "Usage: bumpwork render --output <OUTPUT> <SCENE>\n\nFor more information, try '--help'."
         );
+    }
+
+    #[test]
+    fn a_long_hint_is_cut() {
+        let long = "a".repeat(10_000);
+        let rendered = format!("error: unexpected argument '--a'\n\n  tip: to pass '--{long}'\n");
+        let (_, hints) = one_line(&rendered);
+        assert!(hints.chars().count() <= HINT_CHARS + 1, "{}", hints.len());
+        assert!(hints.ends_with('…'));
     }
 
     #[test]

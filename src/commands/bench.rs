@@ -41,7 +41,10 @@ fn parse_metric(text: &str) -> Result<ChartMetric, String> {
     match text {
         "psnr" => Ok(ChartMetric::Psnr),
         "normal" => Ok(ChartMetric::NormalDegrees),
-        _ => Err(format!("expected psnr or normal; got '{text}'")),
+        _ => Err(format!(
+            "expected psnr or normal; got '{}'",
+            bumpwork::diagnostic::shown_input(text)
+        )),
     }
 }
 

@@ -49,7 +49,10 @@ pub fn sanitized(text: &str) -> String {
 
 pub fn parse_size(text: &str) -> Result<(u32, u32), String> {
     let expected = || {
-        format!("expected WIDTHxHEIGHT with each side 1..={MAX_SIDE}, like 1920x1080; got '{text}'")
+        format!(
+            "expected WIDTHxHEIGHT with each side 1..={MAX_SIDE}, like 1920x1080; got '{}'",
+            bumpwork::diagnostic::shown_input(text)
+        )
     };
     let (w, h) = text.split_once(['x', 'X']).ok_or_else(expected)?;
     let side = |s: &str| {

@@ -27,7 +27,7 @@ fn print_file(name: &str) -> Result<(), Error> {
         let names: Vec<&str> = BUILTINS.iter().map(|(n, _)| *n).collect();
         Error::InvalidArgument(format!(
             "no shipped pattern is called '{}'; they are {}",
-            super::sanitized(name),
+            bumpwork::diagnostic::shown_input(name),
             names.join(", ")
         ))
     })?;

@@ -98,6 +98,10 @@ pub struct RenderArgs {
     /// Print the built-in scene names and exit.
     #[arg(long)]
     list: bool,
+    /// Refuse to replace existing files: where any of the stills or frames to be written exists,
+    /// say which before anything is rendered (without it, frames that replace files are counted).
+    #[arg(long, conflicts_with = "watch")]
+    no_clobber: bool,
 }
 
 /// Frames a sequence may have.
@@ -140,8 +144,11 @@ fn render_start(
     apply_to_scene(&args.set, &mut scene).map_err(Error::InvalidArgument)?;
     scene.camera = camera_from_options(args, &scene.camera)?;
     let camera = scene.camera.clone();
+    let frames = frames(args, settings.time, output)?;
+    let existing = existing_files(&frames, args.no_clobber)?;
     let prepared = settings.prepare(scene, &camera)?;
-    for (time, path) in frames(args, settings.time, output)? {
+    for (time, path) in &frames {
+        let (time, path) = (*time, path.as_path());
         let settings = StillSettings { time, ..settings };
         let recipe = Recipe::capture(&start.source, &prepared.scene, &camera, &settings);
         let request = StillRequest {
@@ -151,9 +158,41 @@ fn render_start(
             scene_text: &start.scene_text,
             recipe: &recipe,
         };
-        render_one(&request, &path, format, interrupt)?;
+        render_one(&request, path, format, interrupt)?;
+    }
+    if frames.len() > 1 && existing > 0 {
+        eprintln!(
+            "bumpwork: {existing} of the {} frames replaced files of the same names \
+             (--no-clobber refuses to)",
+            frames.len()
+        );
     }
     Ok(())
+}
+
+/// How many of the files `frames` are to be written to exist already; with `no_clobber`, an
+/// error naming the first where any does.
+fn existing_files(frames: &[(f64, PathBuf)], no_clobber: bool) -> Result<usize, Error> {
+    let existing: Vec<&Path> = frames
+        .iter()
+        .map(|(_, path)| path.as_path())
+        .filter(|path| path.symlink_metadata().is_ok())
+        .collect();
+    match (no_clobber, existing.first()) {
+        (true, Some(first)) => Err(Error::InvalidArgument(format!(
+            "--no-clobber: {} exists{}; nothing was rendered",
+            super::sanitized(&first.display().to_string()),
+            match existing.len() {
+                1 => String::new(),
+                n => format!(
+                    " (and {} more of the {} files to write)",
+                    n - 1,
+                    frames.len()
+                ),
+            }
+        ))),
+        _ => Ok(existing.len()),
+    }
 }
 
 /// The scene's camera with `--eye`, `--target` and `--fov` applied, checked as a scene file's.
@@ -179,13 +218,13 @@ fn parse_point(text: &str) -> Result<[f64; 3], String> {
         .map_err(|_| {
             format!(
                 "expected three numbers X,Y,Z, found '{}'",
-                super::sanitized(text)
+                bumpwork::diagnostic::shown_input(text)
             )
         })?;
     numbers.try_into().map_err(|_| {
         format!(
             "expected three numbers X,Y,Z, found '{}'",
-            super::sanitized(text)
+            bumpwork::diagnostic::shown_input(text)
         )
     })
 }
@@ -533,11 +572,20 @@ fn mode_names() -> Vec<&'static str> {
 }
 
 fn parse_time(text: &str) -> Result<f64, String> {
-    text.trim()
+    let shown = || bumpwork::diagnostic::shown_input(text);
+    let time = text
+        .trim()
         .parse::<f64>()
         .ok()
-        .filter(|t| t.is_finite() && t.abs() <= MAX_TIME_SECONDS)
-        .ok_or_else(|| format!("expected a time in seconds (|t| ≤ 1e9), got '{text}'"))
+        .filter(|t| t.is_finite())
+        .ok_or_else(|| format!("expected a time in seconds, got '{}'", shown()))?;
+    match time.abs() <= MAX_TIME_SECONDS {
+        true => Ok(time),
+        false => Err(format!(
+            "the time '{}' is past the longest, ±{MAX_TIME_SECONDS:e} seconds",
+            shown()
+        )),
+    }
 }
 
 fn parse_fps(text: &str) -> Result<f64, String> {
@@ -545,26 +593,33 @@ fn parse_fps(text: &str) -> Result<f64, String> {
         .parse::<f64>()
         .ok()
         .filter(|f| f.is_finite() && *f > 0.0 && *f <= 1000.0)
-        .ok_or_else(|| format!("expected frames per second in (0, 1000], got '{text}'"))
+        .ok_or_else(|| {
+            format!(
+                "expected frames per second in (0, 1000], got '{}'",
+                bumpwork::diagnostic::shown_input(text)
+            )
+        })
 }
 
 fn parse_time_range(text: &str) -> Result<(f64, f64), String> {
-    let expected = || format!("expected START..END in seconds with START < END, got '{text}'");
-    let (a, b) = text.split_once("..").ok_or_else(expected)?;
-    let (start, end) = (
-        parse_time(a).map_err(|_| expected())?,
-        parse_time(b).map_err(|_| expected())?,
-    );
-    if start < end {
-        Ok((start, end))
-    } else {
-        Err(expected())
+    let shown = || bumpwork::diagnostic::shown_input(text);
+    let (a, b) = text
+        .split_once("..")
+        .ok_or_else(|| format!("expected START..END in seconds, got '{}'", shown()))?;
+    let start = parse_time(a).map_err(|e| format!("START of '{}': {e}", shown()))?;
+    let end = parse_time(b).map_err(|e| format!("END of '{}': {e}", shown()))?;
+    match start < end {
+        true => Ok((start, end)),
+        false => Err(format!("expected START < END, got '{}'", shown())),
     }
 }
 
 fn parse_contrast(text: &str) -> Result<f32, String> {
     match text.parse::<f32>() {
         Ok(c) if (0.0..=1.0).contains(&c) => Ok(c),
-        _ => Err(format!("'{text}' is not a contrast from 0 to 1")),
+        _ => Err(format!(
+            "'{}' is not a contrast from 0 to 1",
+            bumpwork::diagnostic::shown_input(text)
+        )),
     }
 }

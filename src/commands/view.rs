@@ -91,6 +91,9 @@ fn parse_glyphs(text: &str) -> Result<GlyphSet, String> {
         "half" => Ok(GlyphSet::HalfBlock),
         "quadrant" => Ok(GlyphSet::Quadrant),
         "sextant" => Ok(GlyphSet::Sextant),
-        _ => Err(format!("expected half, quadrant or sextant; got '{text}'")),
+        _ => Err(format!(
+            "expected half, quadrant or sextant; got '{}'",
+            bumpwork::diagnostic::shown_input(text)
+        )),
     }
 }

@@ -33,7 +33,7 @@ impl Quality {
         if !knob_names().iter().any(|k| k == knob) {
             return Err(format!(
                 "no quality knob '{}'; the knobs are {}",
-                crate::diagnostic::sanitize(knob),
+                crate::diagnostic::shown_input(knob),
                 knob_names().join(", ")
             ));
         }

@@ -229,7 +229,7 @@ impl Quality {
         preset(name).ok_or_else(|| {
             format!(
                 "unknown quality preset '{}'; the presets are {}",
-                crate::diagnostic::sanitize(name),
+                crate::diagnostic::shown_input(name),
                 QUALITY_NAMES.join(", ")
             )
         })

@@ -142,3 +142,79 @@ fn a_directory_that_takes_no_files_is_not_called_missing() {
     );
     assert!(!message.contains("does not exist"), "{message}");
 }
+
+#[test]
+fn a_finite_number_out_of_range_is_told_as_such_with_the_range() {
+    let set =
+        |setting: &str| bumpwork(&["render", "plane-spheres", "-o", "x.png", "--set", setting]);
+    for huge in ["1e308", "-1e308", "1e100"] {
+        let message = assert_one_message(
+            &set(&format!("bump.period={huge}")),
+            "is outside period's range 4..300",
+        );
+        assert!(!message.contains("expected a number"), "{message}");
+        assert_one_message(
+            &set(&format!("bump.strength={huge}")),
+            "is beyond ±3.4e38, the most a strength can be",
+        );
+    }
+    assert_one_message(
+        &set("bump.period=500"),
+        "500 is outside period's range 4..300",
+    );
+    assert_one_message(&set("bump.period=wide"), "expected a number, found 'wide'");
+}
+
+#[test]
+fn a_time_range_past_the_longest_time_says_so() {
+    let range = |range: &str| {
+        bumpwork(&[
+            "render",
+            "plane-spheres",
+            "-o",
+            "x.png",
+            "--fps",
+            "24",
+            "--time-range",
+            range,
+        ])
+    };
+    let message = assert_one_message(&range("0..1e30"), "the time '1e30' is past the longest");
+    assert!(!message.contains("START < END"), "{message}");
+    assert_one_message(&range("0..1e9"), "frames; expected 1..=100000");
+    assert_one_message(&range("5..1"), "expected START < END, got '5..1'");
+    assert_one_message(&range("0..soon"), "expected a time in seconds, got 'soon'");
+}
+
+#[test]
+fn long_arguments_are_quoted_cut_to_sixty_characters() {
+    let long = "k".repeat(100_000);
+    let cases = [
+        vec!["render", "plane-spheres", "-o", "x.png", "--set"],
+        vec!["render", "plane-spheres", "-o", "x.png", "--size"],
+        vec!["render", "plane-spheres", "-o", "x.png", "--quality"],
+        vec!["render", "plane-spheres", "-o", "x.png", "--time"],
+    ];
+    for args in cases {
+        let value = format!("{long}=1");
+        let mut args = args.clone();
+        args.push(&value);
+        let output = bumpwork(&args);
+        let message = stderr(&output);
+        assert_eq!(output.status.code(), Some(1), "{}", &message[..200]);
+        assert!(
+            message.len() < 2_000,
+            "{} bytes for {args:?}",
+            message.len()
+        );
+        assert!(
+            message.contains(&format!("{}…", "k".repeat(60))),
+            "{message}"
+        );
+    }
+    let unknown = format!("--{long}");
+    let message = stderr(&bumpwork(&["render", "plane-spheres", &unknown]));
+    assert!(message.len() < 2_000, "{} bytes", message.len());
+    let message = stderr(&bumpwork(&[&long]));
+    assert!(message.len() < 2_000, "{} bytes", message.len());
+}

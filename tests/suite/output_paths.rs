@@ -239,3 +239,53 @@ fn a_full_or_closed_standard_output_ends_cleanly() {
     );
     assert!(stderr(&output).is_empty(), "{}", stderr(&output));
 }
+
+#[test]
+fn frames_that_replace_files_are_counted_and_no_clobber_refuses_before_rendering() {
+    let dir = temp_dir("no-clobber");
+    let output = dir.join("anim.png");
+    let output = output.to_str().unwrap();
+    let frames = |range: &str, extra: &[&str]| {
+        let mut args = vec!["render", "plane-spheres", "--size", "16x12", "-o", output];
+        args.extend(["--fps", "4", "--time-range", range]);
+        args.extend(extra);
+        bumpwork(&args)
+    };
+    let first = frames("0..1", &[]);
+    assert!(first.status.success(), "{}", stderr(&first));
+    assert!(!stderr(&first).contains("replaced"), "{}", stderr(&first));
+    let kept = std::fs::read(dir.join("anim-0002.png")).unwrap();
+    let again = frames("0..2", &[]);
+    assert!(again.status.success(), "{}", stderr(&again));
+    assert!(
+        stderr(&again).contains("4 of the 8 frames replaced files of the same names"),
+        "{}",
+        stderr(&again)
+    );
+    // Refused before anything renders: no frame is written, none replaced.
+    std::fs::remove_file(dir.join("anim-0007.png")).unwrap();
+    std::fs::write(dir.join("anim-0002.png"), &kept).unwrap();
+    let refused = frames("0..2", &["--no-clobber"]);
+    assert_user_error(&refused, "--no-clobber: ");
+    assert_user_error(
+        &refused,
+        "anim-0000.png exists (and 6 more of the 8 files to write)",
+    );
+    assert!(!dir.join("anim-0007.png").exists(), "a frame was rendered");
+    assert_eq!(std::fs::read(dir.join("anim-0002.png")).unwrap(), kept);
+    let still = dir.join("still.png");
+    let still = still.to_str().unwrap();
+    let render = || {
+        bumpwork(&[
+            "render",
+            "plane-spheres",
+            "--size",
+            "8x8",
+            "-o",
+            still,
+            "--no-clobber",
+        ])
+    };
+    assert!(render().status.success());
+    assert_user_error(&render(), "still.png exists; nothing was rendered");
+}
