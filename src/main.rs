@@ -24,6 +24,9 @@ struct Cli {
 enum Command {
     /// Render a built-in scene or a scene file to a PNG still.
     Render(Box<commands::render::RenderArgs>),
+    /// Bake a pattern or a scene object's bump and colour into PNG texture maps (height, normal,
+    /// colour) for other programs.
+    Bake(commands::bake::BakeArgs),
     /// Render every built-in scene to a still and a contact sheet of them all.
     Gallery(commands::gallery::GalleryArgs),
     /// Check pattern files, scene files and images without rendering.
@@ -106,6 +109,7 @@ fn run(cli: Cli) -> Result<(), Error> {
     bumpwork::memory_budget::check_budget_var().map_err(Error::InvalidArgument)?;
     match cli.command {
         Some(Command::Render(args)) => commands::render::run(*args),
+        Some(Command::Bake(args)) => commands::bake::run(args),
         Some(Command::Check(args)) => commands::check::run(args),
         Some(Command::Patterns(args)) => commands::patterns::run(args),
         Some(Command::Gallery(args)) => commands::gallery::run(args),

@@ -85,6 +85,11 @@ impl Override {
         })
     }
 
+    /// The setting as given.
+    pub fn text(&self) -> &str {
+        &self.text
+    }
+
     /// The setting as given, safe to show.
     pub fn shown(&self) -> String {
         crate::diagnostic::shown_input(&self.text)
@@ -241,7 +246,7 @@ fn apply_binding(o: &Override, scene: &mut Scene) -> Result<Applied, String> {
         let binding = match slot {
             Slot::Bump => material.bump.as_mut().and_then(|b| match &mut b.source {
                 BumpSource::Pattern(p) => Some(p),
-                BumpSource::Image(_) => None,
+                BumpSource::Image(_) | BumpSource::NormalMap(_) => None,
             }),
             Slot::Texture => material.texture.as_mut().and_then(|t| match t {
                 Texturing::Pattern(p) => Some(p),

@@ -10,6 +10,8 @@ macro_rules! say {
 }
 
 pub mod argument_error;
+pub mod bake;
+mod bake_recipe;
 pub mod bench;
 pub mod check;
 pub mod completions;

@@ -2,6 +2,7 @@
 //! half-written (see `output_file`).
 
 mod contact_sheet;
+mod map_png;
 pub mod metadata;
 mod output_file;
 mod png_file;
@@ -11,6 +12,8 @@ mod still_file;
 mod writeback;
 
 pub use contact_sheet::{ContactSheet, SheetLayout, SheetPicture};
+pub use map_png::{BAKE_RECIPE, HEIGHT_RANGE, MapPng, NORMAL_CONVENTION, write_map_png};
+pub use metadata::read_png_text;
 pub use output_file::{OutputFile, STANDARD_OUTPUT, check_destination};
 pub use png_file::{PngStill, read_png_rgb8, write_png, write_png_with_text};
 pub use pov_scene::{BAKE_SIDE, pov, rgb, write_pov, write_pov_header};

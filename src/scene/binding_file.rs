@@ -4,13 +4,14 @@
 use super::exact_arrays::{exact_nested_optional, exact_optional};
 use super::file::{Finite, Positive};
 use super::material::{
-    Bump, BumpSource, ImageHeight, ImageTexture, PatternBinding, Placement, Texturing,
+    Bump, BumpSource, ImageHeight, ImageTexture, NormalMapBump, PatternBinding, Placement,
+    Texturing,
 };
 use crate::pattern::{OutputKind, Pattern};
 use crate::surface::Surface;
 use crate::texture::{
-    Cylindrical, Filter, ImageCache, Mapping, Sampler, Scroll, Spherical, SurfaceUv, TriangleMap,
-    Wrap,
+    Cylindrical, Filter, ImageCache, Mapping, NormalConvention, Sampler, Scroll, Spherical,
+    SurfaceUv, TriangleMap, Wrap,
 };
 use glam::{Vec2, Vec3};
 use serde::{Deserialize, Serialize};
@@ -29,6 +30,12 @@ pub struct BindingFile {
     /// A built-in image name or an image file (bump: grey, lighter is higher).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub image: Option<String>,
+    /// Bumps only: a tangent-space normal map (an RGB image file, as `bumpwork bake` writes).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub normal_map: Option<String>,
+    /// Normal maps only: which way green points (default `opengl`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub convention: Option<NormalConvention>,
     /// Bumps only: the factor on the height (default 1).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub strength: Option<Finite>,
@@ -121,8 +128,11 @@ impl BindingFile {
         if self.filter.is_some() {
             return Err("`filter` applies to image textures, not bumps".into());
         }
-        let source = match (&self.pattern, &self.image) {
-            (Some(name), None) => {
+        if self.convention.is_some() && self.normal_map.is_none() {
+            return Err("`convention` applies to `normal-map` bumps".into());
+        }
+        let source = match (&self.pattern, &self.image, &self.normal_map) {
+            (Some(name), None, None) => {
                 let binding = self.bind_pattern(name, base)?;
                 if binding.pattern.output() == OutputKind::Color {
                     return Err(format!(
@@ -131,7 +141,7 @@ impl BindingFile {
                 }
                 BumpSource::Pattern(binding)
             }
-            (None, Some(name)) => {
+            (None, Some(name), None) => {
                 let map = images.height_map(name, base).map_err(|e| e.to_string())?;
                 let mapping = self.image_mapping(surface)?;
                 let (wrap_s, wrap_t) = self.wrap_for(&mapping);
@@ -144,7 +154,24 @@ impl BindingFile {
                     chosen_live: false,
                 })
             }
-            _ => return Err("a bump needs exactly one of `pattern` and `image`".into()),
+            (None, None, Some(name)) => {
+                let map = images.normal_map(name, base).map_err(|e| e.to_string())?;
+                let mapping = self.image_mapping(surface)?;
+                let (wrap_s, wrap_t) = self.wrap_for(&mapping);
+                BumpSource::NormalMap(NormalMapBump {
+                    name: name.clone(),
+                    map,
+                    mapping,
+                    wrap_s,
+                    wrap_t,
+                    convention: self.convention.unwrap_or_default(),
+                })
+            }
+            _ => {
+                return Err(
+                    "a bump needs exactly one of `pattern`, `image` and `normal-map`".into(),
+                );
+            }
         };
         Ok(Bump {
             source,
@@ -161,6 +188,9 @@ impl BindingFile {
     ) -> Result<Texturing, String> {
         if self.strength.is_some() || self.invert.is_some() {
             return Err("`strength` and `invert` apply to bumps, not textures".into());
+        }
+        if self.normal_map.is_some() || self.convention.is_some() {
+            return Err("`normal-map` and `convention` apply to bumps, not textures".into());
         }
         match (&self.pattern, &self.image) {
             (Some(name), None) => {

@@ -51,9 +51,14 @@ pub(crate) fn binding_files(binding: &BindingFile, base: &Path) -> Vec<PathBuf> 
         .image
         .as_deref()
         .filter(|name| !is_builtin_image(name));
+    let normal_map = binding
+        .normal_map
+        .as_deref()
+        .filter(|name| !is_builtin_image(name));
     pattern
         .into_iter()
         .chain(image)
+        .chain(normal_map)
         .map(|name| base.join(name))
         .collect()
 }

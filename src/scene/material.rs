@@ -1,8 +1,11 @@
 //! What a surface looks like: a Blinn-Phong material, optionally with a texture (a colour pattern
-//! or an image) and a bump map (a height or slope pattern, or a grey image).
+//! or an image) and a bump map (a height or slope pattern, a grey image, or a normal map).
 
 use crate::pattern::Pattern;
-use crate::texture::{HeightMap, Mapping, Sampler, Texture, Wrap};
+use crate::texture::{
+    HeightMap, Mapping, NormalConvention, NormalMap, Sampler, SurfacePoint, Texture,
+    TextureMapping, Wrap,
+};
 use glam::{Mat2, Vec2, Vec3};
 use std::sync::Arc;
 
@@ -53,6 +56,7 @@ impl Bump {
 pub enum BumpSource {
     Pattern(PatternBinding),
     Image(ImageHeight),
+    NormalMap(NormalMapBump),
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -96,6 +100,46 @@ impl PartialEq for ImageHeight {
             && self.mapping == other.mapping
             && (self.wrap_s, self.wrap_t) == (other.wrap_s, other.wrap_t)
             && self.chosen_live == other.chosen_live
+    }
+}
+
+/// A tangent-space normal map as a bump: its red tilts the normal along +u, its green along +v
+/// (OpenGL) or −v (DirectX), as `bumpwork bake` writes them. It has no height, so the full normal
+/// form treats it as Blinn's.
+#[derive(Clone, Debug)]
+pub struct NormalMapBump {
+    pub name: String,
+    pub map: Arc<NormalMap>,
+    pub mapping: Mapping,
+    pub wrap_s: Wrap,
+    pub wrap_t: Wrap,
+    pub convention: NormalConvention,
+}
+
+impl PartialEq for NormalMapBump {
+    fn eq(&self, other: &Self) -> bool {
+        self.name == other.name
+            && self.mapping == other.mapping
+            && (self.wrap_s, self.wrap_t) == (other.wrap_s, other.wrap_t)
+            && self.convention == other.convention
+    }
+}
+
+/// The steepest tilt a normal map gives: its normals' out-of-surface part is at least this, so
+/// a texel lying in the surface plane cannot give an infinite slope.
+const LEAST_OUTWARD: f32 = 1e-3;
+
+impl NormalMapBump {
+    /// The gradient (Bu, Bv) of a height whose Blinn normal is the map's at `point`: the normal
+    /// (x, y, z) in the frame (unit Pu, unit Pv, n) is that of a slope (−x/z·|Pu|, −y/z·|Pv|).
+    pub fn gradient(&self, point: &SurfacePoint) -> Vec2 {
+        let st = self.mapping.map(point).st;
+        let n = self
+            .map
+            .sample(st, (self.wrap_s, self.wrap_t), self.convention);
+        let outward = n.z.max(LEAST_OUTWARD);
+        let slope = Vec2::new(-n.x * point.pu.length(), -n.y * point.pv.length()) / outward;
+        if slope.is_finite() { slope } else { Vec2::ZERO }
     }
 }
 

@@ -19,7 +19,8 @@ pub use file::{
     parse_scene_in,
 };
 pub use material::{
-    Bump, BumpSource, ImageHeight, ImageTexture, Material, PatternBinding, Placement, Texturing,
+    Bump, BumpSource, ImageHeight, ImageTexture, Material, NormalMapBump, PatternBinding,
+    Placement, Texturing,
 };
 pub use presets::{PRESET_NAMES, preset, preset_file};
 pub use quality_table::{KnobPlace, KnobSetting, QualityTable, written_table};
@@ -66,6 +67,11 @@ impl Scene {
                 && seen.insert(std::sync::Arc::as_ptr(&image.map).cast::<()>())
             {
                 bytes += image.map.bytes();
+            }
+            if let Some(BumpSource::NormalMap(normals)) = material.bump.as_ref().map(|b| &b.source)
+                && seen.insert(std::sync::Arc::as_ptr(&normals.map).cast::<()>())
+            {
+                bytes += normals.map.bytes();
             }
         }
         bytes

@@ -1,6 +1,7 @@
-//! A material sampled over its surface's (u,v) domain on a square grid: colours and bump heights
-//! as images, for renderers that take image maps (the POV-Ray scene export). Row 0 is the top
-//! of the image, v = max; column 0 is u = min; samples sit at cell centres.
+//! A material sampled over a (u,v) rectangle of its surface on a grid: colours, bump heights and
+//! tangent-space normals as images, for renderers that take image maps (`bumpwork bake`, the
+//! POV-Ray scene export). Row 0 is the top of the image, v = max; column 0 is u = min; samples
+//! sit at cell centres.
 
 use super::pattern_batch::{PatternBatch, Sites};
 use crate::pattern::OutputKind;
@@ -10,18 +11,49 @@ use crate::surface::{Frame, Surface};
 use crate::texture::{Footprint, SurfacePoint, TextureMapping};
 use glam::{Vec2, Vec3};
 
+/// The (u,v) rectangle a bake covers and its grid of samples (at cell centres).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BakeGrid {
+    /// (u,v) at the left of the first column and the bottom of the last row.
+    pub min: Vec2,
+    /// (u,v) at the right of the last column and the top of the first row.
+    pub max: Vec2,
+    pub width: u32,
+    pub height: u32,
+}
+
+impl BakeGrid {
+    /// The whole domain of `surface`, `side` samples square.
+    pub fn whole(surface: &Surface, side: u32) -> BakeGrid {
+        let domain = surface.domain();
+        BakeGrid {
+            min: domain.min,
+            max: domain.max,
+            width: side,
+            height: side,
+        }
+    }
+
+    /// (u,v) of sample (`column`, `row`).
+    pub fn uv(&self, column: u32, row: u32) -> Vec2 {
+        let extent = self.max - self.min;
+        Vec2::new(
+            self.min.x + (column as f32 + 0.5) / self.width as f32 * extent.x,
+            self.max.y - (row as f32 + 0.5) / self.height as f32 * extent.y,
+        )
+    }
+
+    fn samples(&self) -> usize {
+        self.width as usize * self.height as usize
+    }
+}
+
 /// The (u,v) at each cell of one grid row, and the surface frames there.
-fn grid_row(surface: &Surface, side: u32, row: u32) -> (Vec<Fragment>, Vec<Frame>) {
-    let domain = surface.domain();
-    let extent = domain.max - domain.min;
-    let v = domain.max.y - (row as f32 + 0.5) / side as f32 * extent.y;
-    let fragments: Vec<Fragment> = (0..side)
+fn grid_row(surface: &Surface, grid: &BakeGrid, row: u32) -> (Vec<Fragment>, Vec<Frame>) {
+    let fragments: Vec<Fragment> = (0..grid.width)
         .map(|column| Fragment {
             object: 0,
-            uv: Vec2::new(
-                domain.min.x + (column as f32 + 0.5) / side as f32 * extent.x,
-                v,
-            ),
+            uv: grid.uv(column, row),
             duv_dx: Vec2::ZERO,
             duv_dy: Vec2::ZERO,
             depth: 1.0,
@@ -46,14 +78,24 @@ fn surface_point(frame: &Frame, uv: Vec2, time: f64) -> SurfacePoint {
     }
 }
 
-/// The material's colour (linear RGB) over the grid: its texture where it has one.
+/// The material's colour (linear RGB) over the whole domain, `side` samples square.
 pub fn bake_color(surface: &Surface, material: &Material, time: f64, side: u32) -> Vec<Vec3> {
+    bake_color_on(surface, material, time, &BakeGrid::whole(surface, side))
+}
+
+/// The material's colour (linear RGB) over `grid`: its texture where it has one.
+pub fn bake_color_on(
+    surface: &Surface,
+    material: &Material,
+    time: f64,
+    grid: &BakeGrid,
+) -> Vec<Vec3> {
     let mut batch = PatternBatch::default();
-    let mut out = Vec::with_capacity((side * side) as usize);
-    let group: Vec<u32> = (0..side).collect();
-    let mut colors = vec![Vec3::ZERO; side as usize];
-    for row in 0..side {
-        let (fragments, frames) = grid_row(surface, side, row);
+    let mut out = Vec::with_capacity(grid.samples());
+    let group: Vec<u32> = (0..grid.width).collect();
+    let mut colors = vec![Vec3::ZERO; grid.width as usize];
+    for row in 0..grid.height {
+        let (fragments, frames) = grid_row(surface, grid, row);
         match &material.texture {
             None => colors.fill(material.color),
             Some(Texturing::Pattern(binding)) => {
@@ -82,43 +124,93 @@ pub fn bake_color(surface: &Surface, material: &Material, time: f64, side: u32) 
     out
 }
 
-/// The bump height B (times strength, sign applied) over the grid; `None` for slope patterns,
-/// which define no height.
+/// The bump height B (times strength, sign applied) over the whole domain; `None` for slope
+/// patterns, which define no height.
 pub fn bake_height(surface: &Surface, bump: &Bump, time: f64, side: u32) -> Option<Vec<f32>> {
+    bake_bump_on(surface, bump, time, &BakeGrid::whole(surface, side)).heights
+}
+
+/// A bump baked over a grid, strength and sign applied.
+pub struct BakedBump {
+    /// B at each sample; `None` for slope patterns and normal maps, which define no height.
+    pub heights: Option<Vec<f32>>,
+    /// The tangent-space unit normal at each sample: x along +u, y along +v, z out of the
+    /// surface. From the bump's exact gradient, as the renderer's Blinn normal has it.
+    pub normals: Vec<Vec3>,
+}
+
+/// The bump over `grid`: its heights and its tangent-space normals.
+pub fn bake_bump_on(surface: &Surface, bump: &Bump, time: f64, grid: &BakeGrid) -> BakedBump {
     let mut batch = PatternBatch::default();
-    let mut out = Vec::with_capacity((side * side) as usize);
-    let group: Vec<u32> = (0..side).collect();
-    let mut heights = vec![0.0; side as usize];
-    let mut gradients = vec![Vec2::ZERO; side as usize];
-    for row in 0..side {
-        let (fragments, frames) = grid_row(surface, side, row);
+    let has_height = match &bump.source {
+        BumpSource::Pattern(binding) => binding.pattern.output() == OutputKind::Height,
+        BumpSource::Image(_) => true,
+        BumpSource::NormalMap(_) => false,
+    };
+    let mut heights_out = Vec::with_capacity(if has_height { grid.samples() } else { 0 });
+    let mut normals = Vec::with_capacity(grid.samples());
+    let group: Vec<u32> = (0..grid.width).collect();
+    let mut heights = vec![0.0; grid.width as usize];
+    let mut gradients = vec![Vec2::ZERO; grid.width as usize];
+    let scale = bump.scale();
+    for row in 0..grid.height {
+        let (fragments, frames) = grid_row(surface, grid, row);
+        let at = Sites {
+            fragments: &fragments,
+            group: &group,
+            frames: &frames,
+        };
         match &bump.source {
-            BumpSource::Pattern(binding) if binding.pattern.output() == OutputKind::Height => {
-                let at = Sites {
-                    fragments: &fragments,
-                    group: &group,
-                    frames: &frames,
-                };
+            BumpSource::Pattern(binding) => {
                 batch.bump(binding, at, time, &mut heights, &mut gradients);
             }
-            BumpSource::Pattern(_) => return None,
             BumpSource::Image(image) => {
-                for ((h, fragment), frame) in heights.iter_mut().zip(&fragments).zip(&frames) {
-                    let st = image
-                        .mapping
-                        .map(&surface_point(frame, fragment.uv, time))
-                        .st;
-                    let sample =
-                        image
-                            .map
-                            .sample_gradient(st, image.wrap_s, image.wrap_t, Footprint::POINT);
+                let each = heights.iter_mut().zip(gradients.iter_mut());
+                for ((h, g), (fragment, frame)) in each.zip(fragments.iter().zip(&frames)) {
+                    let mapped = image.mapping.map(&surface_point(frame, fragment.uv, time));
+                    let sample = (image.map).sample_gradient(
+                        mapped.st,
+                        image.wrap_s,
+                        image.wrap_t,
+                        Footprint::POINT,
+                    );
                     *h = sample.height;
+                    *g = sample.surface_gradient(mapped.jacobian);
+                }
+            }
+            BumpSource::NormalMap(map) => {
+                let each = fragments.iter().zip(&frames);
+                for ((g, h), (fragment, frame)) in gradients.iter_mut().zip(&mut heights).zip(each)
+                {
+                    let point = surface_point(frame, fragment.uv, time);
+                    *g = map.gradient(&point);
+                    *h = 0.0;
                 }
             }
         }
-        out.extend(heights.iter().map(|h| h * bump.scale()));
+        if has_height {
+            heights_out.extend(heights.iter().map(|h| h * scale));
+        }
+        let each = gradients.iter().zip(&frames);
+        normals.extend(each.map(|(g, frame)| tangent_normal(*g * scale, frame)));
     }
-    Some(out)
+    BakedBump {
+        heights: has_height.then_some(heights_out),
+        normals,
+    }
+}
+
+/// The unit normal of P + B·n in the tangent frame (unit Pu, unit Pv, n) for the gradient
+/// (Bu, Bv) of B: (−Bu/|Pu|, −Bv/|Pv|, 1) normalised, which is Blinn's normal where Pu ⟂ Pv
+/// (flat surfaces, and every surface here but the cone's apex, which has no frame).
+pub fn tangent_normal(gradient: Vec2, frame: &Frame) -> Vec3 {
+    let (a, b) = (frame.pu.length(), frame.pv.length());
+    if !(a > 0.0 && b > 0.0) {
+        return Vec3::Z;
+    }
+    let tilted = Vec3::new(-gradient.x / a, -gradient.y / b, 1.0);
+    let n = tilted.normalize_or(Vec3::Z);
+    if n.is_finite() { n } else { Vec3::Z }
 }
 
 #[cfg(test)]

@@ -14,7 +14,9 @@ mod shader_mode;
 mod shadowing;
 mod vertex_normals;
 
-pub use bake::{bake_color, bake_height};
+pub use bake::{
+    BakeGrid, BakedBump, bake_bump_on, bake_color, bake_color_on, bake_height, tangent_normal,
+};
 pub use bump::{NormalForm, bumped_normal};
 pub use exact_coverage::{Neighbours, Reach, ReachShape, nearest_true_hit};
 pub use exact_point::{ExactPoints, ExactScratch, SurfacePointSource, exact_fragments};

@@ -703,6 +703,15 @@ impl LitShader {
                 }
                 0
             }
+            BumpSource::NormalMap(map) => {
+                let points = self.surface_points(fragments, group, output.frames);
+                let each = output.heights.iter_mut().zip(output.gradients.iter_mut());
+                for ((height, gradient), point) in each.zip(points) {
+                    *height = 0.0;
+                    *gradient = map.gradient(&point);
+                }
+                0
+            }
         }
     }
 

@@ -280,6 +280,7 @@ impl Recipe {
             binding.as_ref().map(|b| BindingFile {
                 pattern: move_name(&b.pattern),
                 image: move_name(&b.image),
+                normal_map: move_name(&b.normal_map),
                 ..b.clone()
             })
         };
@@ -391,7 +392,7 @@ pub(super) fn object_state(material: &Material, base: &Path) -> ObjectState {
         let mut state = match &bump.source {
             BumpSource::Pattern(binding) => pattern_state(binding, base),
             BumpSource::Image(image) if image.chosen_live => live_image_state(&image.name, base),
-            BumpSource::Image(_) => BindingFile::default(),
+            BumpSource::Image(_) | BumpSource::NormalMap(_) => BindingFile::default(),
         };
         state.strength = Some(Finite(bump.strength));
         state.invert = Some(bump.invert);
@@ -492,6 +493,7 @@ fn file_names(material: &Material) -> Vec<String> {
     let bump = material.bump.as_ref().map(|b| match &b.source {
         BumpSource::Pattern(p) => p.name.clone(),
         BumpSource::Image(i) => i.name.clone(),
+        BumpSource::NormalMap(n) => n.name.clone(),
     });
     let texture = material.texture.as_ref().map(|t| match t {
         Texturing::Pattern(p) => p.name.clone(),

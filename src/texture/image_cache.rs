@@ -6,7 +6,7 @@ use super::encoding::Encoding;
 use super::error::TextureError;
 use super::load::{Limits, LoadedImage, decode_image, read_file};
 use super::shipped_images::builtin_bytes;
-use super::{HeightMap, Texture};
+use super::{HeightMap, NormalMap, Texture};
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
@@ -17,6 +17,7 @@ pub struct ImageCache {
     files: HashMap<PathBuf, Arc<[u8]>>,
     textures: HashMap<Arc<[u8]>, Arc<Texture>>,
     height_maps: HashMap<Arc<[u8]>, Arc<HeightMap>>,
+    normal_maps: HashMap<Arc<[u8]>, Arc<NormalMap>>,
     /// Bytes of the budget not yet taken by decoded images.
     left: u64,
 }
@@ -28,6 +29,7 @@ impl ImageCache {
             files: HashMap::new(),
             textures: HashMap::new(),
             height_maps: HashMap::new(),
+            normal_maps: HashMap::new(),
             left: budget,
         }
     }
@@ -66,6 +68,27 @@ impl ImageCache {
         decoded.shared(&mut self.height_maps, from_image, HeightMap::bytes)
     }
 
+    /// A tangent-space normal map (RGB as stored, not sRGB-decoded): a file path relative to
+    /// `base` (or a built-in image's name).
+    pub fn normal_map(
+        &mut self,
+        name_or_path: &str,
+        base: &Path,
+    ) -> Result<Arc<NormalMap>, TextureError> {
+        let (bytes, path) = self.bytes(name_or_path, base)?;
+        let decoded = Decoding {
+            bytes,
+            path: &path,
+            encoding: Encoding::Linear,
+            left: &mut self.left,
+        };
+        decoded.shared(
+            &mut self.normal_maps,
+            NormalMap::from_image,
+            NormalMap::bytes,
+        )
+    }
+
     /// The bytes `name_or_path` names, and the path messages call it by. Files whose bytes
     /// equal ones already read share their key, so equal contents decode once.
     fn bytes(
@@ -96,7 +119,9 @@ impl ImageCache {
     /// The key already holding these bytes, if any, else `bytes` itself.
     fn shared(&self, bytes: Arc<[u8]>) -> Arc<[u8]> {
         let known = self.files.values();
-        let decoded = self.textures.keys().chain(self.height_maps.keys());
+        let decoded = (self.textures.keys())
+            .chain(self.height_maps.keys())
+            .chain(self.normal_maps.keys());
         known
             .chain(decoded)
             .find(|key| **key == bytes)

@@ -23,6 +23,7 @@ mod image_cache;
 mod load;
 mod mapping;
 mod mip;
+mod normal_map;
 mod plain_pnm;
 mod sample_batch;
 mod sampler;
@@ -41,6 +42,7 @@ pub use mapping::{
     TextureMapping, TriangleMap,
 };
 pub use mip::{Averageable, MipChain};
+pub use normal_map::{NormalConvention, NormalMap};
 pub use sampler::{Filter, Footprint, Sampler};
 pub use shipped_images::BUILTIN_IMAGES;
 pub use texel_grid::TexelGrid;

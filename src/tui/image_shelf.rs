@@ -60,7 +60,9 @@ impl ImageShelf {
                 chosen_live: true,
                 ..image
             }),
-            BumpSource::Pattern(_) => unreachable!("an image binding loads an image"),
+            BumpSource::Pattern(_) | BumpSource::NormalMap(_) => {
+                unreachable!("an image binding loads an image")
+            }
         }
     }
 }

@@ -66,14 +66,14 @@ fn binding(name: String, pattern: Pattern, placement: Placement) -> PatternBindi
 pub fn bump_pattern(material: &Material) -> Option<&PatternBinding> {
     match &material.bump.as_ref()?.source {
         BumpSource::Pattern(binding) => Some(binding),
-        BumpSource::Image(_) => None,
+        BumpSource::Image(_) | BumpSource::NormalMap(_) => None,
     }
 }
 
 fn bump_pattern_mut(material: &mut Material) -> Option<&mut PatternBinding> {
     match &mut material.bump.as_mut()?.source {
         BumpSource::Pattern(binding) => Some(binding),
-        BumpSource::Image(_) => None,
+        BumpSource::Image(_) | BumpSource::NormalMap(_) => None,
     }
 }
 
@@ -94,6 +94,7 @@ pub fn cycle_bump(
     let current = material.bump.as_ref().map(|b| match &b.source {
         BumpSource::Pattern(binding) => binding.name.clone(),
         BumpSource::Image(image) => image.name.clone(),
+        BumpSource::NormalMap(map) => map.name.clone(),
     });
     let choice = cycle(&list, current.as_deref(), step);
     let placement = bump_pattern(material).map_or_else(Placement::default, |b| b.placement);
@@ -307,6 +308,7 @@ mod tests {
                     assert_eq!(bump.strength, IMAGE_BUMP_STRENGTH);
                 }
                 BumpSource::Pattern(_) => assert_eq!(bump.strength, 1.0),
+                BumpSource::NormalMap(_) => panic!("the shelf cycles patterns and images"),
             }
         }
         assert_eq!(&names[patterns..], shelf.names());

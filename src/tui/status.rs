@@ -135,6 +135,7 @@ fn bump_text(material: &Material) -> String {
     let sign = if bump.invert { "-" } else { "" };
     let name = match &bump.source {
         BumpSource::Image(image) => &image.name,
+        BumpSource::NormalMap(map) => &map.name,
         BumpSource::Pattern(binding) => &binding.name,
     };
     format!("{} ×{sign}{:.2}", sanitize(name), bump.strength)

@@ -82,7 +82,7 @@ fn pattern_bindings(material: &Material) -> [Option<&PatternBinding>; 2] {
     };
     let bump = material.bump.as_ref().and_then(|b| match &b.source {
         BumpSource::Pattern(binding) => Some(binding),
-        BumpSource::Image(_) => None,
+        BumpSource::Image(_) | BumpSource::NormalMap(_) => None,
     });
     [texture, bump]
 }
@@ -94,7 +94,7 @@ fn pattern_bindings_mut(material: &mut Material) -> [Option<&mut PatternBinding>
     };
     let bump = material.bump.as_mut().and_then(|b| match &mut b.source {
         BumpSource::Pattern(binding) => Some(binding),
-        BumpSource::Image(_) => None,
+        BumpSource::Image(_) | BumpSource::NormalMap(_) => None,
     });
     [texture, bump]
 }

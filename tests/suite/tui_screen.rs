@@ -216,7 +216,7 @@ fn material_keys_edit_the_bump_and_redraw() {
     draw(&mut screen, &mut app);
     let params = |app: &App| match &app.material().unwrap().bump.as_ref().unwrap().source {
         BumpSource::Pattern(binding) => (binding.name.clone(), binding.params.clone()),
-        BumpSource::Image(_) => panic!("the preset's bump is a pattern"),
+        _ => panic!("the preset's bump is a pattern"),
     };
     let (name, before) = params(&app);
     app.apply(Action::AdjustParam(10.0));
