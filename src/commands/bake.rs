@@ -256,19 +256,8 @@ impl Maps<'_> {
 
     /// Heights as 16-bit grey over their range, which is printed and kept in the file.
     fn height(&self, heights: &[f32]) -> Result<(), Error> {
-        let (lo, hi) = heights
-            .iter()
-            .filter(|h| h.is_finite())
-            .fold((f32::MAX, f32::MIN), |(a, b), &h| (a.min(h), b.max(h)));
-        let (lo, hi) = if lo <= hi { (lo, hi) } else { (0.0, 0.0) };
+        let (levels, (lo, hi)) = bumpwork::export::height_levels(heights);
         let range = hi - lo;
-        let levels: Vec<u16> = heights
-            .iter()
-            .map(|&h| match range > 0.0 && h.is_finite() {
-                true => (((h - lo) / range).clamp(0.0, 1.0) * 65535.0).round() as u16,
-                false => 0,
-            })
-            .collect();
         let range_text = format!("{lo}..{hi}");
         self.write(
             "height",

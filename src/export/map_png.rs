@@ -20,6 +20,25 @@ pub enum MapPng<'a> {
     SrgbRgb8(&'a [u8]),
 }
 
+/// Heights as 16-bit levels over their finite range (black its lowest, white its highest), and
+/// that range; a flat or non-finite map is all black over 0..0.
+pub fn height_levels(heights: &[f32]) -> (Vec<u16>, (f32, f32)) {
+    let (lo, hi) = heights
+        .iter()
+        .filter(|h| h.is_finite())
+        .fold((f32::MAX, f32::MIN), |(a, b), &h| (a.min(h), b.max(h)));
+    let (lo, hi) = if lo <= hi { (lo, hi) } else { (0.0, 0.0) };
+    let range = hi - lo;
+    let levels = heights
+        .iter()
+        .map(|&h| match range > 0.0 && h.is_finite() {
+            true => (((h - lo) / range).clamp(0.0, 1.0) * 65535.0).round() as u16,
+            false => 0,
+        })
+        .collect();
+    (levels, (lo, hi))
+}
+
 /// Writes `map` of `size` to `path` with `texts` (keyword, text) as iTXt chunks.
 pub fn write_map_png(
     path: &Path,

@@ -12,7 +12,9 @@ mod still_file;
 mod writeback;
 
 pub use contact_sheet::{ContactSheet, SheetLayout, SheetPicture};
-pub use map_png::{BAKE_RECIPE, HEIGHT_RANGE, MapPng, NORMAL_CONVENTION, write_map_png};
+pub use map_png::{
+    BAKE_RECIPE, HEIGHT_RANGE, MapPng, NORMAL_CONVENTION, height_levels, write_map_png,
+};
 pub use metadata::read_png_text;
 pub use output_file::{OutputFile, STANDARD_OUTPUT, check_destination};
 pub use png_file::{PngStill, read_png_rgb8, write_png, write_png_with_text};

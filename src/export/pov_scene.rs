@@ -7,6 +7,7 @@
 
 use super::output_file::OutputFile;
 use super::png_file::PngStill;
+use super::{HEIGHT_RANGE, MapPng};
 use crate::Error;
 use crate::raster::{PreparedObject, PreparedScene};
 use crate::scene::Camera;
@@ -203,28 +204,11 @@ fn world_extent(object: &Object) -> f32 {
 
 /// Heights as a 16-bit grey PNG scaled to their range; returns the range.
 fn write_height_png(path: &Path, heights: &[f32]) -> Result<f32, Error> {
-    let (lo, hi) = heights
-        .iter()
-        .filter(|h| h.is_finite())
-        .fold((f32::MAX, f32::MIN), |(a, b), &h| (a.min(h), b.max(h)));
-    let range = if hi > lo { hi - lo } else { 1.0 };
-    let bytes: Vec<u8> = heights
-        .iter()
-        .flat_map(|&h| {
-            let level = if h.is_finite() { (h - lo) / range } else { 0.0 };
-            ((level.clamp(0.0, 1.0) * 65535.0).round() as u16).to_be_bytes()
-        })
-        .collect();
-    let (file, handle) = OutputFile::create(path)?;
-    let fail = |e: png::EncodingError| Error::write(path, e);
-    let mut encoder = png::Encoder::new(handle, BAKE_SIDE, BAKE_SIDE);
-    encoder.set_color(png::ColorType::Grayscale);
-    encoder.set_depth(png::BitDepth::Sixteen);
-    let mut writer = encoder.write_header().map_err(fail)?;
-    writer.write_image_data(&bytes).map_err(fail)?;
-    writer.finish().map_err(fail)?;
-    file.commit()?;
-    Ok(if hi > lo { range } else { 0.0 })
+    let (levels, (lo, hi)) = super::height_levels(heights);
+    let range = (HEIGHT_RANGE, format!("{lo}..{hi}"));
+    let size = (BAKE_SIDE, BAKE_SIDE);
+    super::write_map_png(path, size, MapPng::Grey16(&levels), &[range])?;
+    Ok(hi - lo)
 }
 
 /// One object as a mesh2; without normal and uv indices POV-Ray uses the face indices for both.
