@@ -3,10 +3,8 @@
 
 use crate::common::render_with;
 use bumpwork::quality::{Quality, ShadowEdges};
-use bumpwork::raster::{Framebuffer, PreparedScene, Viewport};
-use bumpwork::reference::{exact_shader, render_reference};
+use bumpwork::raster::{Framebuffer, Viewport};
 use bumpwork::scene::{Scene, parse_scene};
-use bumpwork::shade::LitShader;
 use bumpwork::shadow::{ShadowMaps, ShadowSettings};
 use glam::Vec3;
 use std::sync::Arc;
@@ -99,12 +97,7 @@ fn raster_by(scene: &Scene, quality: &Quality, by: By) -> Framebuffer {
 
 /// The reference's frame: exact surfaces and exact shadow rays.
 fn reference(scene: &Scene) -> Framebuffer {
-    let prepared = PreparedScene::new(
-        scene.clone(),
-        bumpwork::surface::Tessellation { density: 4 },
-    );
-    let shader: LitShader = exact_shader(&prepared, &scene.camera);
-    render_reference(&prepared, &scene.camera, VIEW, &shader).0
+    crate::reference_support::exact_frame(scene, VIEW)
 }
 
 /// Per pixel: of the light that would reach it without shadows, the fraction that does, from

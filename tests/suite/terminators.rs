@@ -6,10 +6,8 @@
 use crate::cli_support::{bumpwork, decode_png, stderr, temp_dir};
 use crate::common::render_with;
 use bumpwork::quality::Quality;
-use bumpwork::raster::{Framebuffer, PreparedScene, Viewport};
-use bumpwork::reference::{exact_shader, render_reference};
+use bumpwork::raster::{Framebuffer, Viewport};
 use bumpwork::scene::{Scene, parse_scene};
-use bumpwork::shade::LitShader;
 use glam::Vec3;
 
 const VIEW: Viewport = Viewport {
@@ -109,12 +107,7 @@ fn raster(scene: &Scene) -> Framebuffer {
 }
 
 fn reference(scene: &Scene) -> Framebuffer {
-    let prepared = PreparedScene::new(
-        scene.clone(),
-        bumpwork::surface::Tessellation { density: 4 },
-    );
-    let shader: LitShader = exact_shader(&prepared, &scene.camera);
-    render_reference(&prepared, &scene.camera, VIEW, &shader).0
+    crate::reference_support::exact_frame(scene, VIEW)
 }
 
 /// Of the pixels the unbumped surface leaves ambient-only (past its terminator), how many the
