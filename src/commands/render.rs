@@ -70,6 +70,10 @@ pub struct RenderArgs {
     /// Frames per second of a --time-range sequence.
     #[arg(long, value_parser = parse_fps, requires = "time_range")]
     fps: Option<f64>,
+    /// Render only shard K of N of a --time-range sequence (K from 1): frames K−1, K−1+N, …,
+    /// named as without shards, so N runs on any scheduler together write the whole sequence.
+    #[arg(long, value_name = "K/N", value_parser = parse_shard, requires = "time_range")]
+    shard: Option<Shard>,
     /// What the still shows [default: shaded].
     #[arg(long, value_parser = clap::builder::PossibleValuesParser::new(mode_names()))]
     mode: Option<String>,
@@ -145,6 +149,11 @@ fn render_start(
     scene.camera = camera_from_options(args, &scene.camera)?;
     let camera = scene.camera.clone();
     let frames = frames(args, settings.time, output)?;
+    if frames.is_empty() {
+        // Only a shard past the sequence's length has none; a scheduler's run of it succeeds.
+        eprintln!("bumpwork: this shard has none of the sequence's frames; nothing to render");
+        return Ok(());
+    }
     let existing = existing_files(&frames, args.no_clobber)?;
     let prepared = settings.prepare(scene, &camera)?;
     for (time, path) in &frames {
@@ -508,9 +517,42 @@ fn frames(args: &RenderArgs, time: f64, output: &Path) -> Result<Vec<(f64, PathB
     }
     let count = count as u64;
     let digits = (count - 1).to_string().len().max(4);
+    let shard = args.shard.unwrap_or(Shard { index: 1, count: 1 });
     Ok((0..count)
+        .filter(|&i| shard.takes(i))
         .map(|i| (start + i as f64 / fps, numbered(output, i, digits)))
         .collect())
+}
+
+/// Shard `index` of `count` (from 1): a deterministic share of a sequence's frames.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Shard {
+    index: u64,
+    count: u64,
+}
+
+impl Shard {
+    /// Whether frame `frame` (from 0) is this shard's: every `count`-th from `index` − 1.
+    fn takes(self, frame: u64) -> bool {
+        frame % self.count == self.index - 1
+    }
+}
+
+fn parse_shard(text: &str) -> Result<Shard, String> {
+    let expected = || {
+        format!(
+            "expected K/N, shard K of N with 1 ≤ K ≤ N ≤ {MAX_FRAMES} (K counted from 1), got '{}'",
+            bumpwork::diagnostic::shown_input(text)
+        )
+    };
+    let (k, n) = text.split_once('/').ok_or_else(expected)?;
+    let number = |s: &str| s.trim().parse::<u64>().ok();
+    match (number(k), number(n)) {
+        (Some(index), Some(count)) if 1 <= index && index <= count && count <= MAX_FRAMES => {
+            Ok(Shard { index, count })
+        }
+        _ => Err(expected()),
+    }
 }
 
 /// `out.png` → `out-0007.png`.

@@ -50,6 +50,7 @@ mod scene_files;
 mod scene_quality;
 mod settings;
 mod shadows;
+mod shards;
 mod source_layout;
 mod ssh_session;
 mod still_bands;
