@@ -86,6 +86,7 @@ fn main() {
             settings,
             scene_text: &text,
             recipe: &recipe,
+            frame: None,
         };
         let timing = time_png_stills(&request, &out, runs());
         let ratio = timing.median.as_secs_f64() / whole.median.as_secs_f64();

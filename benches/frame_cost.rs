@@ -60,6 +60,7 @@ fn stills(n: usize, samples: u32, contrast: Option<f32>) {
         settings,
         scene_text: &text,
         recipe: &recipe,
+        frame: None,
     };
     let out = dir.join("still.png");
     let timing = time_png_stills(&request, &out, n);

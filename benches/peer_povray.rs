@@ -85,6 +85,7 @@ fn main() {
             settings: *settings,
             scene_text: &text,
             recipe,
+            frame: None,
         };
         let out = dir.join("ours.png");
         write_still(&request, &out, StillFormat::Png, &mut |_| {}, &|| None).expect("still");

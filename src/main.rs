@@ -29,6 +29,8 @@ enum Command {
     Bake(commands::bake::BakeArgs),
     /// Render every built-in scene to a still and a contact sheet of them all.
     Gallery(commands::gallery::GalleryArgs),
+    /// Make a contact sheet of the stills in a directory (after shards), naming missing frames.
+    Sheet(commands::sheet::SheetArgs),
     /// Check pattern files, scene files and images without rendering.
     Check(commands::check::CheckArgs),
     /// List the shipped patterns (kind, parameters, what each is), or print one's file.
@@ -113,6 +115,7 @@ fn run(cli: Cli) -> Result<(), Error> {
         Some(Command::Check(args)) => commands::check::run(args),
         Some(Command::Patterns(args)) => commands::patterns::run(args),
         Some(Command::Gallery(args)) => commands::gallery::run(args),
+        Some(Command::Sheet(args)) => commands::sheet::run(args),
         Some(Command::View(args)) => commands::view::run(args),
         Some(Command::Completions(args)) => commands::completions::run(args, &mut Cli::command()),
         Some(Command::Man) => commands::man_page::run(Cli::command()),

@@ -168,6 +168,7 @@ fn render_scene(
         settings,
         scene_text: &scene_text,
         recipe: &recipe,
+        frame: None,
     };
     write_still(&request, path, StillFormat::Png, progress, &|| {
         interrupt.received()

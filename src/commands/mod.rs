@@ -21,6 +21,7 @@ pub mod man_page;
 pub mod patterns;
 mod progress;
 pub mod render;
+pub mod sheet;
 pub mod view;
 
 /// Largest output side accepted (stills are rendered in bands, so memory does not grow with it).

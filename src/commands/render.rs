@@ -156,8 +156,8 @@ fn render_start(
     }
     let existing = existing_files(&frames, args.no_clobber)?;
     let prepared = settings.prepare(scene, &camera)?;
-    for (time, path) in &frames {
-        let (time, path) = (*time, path.as_path());
+    for frame in &frames {
+        let (time, path) = (frame.time, frame.path.as_path());
         let settings = StillSettings { time, ..settings };
         let recipe = Recipe::capture(&start.source, &prepared.scene, &camera, &settings);
         let request = StillRequest {
@@ -166,6 +166,7 @@ fn render_start(
             settings,
             scene_text: &start.scene_text,
             recipe: &recipe,
+            frame: frame.place,
         };
         render_one(&request, path, format, interrupt)?;
     }
@@ -181,10 +182,10 @@ fn render_start(
 
 /// How many of the files `frames` are to be written to exist already; with `no_clobber`, an
 /// error naming the first where any does.
-fn existing_files(frames: &[(f64, PathBuf)], no_clobber: bool) -> Result<usize, Error> {
+fn existing_files(frames: &[Frame], no_clobber: bool) -> Result<usize, Error> {
     let existing: Vec<&Path> = frames
         .iter()
-        .map(|(_, path)| path.as_path())
+        .map(|frame| frame.path.as_path())
         .filter(|path| path.symlink_metadata().is_ok())
         .collect();
     match (no_clobber, existing.first()) {
@@ -345,8 +346,8 @@ fn check_outputs(args: &RenderArgs, output: &Path, format: StillFormat) -> Resul
         return check_destination(output);
     }
     refuse_to_overwrite_sources(output)?;
-    for (_, path) in frames(args, 0.0, output)? {
-        check_destination(&path)?;
+    for frame in frames(args, 0.0, output)? {
+        check_destination(&frame.path)?;
     }
     Ok(())
 }
@@ -504,10 +505,23 @@ fn override_settings(start: &Start, args: &RenderArgs) -> Result<StillSettings, 
     })
 }
 
-/// (time, file) of every frame: one, or a numbered sequence over the time range.
-fn frames(args: &RenderArgs, time: f64, output: &Path) -> Result<Vec<(f64, PathBuf)>, Error> {
+/// One still to render: its scene time, its file and, in a sequence, its index and the
+/// sequence's length.
+struct Frame {
+    time: f64,
+    path: PathBuf,
+    place: Option<(u64, u64)>,
+}
+
+/// Every still to render: one, or a numbered sequence over the time range (this shard's part).
+fn frames(args: &RenderArgs, time: f64, output: &Path) -> Result<Vec<Frame>, Error> {
     let (Some((start, end)), Some(fps)) = (args.time_range, args.fps) else {
-        return Ok(vec![(time, output.to_path_buf())]);
+        let path = output.to_path_buf();
+        return Ok(vec![Frame {
+            time,
+            path,
+            place: None,
+        }]);
     };
     let count = ((end - start) * fps).ceil();
     if !(count >= 1.0 && count <= MAX_FRAMES as f64) {
@@ -520,7 +534,11 @@ fn frames(args: &RenderArgs, time: f64, output: &Path) -> Result<Vec<(f64, PathB
     let shard = args.shard.unwrap_or(Shard { index: 1, count: 1 });
     Ok((0..count)
         .filter(|&i| shard.takes(i))
-        .map(|i| (start + i as f64 / fps, numbered(output, i, digits)))
+        .map(|i| Frame {
+            time: start + i as f64 / fps,
+            path: numbered(output, i, digits),
+            place: Some((i, count)),
+        })
         .collect())
 }
 

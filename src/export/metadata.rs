@@ -10,6 +10,8 @@ pub const SOFTWARE: &str = "Software";
 pub const SCENE: &str = "bumpwork-scene";
 /// The recipe: source, settings, camera, live edits, file hashes (TOML).
 pub const RECIPE: &str = "bumpwork-recipe";
+/// A sequence frame's place in it, `INDEX/COUNT` (index from 0).
+pub const FRAME: &str = "bumpwork-frame";
 
 /// The most text one chunk may hold once inflated: a scene file's limit, since the scene and
 /// recipe chunks are scene-file text.

@@ -1,7 +1,7 @@
 //! A still rendered straight into a file: bands streamed into a PNG (carrying its recipe) or a
 //! PPM, so memory is bounded by the band budget whatever the size.
 
-use super::metadata::{RECIPE, SCENE, SOFTWARE};
+use super::metadata::{FRAME, RECIPE, SCENE, SOFTWARE};
 use super::{PngStill, PpmStill};
 use crate::Error;
 use crate::raster::{FrameStats, PreparedScene, Viewport};
@@ -32,6 +32,9 @@ pub struct StillRequest<'a> {
     /// The scene as text and the recipe, for the PNG's metadata.
     pub scene_text: &'a str,
     pub recipe: &'a Recipe,
+    /// For a frame of a sequence: its index (from 0) and the sequence's length, kept in the
+    /// PNG's `bumpwork-frame` text so `bumpwork sheet` can tell which frames are missing.
+    pub frame: Option<(u64, u64)>,
 }
 
 /// Renders `request` into `path`. `progress` hears the fraction done; `interrupted` is asked between
@@ -73,11 +76,14 @@ pub fn write_still(
     };
     match format {
         StillFormat::Png => {
-            let texts = [
+            let mut texts = vec![
                 (SOFTWARE, request.recipe.program.clone()),
                 (SCENE, request.scene_text.to_string()),
                 (RECIPE, request.recipe.to_toml()),
             ];
+            if let Some((index, count)) = request.frame {
+                texts.push((FRAME, format!("{index}/{count}")));
+            }
             let mut png = PngStill::create(path, settings.size, &texts)?;
             let stats = stream(&mut png)?;
             png.finish()?;

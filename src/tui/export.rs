@@ -124,6 +124,7 @@ fn export(order: ExportOrder, cancel: &AtomicBool) -> Result<(), Error> {
         settings: order.settings,
         scene_text: &scene_text,
         recipe: &recipe,
+        frame: None,
     };
     let interrupted = || cancel.load(Ordering::Relaxed).then_some(0);
     write_still(

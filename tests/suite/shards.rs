@@ -1,8 +1,9 @@
 //! `render --time-range --shard K/N`: shards run at once in separate processes write, between
-//! them, exactly the files of one unsharded run, none twice; a shard stopped by its scheduler
-//! leaves only whole frames, and run again alone it finishes its share.
+//! them, exactly the files of one unsharded run, none twice; `sheet` assembles them, or names the
+//! frames still missing; a shard stopped by its scheduler leaves only whole frames, and run
+//! again alone it finishes its share.
 
-use crate::cli_support::{bumpwork, stderr, temp_dir};
+use crate::cli_support::{assert_user_error, bumpwork, stderr, temp_dir};
 use std::collections::BTreeMap;
 use std::path::Path;
 use std::process::{Command, Stdio};
@@ -70,7 +71,11 @@ fn four_shards_at_once_write_the_files_of_one_run_each_once() {
         expected == got,
         "the sharded frames differ from the unsharded run's"
     );
-    // Shard 2 of 4 alone writes frames 1, 5 and 9 only.
+    // After all the shards, `sheet` makes the contact sheet of the twelve.
+    let sheet = bumpwork(&["sheet", sharded.to_str().unwrap()]);
+    assert!(sheet.status.success(), "{}", stderr(&sheet));
+    assert!(sharded.join("contact-sheet.png").exists());
+    // Shard 2 of 4 alone writes frames 1, 5 and 9 only; `sheet` names the nine missing.
     let alone = temp_dir("shards-alone");
     let output = alone.join("frame.png");
     let run = bumpwork(&sequence_args(
@@ -82,6 +87,15 @@ fn four_shards_at_once_write_the_files_of_one_run_each_once() {
     assert_eq!(
         names,
         ["frame-0001.png", "frame-0005.png", "frame-0009.png"]
+    );
+    let incomplete = bumpwork(&["sheet", alone.to_str().unwrap()]);
+    assert_user_error(
+        &incomplete,
+        "9 frames are missing: frame-0000.png, frame-0002.png",
+    );
+    assert!(
+        !alone.join("contact-sheet.png").exists(),
+        "a sheet of part of a sequence"
     );
     // More shards than frames: the extra ones have nothing to do, and say so.
     let extra = bumpwork(&sequence_args(
