@@ -38,7 +38,7 @@ pub struct BakeArgs {
     #[arg(long, value_parser = Override::parse)]
     set: Vec<Override>,
     /// Scene time in seconds, for animated patterns [default: the scene's].
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_negative_numbers = true, value_parser = super::render::parse_time)]
     time: Option<f64>,
     /// Bake again what a map made by `bumpwork bake` was baked from (options given here win).
     #[arg(long, conflicts_with = "source")]

@@ -631,7 +631,7 @@ fn mode_names() -> Vec<&'static str> {
     ShaderMode::ALL.iter().map(|m| m.name()).collect()
 }
 
-fn parse_time(text: &str) -> Result<f64, String> {
+pub(super) fn parse_time(text: &str) -> Result<f64, String> {
     let shown = || bumpwork::diagnostic::shown_input(text);
     let time = text
         .trim()
