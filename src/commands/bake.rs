@@ -9,7 +9,7 @@ use bumpwork::Error;
 use bumpwork::export::{MapPng, write_map_png};
 use bumpwork::overrides::{Override, apply_to_scene};
 use bumpwork::pattern::{OutputKind, Pattern};
-use bumpwork::scene::{BumpSource, Object, PatternBinding, Scene, Texturing};
+use bumpwork::scene::{Object, Scene, load_pattern, put_pattern_on};
 use bumpwork::shade::{BakeGrid, bake_bump_on, bake_color_on};
 use bumpwork::texture::NormalConvention;
 use std::path::{Path, PathBuf};
@@ -33,7 +33,7 @@ pub struct BakeArgs {
     /// Which way the normal map's green points: opengl (+Y: Blender, Godot) or directx (−Y)
     /// [default: opengl].
     #[arg(long, value_enum)]
-    normal_convention: Option<ConventionArg>,
+    normal_convention: Option<NormalConvention>,
     /// A setting, KEY=VALUE (repeatable), as `render --set` takes it.
     #[arg(long, value_parser = Override::parse)]
     set: Vec<Override>,
@@ -43,12 +43,6 @@ pub struct BakeArgs {
     /// Bake again what a map made by `bumpwork bake` was baked from (options given here win).
     #[arg(long, conflicts_with = "source")]
     from: Option<PathBuf>,
-}
-
-#[derive(Clone, Copy, clap::ValueEnum)]
-enum ConventionArg {
-    Opengl,
-    Directx,
 }
 
 /// The default map side.
@@ -108,11 +102,7 @@ fn recipe_of(args: &BakeArgs) -> Result<BakeRecipe, Error> {
     Ok(BakeRecipe {
         size: args.size.unwrap_or(base.size),
         tile: args.tile.or(base.tile),
-        convention: match args.normal_convention {
-            Some(ConventionArg::Opengl) => NormalConvention::Opengl,
-            Some(ConventionArg::Directx) => NormalConvention::Directx,
-            None => base.convention,
-        },
+        convention: args.normal_convention.unwrap_or(base.convention),
         set: match args.set.is_empty() {
             true => base.set,
             false => args.set.iter().map(|o| o.text().to_string()).collect(),
@@ -148,15 +138,9 @@ fn source_scene(source: &str) -> Result<(Scene, usize, String), Error> {
             .file_stem()
             .map_or_else(|| "bake".to_string(), |s| s.to_string_lossy().into_owned())
     };
-    if source.ends_with(".pat") {
-        let pattern =
-            Pattern::load(Path::new(source)).map_err(|e| Error::Diagnostic(e.to_string()))?;
-        return Ok((on_plane(source, pattern)?, 0, stem(source)));
-    }
-    if let Some(text) = bumpwork::pattern::builtin(source) {
-        let pattern = Pattern::compile(text, &format!("{source}.pat"))
-            .map_err(|e| Error::Diagnostic(e.to_string()))?;
-        return Ok((on_plane(source, pattern)?, 0, source.to_string()));
+    if source.ends_with(".pat") || bumpwork::pattern::builtin(source).is_some() {
+        let pattern = load_pattern(source, Path::new("")).map_err(Error::Diagnostic)?;
+        return Ok((on_plane(source, &pattern)?, 0, stem(source)));
     }
     let (scene_name, object) = match source.rsplit_once(':') {
         Some((scene, n)) if !scene.is_empty() && n.parse::<usize>().is_ok() => {
@@ -179,26 +163,13 @@ fn source_scene(source: &str) -> Result<(Scene, usize, String), Error> {
     Ok((scene, object - 1, name))
 }
 
-/// The lecture's plane (400 × 400 units of (u,v)) with `pattern` as its bump or texture.
-fn on_plane(name: &str, pattern: Pattern) -> Result<Scene, Error> {
+/// The lecture's plane (400 × 400 units of (u,v)) with `pattern` as its bump, or as its texture
+/// and no bump.
+fn on_plane(name: &str, pattern: &Pattern) -> Result<Scene, Error> {
     let mut scene = bumpwork::scene::resolve("plane-dimples")?;
-    let binding = PatternBinding {
-        name: name.to_string(),
-        params: pattern.params().iter().map(|p| p.default).collect(),
-        placement: Default::default(),
-        pattern,
-    };
-    let material = &mut scene.objects[0].material;
-    match binding.pattern.output() {
-        OutputKind::Color => {
-            material.texture = Some(Texturing::Pattern(binding));
-            material.bump = None;
-        }
-        OutputKind::Height | OutputKind::Slope => {
-            if let Some(bump) = &mut material.bump {
-                bump.source = BumpSource::Pattern(binding);
-            }
-        }
+    put_pattern_on(&mut scene, name, pattern);
+    if pattern.output() == OutputKind::Color {
+        scene.objects[0].material.bump = None;
     }
     Ok(scene)
 }

@@ -345,8 +345,8 @@ fn triangle_map(
         .ok_or_else(|| "the image points must not be collinear".to_string())
 }
 
-/// A pattern by built-in name, or a `.pat` file relative to the scene file.
-fn load_pattern(name: &str, base: &Path) -> Result<Pattern, String> {
+/// A pattern by built-in name, or a `.pat` file relative to `base` (a scene file's directory).
+pub fn load_pattern(name: &str, base: &Path) -> Result<Pattern, String> {
     match crate::pattern::builtin(name) {
         Some(source) => Pattern::compile(source, &format!("{name}.pat")),
         None => Pattern::load(&base.join(name)),

@@ -19,6 +19,13 @@ pub fn load_source(name: &str) -> Result<Scene, Error> {
     let mut scene = super::resolve(PATTERN_STAGE)?;
     let file_name = Path::new(name).file_name().map(|n| n.to_string_lossy());
     scene.name = file_name.map_or_else(|| name.to_string(), |n| n.into_owned());
+    put_pattern_on(&mut scene, name, &pattern);
+    Ok(scene)
+}
+
+/// Puts `pattern` (called `name`, its parameters at their defaults) on every object of `scene`:
+/// a colour pattern as its texture, a bump pattern as the source of its bump where it has one.
+pub fn put_pattern_on(scene: &mut Scene, name: &str, pattern: &Pattern) {
     for object in &mut scene.objects {
         let binding = PatternBinding {
             name: name.to_string(),
@@ -32,7 +39,6 @@ pub fn load_source(name: &str) -> Result<Scene, Error> {
             (_, None) => {}
         }
     }
-    Ok(scene)
 }
 
 /// The text of the scene `name` names, as a scene file: the file itself, or a built-in scene

@@ -11,8 +11,8 @@ mod presets;
 mod quality_table;
 pub(crate) mod user_words;
 
-pub use binding_file::{BindingFile, FilterFile, MappingKind, WrapFile};
-pub use by_name::{load_source, source_text};
+pub use binding_file::{BindingFile, FilterFile, MappingKind, WrapFile, load_pattern};
+pub use by_name::{load_source, put_pattern_on, source_text};
 pub use file::{
     CameraFile, Direction, FieldOfView, Finite, LightFile, MAX_SCENE_FILE_BYTES, MAX_TIME_SECONDS,
     Point, Positive, SceneFile, SceneTime, camera_looking, load_scene_file, parse_scene,

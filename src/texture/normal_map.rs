@@ -8,7 +8,17 @@ use super::{LoadedImage, TexelGrid, Wrap};
 use glam::{Vec2, Vec3};
 
 /// Which way a normal map's green channel points.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[derive(
+    Clone,
+    Copy,
+    Debug,
+    Default,
+    PartialEq,
+    Eq,
+    serde::Serialize,
+    serde::Deserialize,
+    clap::ValueEnum,
+)]
 #[serde(rename_all = "kebab-case")]
 pub enum NormalConvention {
     /// Green up the image (+Y): Blender, Godot, glTF.
