@@ -20,7 +20,7 @@ pub struct Instr {
     pub op: Op,
     pub dst: usize,
     /// Operand slots; ops with fewer operands repeat the first.
-    pub args: [usize; 3],
+    pub args: [usize; 4],
 }
 
 /// Where a slot's value comes from before the instructions run.
@@ -50,9 +50,9 @@ impl Program {
     }
 
     /// Whether `f32` lanes are accurate enough for this program: when it does not read `t`
-    /// (see `Real`).
+    /// and calls no fractal or cellular noise (see `Real`).
     pub fn single_precision(&self) -> bool {
-        !self.uses(Input::T)
+        !self.uses(Input::T) && !self.instrs.iter().any(|i| i.op.amplifies_rounding())
     }
 }
 
@@ -141,7 +141,7 @@ struct Lowering<'a> {
     sources: Vec<Source>,
     instrs: Vec<Instr>,
     /// (op, operands) already computed, for sharing repeated sub-expressions.
-    shared: HashMap<(Op, [usize; 3]), usize>,
+    shared: HashMap<(Op, [usize; 4]), usize>,
     /// Slots of inputs, params and constants (constants keyed by their bits).
     named_slots: HashMap<(u8, u64), usize>,
     lets: Vec<Option<Value>>,
@@ -170,9 +170,15 @@ impl Lowering<'_> {
     }
 
     /// Emits `op`, folding it when every operand is a constant.
-    fn emit(&mut self, op: Op, args: [Operand; 3]) -> Operand {
-        if let [Operand::Const(a), Operand::Const(b), Operand::Const(c)] = args {
-            return Operand::Const(apply::<f64>(op, a, b, c));
+    fn emit(&mut self, op: Op, args: [Operand; 4]) -> Operand {
+        if let [
+            Operand::Const(a),
+            Operand::Const(b),
+            Operand::Const(c),
+            Operand::Const(d),
+        ] = args
+        {
+            return Operand::Const(apply::<f64>(op, a, b, c, d));
         }
         if op == Op::Select
             && let Operand::Const(condition) = args[0]
@@ -219,11 +225,11 @@ impl Lowering<'_> {
     }
 
     fn emit1(&mut self, op: Op, a: Operand) -> Operand {
-        self.emit(op, [a, a, a])
+        self.emit(op, [a, a, a, a])
     }
 
     fn emit2(&mut self, op: Op, a: Operand, b: Operand) -> Operand {
-        self.emit(op, [a, b, a])
+        self.emit(op, [a, b, a, a])
     }
 
     fn num(&mut self, id: ExprId) -> Operand {
@@ -254,7 +260,7 @@ impl Lowering<'_> {
             ExprKind::If(c, a, b) => {
                 let c = self.num(*c);
                 let (a, b) = (self.expr(*a), self.expr(*b));
-                self.zip(a, b, |l, x, y| l.emit(Op::Select, [c, x, y]))
+                self.zip(a, b, |l, x, y| l.emit(Op::Select, [c, x, y, c]))
             }
             ExprKind::Call { args, .. } => self.call(checked.calls[&id], args),
         }
@@ -295,16 +301,15 @@ impl Lowering<'_> {
         if function == Function::Mix {
             let (a, b) = (self.expr(args[0]), self.expr(args[1]));
             let t = self.num(args[2]);
-            return self.zip(a, b, |l, x, y| l.emit(Op::Mix, [x, y, t]));
+            return self.zip(a, b, |l, x, y| l.emit(Op::Mix, [x, y, t, x]));
         }
         let a: Vec<Operand> = args.iter().map(|&arg| self.num(arg)).collect();
         if function == Function::Rgb {
             return Value::Color([a[0], a[1], a[2]]);
         }
         let op = function_op(function, a.len());
-        let third = a.get(2).copied().unwrap_or(a[0]);
-        let second = a.get(1).copied().unwrap_or(a[0]);
-        Value::Num(self.emit(op, [a[0], second, third]))
+        let operand = |k: usize| a.get(k).copied().unwrap_or(a[0]);
+        Value::Num(self.emit(op, [a[0], operand(1), operand(2), operand(3)]))
     }
 }
 
@@ -357,6 +362,12 @@ fn function_op(function: Function, arity: usize) -> Op {
         F::Length => Op::Hypot3,
         F::Noise if arity == 2 => Op::Noise2,
         F::Noise => Op::Noise3,
+        F::Perlin if arity == 2 => Op::Perlin2,
+        F::Perlin => Op::Perlin3,
+        F::Cells if arity == 2 => Op::Cells2,
+        F::Cells => Op::Cells3,
+        F::Fbm if arity == 3 => Op::Fbm2,
+        F::Fbm => Op::Fbm3,
         F::Mix | F::Rgb => unreachable!("handled by Lowering::call"),
     }
 }

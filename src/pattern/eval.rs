@@ -286,46 +286,38 @@ fn run_instrs_here<T: Lane>(instrs: &[Instr], slots: &mut [T::Real]) {
     for instr in instrs {
         let (below, rest) = slots.split_at_mut(instr.dst * T::SLOT);
         let out = &mut rest[..T::SLOT];
-        let [a, b, c] = instr.args.map(|s| slot::<T>(below, s));
-        dispatch::<T>(instr.op, out, a, b, c);
+        let operands = instr.args.map(|s| slot::<T>(below, s));
+        dispatch::<T>(instr.op, out, operands);
     }
 }
 
 /// One monomorphised lane loop per op, so the op's `match` is resolved outside the loop.
 macro_rules! lane_loops {
-    ($op:expr, $out:expr, $a:expr, $b:expr, $c:expr; $($name:ident),* $(,)?) => {
+    ($op:expr, $out:expr, $operands:expr; $($name:ident),* $(,)?) => {
         match $op {
-            $(Op::$name => lanes::<T>($out, $a, $b, $c, |x, y, z| apply(Op::$name, x, y, z)),)*
+            $(Op::$name => lanes::<T>($out, $operands, |a, b, c, d| apply(Op::$name, a, b, c, d)),)*
         }
     };
 }
 
 #[inline(always)]
-fn dispatch<T: Lane>(op: Op, out: &mut [T::Real], a: &[T::Real], b: &[T::Real], c: &[T::Real]) {
-    lane_loops!(op, out, a, b, c;
+fn dispatch<T: Lane>(op: Op, out: &mut [T::Real], operands: [&[T::Real]; 4]) {
+    lane_loops!(op, out, operands;
         Neg, Not, Sin, Cos, Tan, Asin, Acos, Atan, Sqrt, Abs, Sign, Floor, Ceil, Fract, Exp, Log,
         Add, Sub, Mul, Div, Pow, Mod, Min, Max, Atan2, Hypot, Step, Lt, Le, Gt, Ge, Eq, Ne, And,
-        Or, Noise2, Select, Clamp, Mix, Smoothstep, Hypot3, Noise3,
+        Or, Noise2, Perlin2, Cells2, Select, Clamp, Mix, Smoothstep, Hypot3, Noise3, Perlin3,
+        Cells3, Fbm2, Fbm3,
     );
 }
 
 #[inline(always)]
-fn lanes<T: Lane>(
-    out: &mut [T::Real],
-    a: &[T::Real],
-    b: &[T::Real],
-    c: &[T::Real],
-    f: impl Fn(T, T, T) -> T,
-) {
+fn lanes<T: Lane>(out: &mut [T::Real], operands: [&[T::Real]; 4], f: impl Fn(T, T, T, T) -> T) {
     // Exact lengths let the compiler drop the bounds checks in the loop.
-    let (out, a, b, c) = (
-        &mut out[..T::SLOT],
-        &a[..T::SLOT],
-        &b[..T::SLOT],
-        &c[..T::SLOT],
-    );
+    let out = &mut out[..T::SLOT];
+    let [a, b, c, d] = operands.map(|operand| &operand[..T::SLOT]);
     for i in 0..CHUNK {
-        T::set(out, i, f(T::get(a, i), T::get(b, i), T::get(c, i)));
+        let operand = |slot: &[T::Real]| T::get(slot, i);
+        T::set(out, i, f(operand(a), operand(b), operand(c), operand(d)));
     }
 }
 
@@ -346,12 +338,12 @@ mod tests {
                 Instr {
                     op: Op::Mul,
                     dst: 2,
-                    args: [0, 1, 0],
+                    args: [0, 1, 0, 0],
                 },
                 Instr {
                     op: Op::Sin,
                     dst: 3,
-                    args: [2, 2, 2],
+                    args: [2, 2, 2, 2],
                 },
             ],
             uniform: 0,

@@ -32,6 +32,9 @@ pub enum Function {
     Hypot,
     Length,
     Noise,
+    Perlin,
+    Cells,
+    Fbm,
     Rgb,
 }
 
@@ -64,7 +67,8 @@ impl Function {
             | Exp | Log => &[1],
             Atan2 | Mod | Min | Max | Step | Pow | Hypot => &[2],
             Clamp | Mix | Smoothstep | Rgb => &[3],
-            Length | Noise => &[2, 3],
+            Length | Noise | Perlin | Cells => &[2, 3],
+            Fbm => &[3, 4],
         }
     }
 

@@ -16,11 +16,13 @@
 //! and gradient 0, colour black. Every `eval_*` returns how many there were.
 
 mod ast;
+mod cells;
 mod check;
 mod compile;
 mod dual;
 mod error;
 mod eval;
+mod fractal;
 mod functions;
 mod lexer;
 pub mod native;
@@ -28,6 +30,7 @@ mod noise;
 mod ops;
 mod output;
 mod parser;
+mod perlin;
 mod real;
 mod shipped;
 

@@ -53,7 +53,7 @@ const LAST_CELL: f64 = (1u64 << 62) as f64;
 
 /// Lattice cell and position inside it. Coordinates beyond ±2⁶² share cells; noise there is
 /// still finite.
-fn split(x: f64) -> (i64, f64) {
+pub(super) fn split(x: f64) -> (i64, f64) {
     let cell = x.floor();
     (cell.clamp(-LAST_CELL, LAST_CELL) as i64, x - cell)
 }
@@ -66,14 +66,20 @@ fn fade(t: f64) -> (f64, f64) {
 
 /// Pseudo-random value in [-1, 1] for a lattice corner.
 fn corner(x: i64, y: i64, z: i64) -> f64 {
+    (lattice_hash(x, y, z, 0) >> 11) as f64 / (1u64 << 52) as f64 - 1.0
+}
+
+/// 64 pseudo-random bits for a lattice point; `stream` gives each user of the lattice bits
+/// of its own.
+pub(super) fn lattice_hash(x: i64, y: i64, z: i64, stream: u64) -> u64 {
     let mut h = (x as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15)
         ^ (y as u64).wrapping_mul(0xC2B2_AE3D_27D4_EB4F)
-        ^ (z as u64).wrapping_mul(0x1656_67B1_9E37_79F9);
+        ^ (z as u64).wrapping_mul(0x1656_67B1_9E37_79F9)
+        ^ stream.wrapping_mul(0xD6E8_FEB8_6659_FD93);
     // splitmix64 finaliser: every input bit affects every output bit.
     h = (h ^ (h >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
     h = (h ^ (h >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-    h ^= h >> 31;
-    (h >> 11) as f64 / (1u64 << 52) as f64 - 1.0
+    h ^ (h >> 31)
 }
 
 #[cfg(test)]

@@ -2,8 +2,11 @@
 //! duals. At kinks (floor, step, abs at 0, comparisons, min/max ties) the derivative is the
 //! one-sided or zero one, as usual in automatic differentiation.
 
+use super::cells::{cells2, cells3};
 use super::dual::Scalar;
+use super::fractal::{fbm2, fbm3};
 use super::noise::{noise2, noise3};
+use super::perlin::{Graded, perlin2, perlin3};
 use super::real::Real;
 use num_traits::{Float, One, Zero};
 
@@ -48,6 +51,8 @@ pub enum Op {
     And,
     Or,
     Noise2,
+    Perlin2,
+    Cells2,
     // three operands
     /// `if a then b else c`; both branches are evaluated (branch-free batches).
     Select,
@@ -56,6 +61,26 @@ pub enum Op {
     Smoothstep,
     Hypot3,
     Noise3,
+    Perlin3,
+    Cells3,
+    /// fBm of (x, y) over `c` octaves.
+    Fbm2,
+    // four operands
+    /// fBm of (x, y, z) over `d` octaves.
+    Fbm3,
+}
+
+impl Op {
+    /// Whether the op's slope changes so fast over its arguments that the `f32` rounding of
+    /// two of them (`u / 14` and `u / 6`, say) shows in a gradient beyond what a shift of the
+    /// inputs explains: the gradient noises, whose octaves' slopes change many times per unit.
+    /// They compute in `f64` whatever their lanes, so `f64` lanes cost them little.
+    pub fn amplifies_rounding(self) -> bool {
+        matches!(
+            self,
+            Op::Perlin2 | Op::Perlin3 | Op::Cells2 | Op::Cells3 | Op::Fbm2 | Op::Fbm3
+        )
+    }
 }
 
 fn truth<R: Real>(b: bool) -> R {
@@ -68,9 +93,9 @@ fn k<R: Real>(x: f64) -> R {
     R::of(x)
 }
 
-/// The result of `op` on `a`, `b`, `c` (operands past the op's arity are ignored).
+/// The result of `op` on `a`, `b`, `c`, `d` (operands past the op's arity are ignored).
 #[inline(always)]
-pub fn apply<T: Scalar>(op: Op, a: T, b: T, c: T) -> T {
+pub fn apply<T: Scalar>(op: Op, a: T, b: T, c: T, d: T) -> T {
     let x = a.value();
     let one = T::Real::one();
     match op {
@@ -96,7 +121,7 @@ pub fn apply<T: Scalar>(op: Op, a: T, b: T, c: T) -> T {
             T::chain1(r, a, || r)
         }
         Op::Log => T::chain1(x.ln(), a, || one / x),
-        _ => apply_binary(op, a, b, c),
+        _ => apply_binary(op, a, b, c, d),
     }
 }
 
@@ -128,7 +153,7 @@ fn sign<R: Real>(x: R) -> R {
 }
 
 #[inline(always)]
-fn apply_binary<T: Scalar>(op: Op, a: T, b: T, c: T) -> T {
+fn apply_binary<T: Scalar>(op: Op, a: T, b: T, c: T, d: T) -> T {
     let (x, y) = (a.value(), b.value());
     let (zero, one) = (T::Real::zero(), T::Real::one());
     match op {
@@ -189,7 +214,9 @@ fn apply_binary<T: Scalar>(op: Op, a: T, b: T, c: T) -> T {
             let (n, gx, gy) = noise2(x.wide(), y.wide());
             T::chain2(k(n), a, b, || (k(gx), k(gy)))
         }
-        _ => apply_ternary(op, a, b, c),
+        Op::Perlin2 => graded2(perlin2(x.wide(), y.wide()), a, b),
+        Op::Cells2 => graded2(cells2(x.wide(), y.wide()), a, b),
+        _ => apply_ternary(op, a, b, c, d),
     }
 }
 
@@ -204,7 +231,7 @@ fn pick<T: Scalar>(first: bool, a: T, b: T) -> T {
 }
 
 #[inline(always)]
-fn apply_ternary<T: Scalar>(op: Op, a: T, b: T, c: T) -> T {
+fn apply_ternary<T: Scalar>(op: Op, a: T, b: T, c: T, d: T) -> T {
     let (x, y, z) = (a.value(), b.value(), c.value());
     let (zero, one) = (T::Real::zero(), T::Real::one());
     match op {
@@ -234,8 +261,29 @@ fn apply_ternary<T: Scalar>(op: Op, a: T, b: T, c: T) -> T {
             let (n, g) = noise3(x.wide(), y.wide(), z.wide());
             T::chain3(k(n), a, b, c, || (k(g[0]), k(g[1]), k(g[2])))
         }
-        _ => unreachable!("{op:?} is not a ternary op"),
+        Op::Perlin3 => graded3(perlin3(x.wide(), y.wide(), z.wide()), a, b, c),
+        Op::Cells3 => graded3(cells3(x.wide(), y.wide(), z.wide()), a, b, c),
+        Op::Fbm2 => graded2(fbm2(x.wide(), y.wide(), z.wide()), a, b),
+        Op::Fbm3 => {
+            let octaves = d.value().wide();
+            graded3(fbm3([x, y, z].map(Real::wide), octaves), a, b, c)
+        }
+        _ => unreachable!("{op:?} is not an op of three or four operands"),
     }
+}
+
+/// A function of (a, b) computed in f64 with its gradient, as the program's scalar.
+#[inline(always)]
+fn graded2<T: Scalar>(result: Graded<2>, a: T, b: T) -> T {
+    let [ga, gb] = result.gradient;
+    T::chain2(k(result.value), a, b, || (k(ga), k(gb)))
+}
+
+/// `graded2` for a function of (a, b, c).
+#[inline(always)]
+fn graded3<T: Scalar>(result: Graded<3>, a: T, b: T, c: T) -> T {
+    let [ga, gb, gc] = result.gradient;
+    T::chain3(k(result.value), a, b, c, || (k(ga), k(gb), k(gc)))
 }
 
 /// GLSL `smoothstep(e0, e1, x)`, with its partials in all three arguments.
@@ -356,25 +404,25 @@ mod tests {
 
     #[test]
     fn floored_mod_is_continuous_across_zero() {
-        let m = |x: f64| apply::<f64>(Op::Mod, x, 50.0, 0.0);
+        let m = |x: f64| apply::<f64>(Op::Mod, x, 50.0, 0.0, 0.0);
         assert_eq!(m(-10.0), 40.0);
         assert_eq!(m(60.0), 10.0);
-        assert_eq!(apply(Op::Mod, d(-10.0), c(50.0), c(0.0)).du, 1.0);
+        assert_eq!(apply(Op::Mod, d(-10.0), c(50.0), c(0.0), c(0.0)).du, 1.0);
     }
 
     #[test]
     fn derivatives_of_unary_functions() {
-        let r = apply(Op::Sin, d(0.3), c(0.0), c(0.0));
+        let r = apply(Op::Sin, d(0.3), c(0.0), c(0.0), c(0.0));
         assert!((r.du - 0.3f64.cos()).abs() < 1e-15);
-        let r = apply(Op::Log, d(2.0), c(0.0), c(0.0));
+        let r = apply(Op::Log, d(2.0), c(0.0), c(0.0), c(0.0));
         assert_eq!(r.du, 0.5);
-        assert_eq!(apply(Op::Floor, d(2.5), c(0.0), c(0.0)).du, 0.0);
+        assert_eq!(apply(Op::Floor, d(2.5), c(0.0), c(0.0), c(0.0)).du, 0.0);
     }
 
     #[test]
     fn smoothstep_partials_match_finite_differences() {
         let h = 1e-6;
-        let f = |e0: f64, e1: f64, x: f64| apply::<f64>(Op::Smoothstep, e0, e1, x);
+        let f = |e0: f64, e1: f64, x: f64| apply::<f64>(Op::Smoothstep, e0, e1, x, 0.0);
         let (e0, e1, x) = (1.0, 3.0, 1.7);
         let r = smoothstep(Dual::input(e0, 1.0, 0.0), c(e1), Dual::input(x, 0.0, 1.0));
         assert!((r.du - (f(e0 + h, e1, x) - f(e0 - h, e1, x)) / (2.0 * h)).abs() < 1e-6);
@@ -383,7 +431,7 @@ mod tests {
 
     #[test]
     fn select_takes_the_chosen_branch_with_its_derivative() {
-        let r = apply(Op::Select, c(1.0), d(2.0), c(f64::NAN));
+        let r = apply(Op::Select, c(1.0), d(2.0), c(f64::NAN), c(0.0));
         assert_eq!((r.value, r.du), (2.0, 1.0));
     }
 }

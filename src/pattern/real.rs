@@ -1,6 +1,10 @@
 //! The float type a program is evaluated in. `f64` always serves; `f32` serves programs that do
 //! not read `t` (see `Program::single_precision`), with twice the lanes per SIMD register.
 //!
+//! Programs that call `perlin`, `cells` or `fbm` run in `f64` too: their slopes change many
+//! times per unit, so the independent `f32` roundings of two of their arguments show in the
+//! gradient more than any one shift of the inputs would.
+//!
 //! Why `f32` is accurate enough there: a program's inputs (u, v, the point and its partials) are
 //! `f32` already, so its `f64` result is the exact result at inputs carrying up to half an `f32`
 //! ulp of error. Each `f32` operation adds a relative error of the same size to its own result

@@ -30,6 +30,9 @@ pub const BUILTINS: &[(&str, &str)] = &[
     ("bricks", include_str!("../../patterns/bricks.pat")),
     ("hexagons", include_str!("../../patterns/hexagons.pat")),
     ("bumps", include_str!("../../patterns/bumps.pat")),
+    ("stucco", include_str!("../../patterns/stucco.pat")),
+    ("cobbles", include_str!("../../patterns/cobbles.pat")),
+    ("bark", include_str!("../../patterns/bark.pat")),
 ];
 
 /// Source of the shipped pattern `name` (e.g. `"dimples"`).

@@ -50,6 +50,9 @@ pub const PRESET_NAMES: &[&str] = &[
     "image-to-triangle",
     "textured-sphere",
     "textured-spheres",
+    "plane-stucco",
+    "plane-cobbles",
+    "cone-bark",
 ];
 
 /// The built-in scene of that name, as a scene file (so it can be printed and edited).
@@ -155,6 +158,9 @@ const BUMP_PATTERNS: &[&str] = &[
     "dots-and-dimples",
     "dimples",
     "squares",
+    "stucco",
+    "cobbles",
+    "bark",
 ];
 
 fn pattern_binding(pattern: &str) -> BindingFile {
