@@ -87,6 +87,7 @@ fn main() {
             scene_text: &text,
             recipe: &recipe,
             frame: None,
+            sweep: None,
         };
         let timing = time_png_stills(&request, &out, runs());
         let ratio = timing.median.as_secs_f64() / whole.median.as_secs_f64();

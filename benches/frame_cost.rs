@@ -61,6 +61,7 @@ fn stills(n: usize, samples: u32, contrast: Option<f32>) {
         scene_text: &text,
         recipe: &recipe,
         frame: None,
+        sweep: None,
     };
     let out = dir.join("still.png");
     let timing = time_png_stills(&request, &out, n);

@@ -86,6 +86,7 @@ fn main() {
             scene_text: &text,
             recipe,
             frame: None,
+            sweep: None,
         };
         let out = dir.join("ours.png");
         write_still(&request, &out, StillFormat::Png, &mut |_| {}, &|| None).expect("still");

@@ -20,6 +20,7 @@ pub mod shadow;
 mod simd;
 pub mod still;
 pub mod surface;
+pub mod sweep;
 pub mod term;
 pub mod texture;
 pub mod tui;

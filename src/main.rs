@@ -29,6 +29,9 @@ enum Command {
     Bake(commands::bake::BakeArgs),
     /// Render every built-in scene to a still and a contact sheet of them all.
     Gallery(commands::gallery::GalleryArgs),
+    /// Render a scene at every combination of values of its settings, with a labelled contact
+    /// sheet and an index.
+    Sweep(commands::sweep::SweepArgs),
     /// Make a contact sheet of the stills in a directory (after shards), naming missing frames.
     Sheet(commands::sheet::SheetArgs),
     /// Check pattern files, scene files and images without rendering.
@@ -115,6 +118,7 @@ fn run(cli: Cli) -> Result<(), Error> {
         Some(Command::Check(args)) => commands::check::run(args),
         Some(Command::Patterns(args)) => commands::patterns::run(args),
         Some(Command::Gallery(args)) => commands::gallery::run(args),
+        Some(Command::Sweep(args)) => commands::sweep::run(args),
         Some(Command::Sheet(args)) => commands::sheet::run(args),
         Some(Command::View(args)) => commands::view::run(args),
         Some(Command::Completions(args)) => commands::completions::run(args, &mut Cli::command()),

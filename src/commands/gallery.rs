@@ -3,6 +3,7 @@
 
 use super::interrupt::Interrupt;
 use super::progress::RenderProgress;
+use super::shard::{Shard, parse_shard};
 use bumpwork::Error;
 use bumpwork::export::{
     ContactSheet, SheetLayout, SheetPicture, StillFormat, StillRequest, check_destination,
@@ -41,14 +42,18 @@ pub struct GalleryArgs {
     /// scenes that have it, and one no scene has is an error.
     #[arg(long = "set", value_name = "KEY=VALUE", value_parser = Override::parse)]
     set: Vec<Override>,
+    /// Render only shard K of N of the scenes (K from 1): scenes K−1, K−1+N, … in gallery
+    /// order, and no contact sheet; `bumpwork sheet DIR` makes it once every shard has run.
+    #[arg(long, value_name = "K/N", value_parser = parse_shard)]
+    shard: Option<Shard>,
 }
 
 /// The gallery's directory, made if missing; anything else of that name is refused.
-fn make_directory(directory: &Path) -> Result<(), Error> {
+pub(super) fn make_directory(directory: &Path) -> Result<(), Error> {
     if std::fs::metadata(directory).is_ok_and(|m| !m.is_dir()) {
         return Err(Error::write(
             directory,
-            "it exists and is not a directory; -o names the directory to write the gallery into",
+            "it exists and is not a directory; -o names the directory to write into",
         ));
     }
     std::fs::create_dir_all(directory)
@@ -58,6 +63,9 @@ fn make_directory(directory: &Path) -> Result<(), Error> {
 pub fn run(args: GalleryArgs) -> Result<(), Error> {
     let names = scene_names(&args.scenes)?;
     check_settings(&names, &args.set)?;
+    if let Some(shard) = args.shard.filter(|shard| !shard.is_whole()) {
+        return run_shard(&args, &names, shard);
+    }
     let layout = SheetLayout {
         thumbnail: args.thumbnail,
         columns: args.columns,
@@ -75,7 +83,8 @@ pub fn run(args: GalleryArgs) -> Result<(), Error> {
     for (i, name) in names.iter().enumerate() {
         let path = args.output.join(format!("{name}.png"));
         let mut report = |f: f64| progress.update((i as f64 + f) / names.len() as f64);
-        render_scene(name, &args, &path, &mut report, &interrupt)?;
+        let place = (i as u64, names.len() as u64);
+        render_scene(name, &args, (&path, place), &mut report, &interrupt)?;
         let (width, height, rgb) = read_png_rgb8(&path)?;
         let picture = SheetPicture {
             label: name.clone(),
@@ -138,10 +147,41 @@ fn scene_names(asked: &[String]) -> Result<Vec<String>, Error> {
         .collect()
 }
 
+/// `--shard K/N`: this shard's scenes, each still keeping its place in the gallery for `sheet`.
+fn run_shard(args: &GalleryArgs, names: &[String], shard: Shard) -> Result<(), Error> {
+    make_directory(&args.output)?;
+    let mine: Vec<(usize, &String)> = (names.iter().enumerate())
+        .filter(|&(i, _)| shard.takes(i as u64))
+        .collect();
+    for (_, name) in &mine {
+        check_destination(&args.output.join(format!("{name}.png")))?;
+    }
+    let interrupt = Interrupt::watch();
+    let mut progress = RenderProgress::new("gallery");
+    for (done, &(i, name)) in mine.iter().enumerate() {
+        let path = args.output.join(format!("{name}.png"));
+        let mut report = |f: f64| progress.update((done as f64 + f) / mine.len() as f64);
+        let place = (i as u64, names.len() as u64);
+        render_scene(name, args, (&path, place), &mut report, &interrupt)?;
+    }
+    progress.finish();
+    let directory = super::sanitized(&args.output.display().to_string());
+    say!(
+        "shard {}/{}: {} of the gallery's {} stills in {directory}; `bumpwork sheet {directory}` \
+         makes the contact sheet once every shard has run",
+        shard.index,
+        shard.count,
+        mine.len(),
+        names.len()
+    );
+    Ok(())
+}
+
+/// Renders scene `name` into `path`, recording its `place` (index, count) in the gallery.
 fn render_scene(
     name: &str,
     args: &GalleryArgs,
-    path: &Path,
+    (path, place): (&Path, (u64, u64)),
     progress: &mut dyn FnMut(f64),
     interrupt: &Interrupt,
 ) -> Result<(), Error> {
@@ -168,7 +208,8 @@ fn render_scene(
         settings,
         scene_text: &scene_text,
         recipe: &recipe,
-        frame: None,
+        frame: Some(place),
+        sweep: None,
     };
     write_still(&request, path, StillFormat::Png, progress, &|| {
         interrupt.received()

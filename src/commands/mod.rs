@@ -21,7 +21,9 @@ pub mod man_page;
 pub mod patterns;
 mod progress;
 pub mod render;
+mod shard;
 pub mod sheet;
+pub mod sweep;
 pub mod view;
 
 /// Largest output side accepted (stills are rendered in bands, so memory does not grow with it).

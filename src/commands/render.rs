@@ -3,6 +3,7 @@
 
 use super::interrupt::Interrupt;
 use super::progress::RenderProgress;
+use super::shard::{Shard, parse_shard};
 use bumpwork::Error;
 use bumpwork::diagnostic::sanitize_lines;
 use bumpwork::export::metadata::{RECIPE, SCENE, read_png_text, text_of};
@@ -167,6 +168,7 @@ fn render_start(
             scene_text: &start.scene_text,
             recipe: &recipe,
             frame: frame.place,
+            sweep: None,
         };
         render_one(&request, path, format, interrupt)?;
     }
@@ -368,17 +370,17 @@ fn refuse_to_overwrite_sources(output: &Path) -> Result<(), Error> {
 }
 
 /// Where a render starts: the scene, its text and source, and the settings before options.
-struct Start {
-    source: String,
-    scene_text: String,
-    scene: Scene,
-    settings: StillSettings,
+pub(super) struct Start {
+    pub source: String,
+    pub scene_text: String,
+    pub scene: Scene,
+    pub settings: StillSettings,
     /// The scene file's `[quality]` settings, for a `--quality` preset to take (none from a
     /// still: its recipe's quality has them already).
-    quality_table: Vec<KnobSetting>,
+    pub quality_table: Vec<KnobSetting>,
 }
 
-fn from_source(name: &str) -> Result<Start, Error> {
+pub(super) fn from_source(name: &str) -> Result<Start, Error> {
     Start::of_source(name, bumpwork::scene::load_source(name)?)
 }
 
@@ -531,7 +533,7 @@ fn frames(args: &RenderArgs, time: f64, output: &Path) -> Result<Vec<Frame>, Err
     }
     let count = count as u64;
     let digits = (count - 1).to_string().len().max(4);
-    let shard = args.shard.unwrap_or(Shard { index: 1, count: 1 });
+    let shard = args.shard.unwrap_or(Shard::WHOLE);
     Ok((0..count)
         .filter(|&i| shard.takes(i))
         .map(|i| Frame {
@@ -540,37 +542,6 @@ fn frames(args: &RenderArgs, time: f64, output: &Path) -> Result<Vec<Frame>, Err
             place: Some((i, count)),
         })
         .collect())
-}
-
-/// Shard `index` of `count` (from 1): a deterministic share of a sequence's frames.
-#[derive(Clone, Copy, Debug, PartialEq)]
-struct Shard {
-    index: u64,
-    count: u64,
-}
-
-impl Shard {
-    /// Whether frame `frame` (from 0) is this shard's: every `count`-th from `index` − 1.
-    fn takes(self, frame: u64) -> bool {
-        frame % self.count == self.index - 1
-    }
-}
-
-fn parse_shard(text: &str) -> Result<Shard, String> {
-    let expected = || {
-        format!(
-            "expected K/N, shard K of N with 1 ≤ K ≤ N ≤ {MAX_FRAMES} (K counted from 1), got '{}'",
-            bumpwork::diagnostic::shown_input(text)
-        )
-    };
-    let (k, n) = text.split_once('/').ok_or_else(expected)?;
-    let number = |s: &str| s.trim().parse::<u64>().ok();
-    match (number(k), number(n)) {
-        (Some(index), Some(count)) if 1 <= index && index <= count && count <= MAX_FRAMES => {
-            Ok(Shard { index, count })
-        }
-        _ => Err(expected()),
-    }
 }
 
 /// `out.png` → `out-0007.png`.
@@ -585,7 +556,7 @@ fn numbered(output: &Path, index: u64, digits: usize) -> PathBuf {
     output.with_file_name(name)
 }
 
-fn render_one(
+pub(super) fn render_one(
     request: &StillRequest,
     path: &Path,
     format: StillFormat,

@@ -159,12 +159,13 @@ fn draw_label(sheet: &mut Pixmap, label: &str, at: (u32, u32), width: u32) {
     }
 }
 
-/// `label` in lines of at most `width` pixels at `LABEL_SCALE`, broken after hyphens; a line the
-/// words still do not fit (past `LABEL_LINES`, or one long word) is cut, ending in `..`.
+/// `label` in lines of at most `width` pixels at `LABEL_SCALE`, broken after hyphens and spaces;
+/// a line the words still do not fit (past `LABEL_LINES`, or one long word) is cut, ending in
+/// `..`.
 fn label_lines(label: &str, width: u32) -> Vec<String> {
-    let fits = |text: &str| text_width(text, LABEL_SCALE) <= width;
+    let fits = |text: &str| text_width(text.trim_end(), LABEL_SCALE) <= width;
     let mut lines: Vec<String> = vec![String::new()];
-    for word in label.split_inclusive('-') {
+    for word in label.split_inclusive(['-', ' ']) {
         let last = lines.last_mut().expect("one line at least");
         if fits(&format!("{last}{word}")) || last.is_empty() {
             last.push_str(word);
@@ -175,6 +176,9 @@ fn label_lines(label: &str, width: u32) -> Vec<String> {
     if lines.len() > LABEL_LINES as usize {
         let rest = lines.split_off(LABEL_LINES as usize - 1).concat();
         lines.push(rest);
+    }
+    for line in &mut lines {
+        line.truncate(line.trim_end().len());
     }
     for line in lines.iter_mut().filter(|line| !fits(line)) {
         while !line.is_empty() && !fits(&format!("{line}..")) {
@@ -200,6 +204,13 @@ mod tests {
             lines.iter().all(|l| text_width(l, LABEL_SCALE) <= width),
             "{lines:?}"
         );
+        assert_eq!(
+            label_lines("period=10 strength=2", width),
+            ["period=10 strength=2"]
+        );
+        let values = label_lines("period=10.5 strength=0.25 octaves=4", width);
+        assert_eq!(values[0], "period=10.5");
+        assert!(values[1].starts_with("strength=0.25 oct"), "{values:?}");
         let long = "a-very-long-name-that-goes-on-and-on-past-two-lines-of-text";
         let lines = label_lines(long, width);
         assert_eq!(lines.len(), 2, "{lines:?}");

@@ -12,6 +12,8 @@ pub const SCENE: &str = "bumpwork-scene";
 pub const RECIPE: &str = "bumpwork-recipe";
 /// A sequence frame's place in it, `INDEX/COUNT` (index from 0).
 pub const FRAME: &str = "bumpwork-frame";
+/// A sweep's still: the values it was rendered with, one `KEY=VALUE` a line.
+pub const SWEEP: &str = "bumpwork-sweep";
 
 /// The most text one chunk may hold once inflated: a scene file's limit, since the scene and
 /// recipe chunks are scene-file text.

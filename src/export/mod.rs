@@ -16,7 +16,7 @@ pub use map_png::{
     BAKE_RECIPE, HEIGHT_RANGE, MapPng, NORMAL_CONVENTION, height_levels, write_map_png,
 };
 pub use metadata::read_png_text;
-pub use output_file::{OutputFile, STANDARD_OUTPUT, check_destination};
+pub use output_file::{OutputFile, STANDARD_OUTPUT, check_destination, write_whole};
 pub use png_file::{PngStill, read_png_rgb8, write_png, write_png_with_text};
 pub use pov_scene::{BAKE_SIDE, pov, rgb, write_pov, write_pov_header};
 pub use ppm_file::PpmStill;

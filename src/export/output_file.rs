@@ -61,6 +61,18 @@ enum Target {
     Special(PathBuf),
 }
 
+/// Writes `bytes` to `destination` whole, as a still is: the old file or the new one, never
+/// part of one.
+pub fn write_whole(destination: &Path, bytes: &[u8]) -> Result<(), Error> {
+    use std::io::Write;
+    let (file, mut handle) = OutputFile::create(destination)?;
+    handle
+        .write_all(bytes)
+        .map_err(|e| Error::write(destination, io_words(&e)))?;
+    drop(handle);
+    file.commit()
+}
+
 /// Refuses, before any work is done, a destination the still could not be written to.
 pub fn check_destination(destination: &Path) -> Result<(), Error> {
     classify(destination).map(|_| ())

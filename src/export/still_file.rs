@@ -1,7 +1,7 @@
 //! A still rendered straight into a file: bands streamed into a PNG (carrying its recipe) or a
 //! PPM, so memory is bounded by the band budget whatever the size.
 
-use super::metadata::{FRAME, RECIPE, SCENE, SOFTWARE};
+use super::metadata::{FRAME, RECIPE, SCENE, SOFTWARE, SWEEP};
 use super::{PngStill, PpmStill};
 use crate::Error;
 use crate::raster::{FrameStats, PreparedScene, Viewport};
@@ -35,6 +35,9 @@ pub struct StillRequest<'a> {
     /// For a frame of a sequence: its index (from 0) and the sequence's length, kept in the
     /// PNG's `bumpwork-frame` text so `bumpwork sheet` can tell which frames are missing.
     pub frame: Option<(u64, u64)>,
+    /// For a still of a sweep: its values (`sweep::values_text`), kept in the PNG's
+    /// `bumpwork-sweep` text for the contact sheet's labels and the sweep's index.
+    pub sweep: Option<&'a str>,
 }
 
 /// Renders `request` into `path`. `progress` hears the fraction done; `interrupted` is asked between
@@ -83,6 +86,9 @@ pub fn write_still(
             ];
             if let Some((index, count)) = request.frame {
                 texts.push((FRAME, format!("{index}/{count}")));
+            }
+            if let Some(values) = request.sweep {
+                texts.push((SWEEP, values.to_string()));
             }
             let mut png = PngStill::create(path, settings.size, &texts)?;
             let stats = stream(&mut png)?;

@@ -16,7 +16,7 @@ pub use bands::{
 };
 pub use recipe::{
     FileHash, MAX_SIDE, MAX_TIME_SECONDS, ObjectState, Recipe, RecipeCamera, StillSettings,
-    source_directory,
+    recipe_hash, source_directory,
 };
 pub use refine_rule::RefineRule;
 pub use samples::{RefiningOrder, ResolveFilter, Supersampling};

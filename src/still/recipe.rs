@@ -531,6 +531,15 @@ fn hash_file(path: &Path) -> std::io::Result<u64> {
     }
 }
 
+/// A recipe's text by its hash, `fnv1a64:` and 16 hex digits: stills with the same hash were
+/// made from the same scene, settings and file contents.
+pub fn recipe_hash(recipe_text: &str) -> String {
+    format!(
+        "fnv1a64:{}",
+        hex(fnv1a64_from(FNV_OFFSET, recipe_text.as_bytes()))
+    )
+}
+
 const FNV_OFFSET: u64 = 0xcbf2_9ce4_8422_2325;
 
 /// FNV-1a, 64 bits, continued from `hash` (`FNV_OFFSET` to start) over more bytes: stable across

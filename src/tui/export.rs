@@ -125,6 +125,7 @@ fn export(order: ExportOrder, cancel: &AtomicBool) -> Result<(), Error> {
         scene_text: &scene_text,
         recipe: &recipe,
         frame: None,
+        sweep: None,
     };
     let interrupted = || cancel.load(Ordering::Relaxed).then_some(0);
     write_still(

@@ -54,6 +54,7 @@ mod shards;
 mod source_layout;
 mod ssh_session;
 mod still_bands;
+mod sweeps;
 mod term_encode;
 mod term_env;
 mod term_writer;

@@ -17,7 +17,7 @@ fn sequence_args<'a>(output: &'a str, extra: &[&'a str]) -> Vec<&'a str> {
 }
 
 /// Every file in `dir` by name, with its bytes.
-fn files(dir: &Path) -> BTreeMap<String, Vec<u8>> {
+pub fn files(dir: &Path) -> BTreeMap<String, Vec<u8>> {
     std::fs::read_dir(dir)
         .unwrap()
         .map(|e| e.unwrap())
