@@ -6,12 +6,14 @@ use super::progress::RenderProgress;
 use super::shard::{Shard, parse_shard};
 use bumpwork::Error;
 use bumpwork::diagnostic::sanitize_lines;
-use bumpwork::export::metadata::{RECIPE, SCENE, read_png_text, text_of};
+use bumpwork::export::metadata::{ANIMATION, RECIPE, SCENE, SOFTWARE, read_png_text, text_of};
 use bumpwork::export::{
-    STANDARD_OUTPUT, StillFormat, StillRequest, check_destination, write_still,
+    AnimationFile, AnimationFormat, GIF_MAX_FPS, STANDARD_OUTPUT, StillFormat, StillRequest,
+    check_destination, render_rows, write_still,
 };
 use bumpwork::overrides::{Override, apply_to_quality, apply_to_scene};
 use bumpwork::quality::Quality;
+use bumpwork::raster::PreparedScene;
 use bumpwork::scene::Camera;
 use bumpwork::scene::{KnobSetting, Scene};
 use bumpwork::shade::ShaderMode;
@@ -155,8 +157,19 @@ fn render_start(
         eprintln!("bumpwork: this shard has none of the sequence's frames; nothing to render");
         return Ok(());
     }
-    let existing = existing_files(&frames, args.no_clobber)?;
     let prepared = settings.prepare(scene, &camera)?;
+    if let Some(animation) = format.animation() {
+        let destination = (output, animation);
+        return render_animation(
+            args,
+            start,
+            &prepared,
+            (&frames, settings),
+            destination,
+            interrupt,
+        );
+    }
+    let existing = existing_files(&frames, args.no_clobber)?;
     for frame in &frames {
         let (time, path) = (frame.time, frame.path.as_path());
         let settings = StillSettings { time, ..settings };
@@ -177,6 +190,76 @@ fn render_start(
             "bumpwork: {existing} of the {} frames replaced files of the same names \
              (--no-clobber refuses to)",
             frames.len()
+        );
+    }
+    Ok(())
+}
+
+/// The frames of `frames` as one animation file: each rendered into memory and added as it is
+/// finished, the first frame's recipe and the sequence's times in the file.
+fn render_animation(
+    args: &RenderArgs,
+    start: &Start,
+    prepared: &PreparedScene,
+    (frames, settings): (&[Frame], StillSettings),
+    (output, format): (&Path, AnimationFormat),
+    interrupt: &Interrupt,
+) -> Result<(), Error> {
+    if args.no_clobber && output.symlink_metadata().is_ok() {
+        return Err(Error::InvalidArgument(format!(
+            "--no-clobber: {} exists; nothing was rendered",
+            super::sanitized(&output.display().to_string())
+        )));
+    }
+    let fps = args.fps.expect("checked: an animation has a time range");
+    // The scene was prepared with the options' camera.
+    let camera = &prepared.scene.camera;
+    let recipe_of = |time| {
+        let settings = StillSettings { time, ..settings };
+        (
+            Recipe::capture(&start.source, &prepared.scene, camera, &settings),
+            settings,
+        )
+    };
+    let (first, _) = recipe_of(frames[0].time);
+    let (time_start, time_end) = args.time_range.expect("checked");
+    let texts = [
+        (SOFTWARE, first.program.clone()),
+        (SCENE, start.scene_text.clone()),
+        (RECIPE, first.to_toml()),
+        (
+            ANIMATION,
+            format!(
+                "time-range = {time_start}..{time_end}, fps = {fps}, frames = {}",
+                frames.len()
+            ),
+        ),
+    ];
+    let shape = (settings.size, frames.len() as u32, fps);
+    let mut file = AnimationFile::create(output, format, shape, &texts)?;
+    let mut progress = RenderProgress::new(&output.display().to_string());
+    let mut flattened = 0;
+    for (i, frame) in frames.iter().enumerate() {
+        let (recipe, settings) = recipe_of(frame.time);
+        let request = StillRequest {
+            prepared,
+            camera,
+            settings,
+            scene_text: &start.scene_text,
+            recipe: &recipe,
+            frame: frame.place,
+            sweep: None,
+        };
+        let mut report = |f: f64| progress.update((i as f64 + f) / frames.len() as f64);
+        let (stats, rgb) = render_rows(&request, output, &mut report, &|| interrupt.received())?;
+        flattened += stats.flattened;
+        file.add_frame(&rgb)?;
+    }
+    progress.finish();
+    file.finish()?;
+    if flattened > 0 {
+        eprintln!(
+            "bumpwork: warning: {flattened} fragments had no finite bump or colour value and were drawn flat"
         );
     }
     Ok(())
@@ -303,6 +386,8 @@ fn output_format(output: &Path, asked: Option<StillFormat>) -> Result<StillForma
         Some("png") => Some(StillFormat::Png),
         Some("ppm") => Some(StillFormat::Ppm),
         Some("pov") => Some(StillFormat::Pov),
+        Some("apng") => Some(StillFormat::Apng),
+        Some("gif") => Some(StillFormat::Gif),
         Some("jpg" | "jpeg") => {
             return Err(Error::InvalidArgument(
                 "stills are not written as JPEG: it would lose the picture's precision and its \
@@ -329,11 +414,16 @@ fn format_name(format: StillFormat) -> &'static str {
         StillFormat::Png => "png",
         StillFormat::Ppm => "ppm",
         StillFormat::Pov => "pov",
+        StillFormat::Apng => "apng",
+        StillFormat::Gif => "gif",
     }
 }
 
 /// Every file the render would write can be written, before any work is done.
 fn check_outputs(args: &RenderArgs, output: &Path, format: StillFormat) -> Result<(), Error> {
+    if let Some(animation) = format.animation() {
+        return check_animation_output(args, output, animation);
+    }
     if output.as_os_str() == STANDARD_OUTPUT {
         if args.time_range.is_some() {
             return Err(Error::InvalidArgument(
@@ -352,6 +442,38 @@ fn check_outputs(args: &RenderArgs, output: &Path, format: StillFormat) -> Resul
         check_destination(&frame.path)?;
     }
     Ok(())
+}
+
+/// An animation file needs a time range to fill it, is one file (so no shards), and a GIF's
+/// frame times are whole hundredths.
+fn check_animation_output(
+    args: &RenderArgs,
+    output: &Path,
+    format: AnimationFormat,
+) -> Result<(), Error> {
+    let shown = super::sanitized(&output.display().to_string());
+    if args.time_range.is_none() {
+        return Err(Error::InvalidArgument(format!(
+            "-o {shown} is an animation: give --time-range START..END and --fps (or name a .png \
+             for a still)"
+        )));
+    }
+    if args.shard.is_some() {
+        return Err(Error::InvalidArgument(format!(
+            "-o {shown} is one file, which shards cannot split: render numbered .png frames \
+             with --shard instead"
+        )));
+    }
+    if format == AnimationFormat::Gif && args.fps.is_some_and(|fps| fps > GIF_MAX_FPS) {
+        return Err(Error::InvalidArgument(format!(
+            "a GIF shows at most {GIF_MAX_FPS} frames a second (its frame times are whole \
+             hundredths, and browsers slow shorter ones); lower --fps or write an .apng"
+        )));
+    }
+    if output.as_os_str() != STANDARD_OUTPUT {
+        refuse_to_overwrite_sources(output)?;
+    }
+    check_destination(output)
 }
 
 /// Pattern and scene files are the user's work: a still never replaces one, whatever `-o` says.

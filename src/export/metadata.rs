@@ -12,6 +12,8 @@ pub const SCENE: &str = "bumpwork-scene";
 pub const RECIPE: &str = "bumpwork-recipe";
 /// A sequence frame's place in it, `INDEX/COUNT` (index from 0).
 pub const FRAME: &str = "bumpwork-frame";
+/// An animation's times: `time-range = START..END, fps = FPS, frames = COUNT`.
+pub const ANIMATION: &str = "bumpwork-animation";
 /// A sweep's still: the values it was rendered with, one `KEY=VALUE` a line.
 pub const SWEEP: &str = "bumpwork-sweep";
 

@@ -6,6 +6,7 @@
 #[allow(dead_code)]
 mod fuzz_entry;
 
+mod animations;
 mod bake_maps;
 mod bench_command;
 mod bump_shading;
