@@ -1,6 +1,8 @@
 //! Fragments per second of the pattern interpreter against the same patterns hand-written in
 //! Rust, over the same SoA batches, with derivatives (height + gradient) and without (height
-//! only). Prints medians over several runs with their min..max spread.
+//! only); then the noise patterns (gradient, cellular and fractal noise) against the dimples,
+//! both interpreted, in the same runs. Prints medians over several runs with their min..max
+//! spread.
 //!
 //! `cargo bench --bench pattern_eval`
 
@@ -142,5 +144,35 @@ fn main() {
         );
         row(case.name, "value", interpreted, hand_written);
         assert_same(case.name, heights.clone(), native_heights.clone());
+    }
+    noise_patterns(&inputs);
+}
+
+/// The shipped noise patterns' fragments per second with gradients, each against the dimples
+/// measured in the same runs: what a natural texture costs over the lecture's pattern.
+fn noise_patterns(inputs: &Inputs) {
+    let compile = |name| Pattern::compile(builtin(name).expect("shipped"), name).expect("compiles");
+    let dimples = compile("dimples");
+    let mut samples = vec![BumpSample::default(); BATCH];
+    let mut dimple_samples = samples.clone();
+    println!();
+    println!(
+        "{:<9} {:<9} {:>26} {:>26} {:>9}",
+        "pattern", "mode", "noise Mfrag/s", "dimples Mfrag/s", "ratio"
+    );
+    for name in ["stucco", "cobbles", "bark"] {
+        let pattern = compile(name);
+        let (mut scratch, mut dimple_scratch) = (pattern.scratch(), dimples.scratch());
+        let [noise, dimple] = measure(
+            || {
+                pattern.eval_bump(inputs, &[], &mut scratch, &mut samples);
+                black_box(&samples);
+            },
+            || {
+                dimples.eval_bump(inputs, &[], &mut dimple_scratch, &mut dimple_samples);
+                black_box(&dimple_samples);
+            },
+        );
+        row(name, "gradient", noise, dimple);
     }
 }

@@ -8,7 +8,7 @@ const TOKENS: &[&str] = &[
     "height", "slope", "color", "=", "let", "param", "in", "..", "if", "then", "else", "and", "or",
     "not", "(", ")", ",", "+", "-", "*", "/", "^", "%", "<", "<=", "==", "!=", ">", "u", "v", "x",
     "t", "pi", "a", "b", "1", "0", "2.5", "1e9", "sin", "sqrt", "noise", "rgb", "mix", "clamp",
-    "length", "#", "\n", "\u{1b}", "é", "true",
+    "length", "perlin", "cells", "fbm", "#", "\n", "\u{1b}", "é", "true",
 ];
 
 fn tokens(max: usize) -> impl Strategy<Value = String> {
@@ -38,6 +38,12 @@ const OPERANDS: &[&str] = &[
     "log(x)",
     "noise(u, v)",
     "noise(x, y, z)",
+    "perlin(u, v)",
+    "perlin(x, y, t)",
+    "cells(u / 9, v)",
+    "cells(x, y, 1e30)",
+    "fbm(u, v, 1e9)",
+    "fbm(x, y, z, v)",
     "(u - 200)",
     "atan2(v, u)",
     "floor(u / 7)",
