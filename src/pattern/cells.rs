@@ -30,10 +30,6 @@ pub fn feature_point<const D: usize>(cell: [i64; D]) -> [f64; D] {
     })
 }
 
-/// Reach of the search in cells. The point's own cell holds a feature point within √D < 2,
-/// and every cell three or more away is at least 2 from the point, so none there is nearer.
-const REACH: i64 = 2;
-
 fn nearest<const D: usize>(point: [f64; D]) -> Graded<D> {
     if point.iter().any(|p| p.is_nan()) {
         return Graded {
@@ -43,29 +39,67 @@ fn nearest<const D: usize>(point: [f64; D]) -> Graded<D> {
     }
     let split: [(i64, f64); D] = point.map(split);
     let own: [i64; D] = split.map(|(cell, _)| cell);
-    let mut best = (f64::INFINITY, own);
-    let side = (2 * REACH + 1) as usize;
-    for index in 0..side.pow(D as u32) {
-        let offset: [i64; D] =
-            std::array::from_fn(|k| (index / side.pow(k as u32) % side) as i64 - REACH);
-        // The cell's nearest possible point, before its feature point is worked out.
-        let bound: f64 = (0..D).map(|k| gap(offset[k], split[k].1).powi(2)).sum();
-        if bound >= best.0 {
-            continue;
-        }
-        let cell: [i64; D] = std::array::from_fn(|k| own[k].saturating_add(offset[k]));
-        let distance2 = squared_distance(point, feature_point(cell));
-        if distance2 < best.0 {
-            best = (distance2, cell);
-        }
+    let fraction: [f64; D] = split.map(|(_, fraction)| fraction);
+    let mut best = Nearest {
+        distance2: f64::INFINITY,
+        cell: own,
+    };
+    // The point's own cell holds a feature point within √D < 2 of it, so no cell three or more
+    // away can be nearer; the cells two away only where the nearest of the 3ⁿ around is
+    // farther than their wall.
+    search(&mut best, point, own, fraction, 1);
+    let wall = 1.0 + fraction.iter().map(|f| f.min(1.0 - f)).fold(1.0, f64::min);
+    if best.distance2 > wall * wall {
+        search(&mut best, point, own, fraction, 2);
     }
-    let feature = feature_point(best.1);
-    let value = best.0.sqrt();
+    let feature = feature_point(best.cell);
+    let value = best.distance2.sqrt();
     let gradient = std::array::from_fn(|k| match value > 0.0 {
         true => (point[k] - feature[k]) / value,
         false => 0.0,
     });
     Graded { value, gradient }
+}
+
+/// The nearest feature point found so far: its squared distance and its cell.
+struct Nearest<const D: usize> {
+    distance2: f64,
+    cell: [i64; D],
+}
+
+/// Visits every cell up to `reach` cells from `own` along each axis whose nearest possible
+/// point could beat `best` (a cell already visited cannot).
+fn search<const D: usize>(
+    best: &mut Nearest<D>,
+    point: [f64; D],
+    own: [i64; D],
+    fraction: [f64; D],
+    reach: i64,
+) {
+    let mut offset = [-reach; D];
+    loop {
+        let bound: f64 = (0..D).map(|k| gap(offset[k], fraction[k]).powi(2)).sum();
+        if bound < best.distance2 {
+            let cell: [i64; D] = std::array::from_fn(|k| own[k].saturating_add(offset[k]));
+            let distance2 = squared_distance(point, feature_point(cell));
+            if distance2 < best.distance2 {
+                *best = Nearest { distance2, cell };
+            }
+        }
+        // The next offset, odometer fashion; done after the last.
+        let mut k = 0;
+        loop {
+            if k == D {
+                return;
+            }
+            offset[k] += 1;
+            if offset[k] <= reach {
+                break;
+            }
+            offset[k] = -reach;
+            k += 1;
+        }
+    }
 }
 
 /// Distance along one axis from a point at `fraction` of its cell to the cell `offset` away.

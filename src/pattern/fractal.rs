@@ -3,7 +3,7 @@
 //! about −1..1 whatever the octave count. The gradient is the same sum of the octaves' exact
 //! gradients.
 
-use super::perlin::{Graded, perlin3};
+use super::perlin::{Graded, perlin2, perlin3};
 
 /// The most octaves summed: the 17th would add under 2⁻¹⁶ of the total, below what an 8-bit
 /// height map or a bump can show.
@@ -12,22 +12,34 @@ pub const MAX_OCTAVES: f64 = 16.0;
 /// fBm at (x, y, z) over `octaves` octaves (whole; a fraction is dropped, more than
 /// `MAX_OCTAVES` count as that many); fewer than one, or NaN, is no value (NaN).
 pub fn fbm3(point: [f64; 3], octaves: f64) -> Graded<3> {
+    fbm(point, octaves, |[x, y, z]| perlin3(x, y, z))
+}
+
+/// fBm at (x, y): that at z = 0.
+pub fn fbm2(x: f64, y: f64, octaves: f64) -> Graded<2> {
+    fbm([x, y], octaves, |[x, y]| perlin2(x, y))
+}
+
+fn fbm<const D: usize>(
+    point: [f64; D],
+    octaves: f64,
+    noise: impl Fn([f64; D]) -> Graded<D>,
+) -> Graded<D> {
     // NaN too: `min` below would take MAX_OCTAVES over it.
     if octaves.is_nan() || octaves < 1.0 {
         return Graded {
             value: f64::NAN,
-            gradient: [f64::NAN; 3],
+            gradient: [f64::NAN; D],
         };
     }
     let count = octaves.floor().min(MAX_OCTAVES);
     let mut sum = Graded {
         value: 0.0,
-        gradient: [0.0; 3],
+        gradient: [0.0; D],
     };
     let (mut frequency, mut amplitude, mut total) = (1.0, 1.0, 0.0);
     for _ in 0..count as u32 {
-        let [x, y, z] = point.map(|p| p * frequency);
-        let octave = perlin3(x, y, z);
+        let octave = noise(point.map(|p| p * frequency));
         sum.value += amplitude * octave.value;
         for (g, o) in sum.gradient.iter_mut().zip(octave.gradient) {
             *g += amplitude * frequency * o;
@@ -39,15 +51,6 @@ pub fn fbm3(point: [f64; 3], octaves: f64) -> Graded<3> {
     Graded {
         value: sum.value / total,
         gradient: sum.gradient.map(|g| g / total),
-    }
-}
-
-/// fBm at (x, y): that at z = 0.
-pub fn fbm2(x: f64, y: f64, octaves: f64) -> Graded<2> {
-    let Graded { value, gradient } = fbm3([x, y, 0.0], octaves);
-    Graded {
-        value,
-        gradient: [gradient[0], gradient[1]],
     }
 }
 

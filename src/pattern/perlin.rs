@@ -29,51 +29,40 @@ pub struct Graded<const D: usize> {
 
 /// Noise at (x, y, z), in about −1..1, with its partials.
 pub fn perlin3(x: f64, y: f64, z: f64) -> Graded<3> {
-    let (ix, fx) = cell(x);
-    let (iy, fy) = cell(y);
-    let (iz, fz) = cell(z);
-    let a = hash(ix) + iy;
-    let b = hash(ix + 1) + iy;
-    let (aa, ab) = (hash(a) + iz, hash(a + 1) + iz);
-    let (ba, bb) = (hash(b) + iz, hash(b + 1) + iz);
-    let corner = |h: usize, dx: f64, dy: f64, dz: f64| dot(hash(h), [fx - dx, fy - dy, fz - dz]);
-    let along_x = |h0: usize, h1: usize, dy: f64, dz: f64| {
-        lerp(
-            fade(fx),
-            0,
-            corner(h0, 0.0, dy, dz),
-            corner(h1, 1.0, dy, dz),
-        )
-    };
-    let near_z = lerp(
-        fade(fy),
-        1,
-        along_x(aa, ba, 0.0, 0.0),
-        along_x(ab, bb, 1.0, 0.0),
-    );
-    let far_z = lerp(
-        fade(fy),
-        1,
-        along_x(aa + 1, ba + 1, 0.0, 1.0),
-        along_x(ab + 1, bb + 1, 1.0, 1.0),
-    );
-    lerp(fade(fz), 2, near_z, far_z)
+    let lattice = [cell(x), cell(y), cell(z)];
+    let near = layer(lattice, 0);
+    let far = layer(lattice, 1);
+    lerp(fade(lattice[2].1), 2, near, far)
 }
 
-/// Noise at (x, y) (that at z = 0), with its partials.
+/// Noise at (x, y), with its partials: that at z = 0, where the far layer's weight and slope
+/// are both 0, so only the near layer's four corners are needed.
 pub fn perlin2(x: f64, y: f64) -> Graded<2> {
-    let Graded { value, gradient } = perlin3(x, y, 0.0);
+    let Graded { value, gradient } = layer([cell(x), cell(y), (0, 0.0)], 0);
     Graded {
         value,
         gradient: [gradient[0], gradient[1]],
     }
 }
 
+/// The four corners of the lattice cell at z offset `dz` (0 or 1), blended along x and y.
+fn layer(lattice: [(usize, f64); 3], dz: usize) -> Graded<3> {
+    let [(ix, fx), (iy, fy), (iz, fz)] = lattice;
+    let (a, b) = (hash(ix) + iy, hash(ix + 1) + iy);
+    let (aa, ab) = (hash(a) + iz + dz, hash(a + 1) + iz + dz);
+    let (ba, bb) = (hash(b) + iz + dz, hash(b + 1) + iz + dz);
+    let z = fz - dz as f64;
+    let corner = |h: usize, dx: f64, dy: f64| dot(hash(h), [fx - dx, fy - dy, z]);
+    let along_x =
+        |h0: usize, h1: usize, dy: f64| lerp(fade(fx), 0, corner(h0, 0.0, dy), corner(h1, 1.0, dy));
+    lerp(fade(fy), 1, along_x(aa, ba, 0.0), along_x(ab, bb, 1.0))
+}
+
 /// The lattice cell, wrapped to the permutation's 256, and the position inside it. Java's
 /// `(int)` saturates where `as i64` does not, so the two agree for |x| < 2³¹ (and both give a
 /// finite value everywhere else).
 fn cell(x: f64) -> (usize, f64) {
-    let floor = x.floor();
+    let floor = super::ops::floor(x);
     ((floor as i64 & 255) as usize, x - floor)
 }
 
@@ -81,21 +70,37 @@ fn hash(i: usize) -> usize {
     usize::from(PERMUTATION[i & 255])
 }
 
+/// Perlin's sixteen gradients, by the low four bits of a hash: the axes of his `u` and `v`
+/// and their signs (`grad` in his code), as a table so no branch depends on the hash.
+const GRADIENTS: [(usize, usize, f64, f64); 16] = {
+    let mut table = [(0, 0, 0.0, 0.0); 16];
+    let mut h = 0;
+    while h < 16 {
+        let u_axis = if h < 8 { 0 } else { 1 };
+        let v_axis = if h < 4 {
+            1
+        } else if h == 12 || h == 14 {
+            0
+        } else {
+            2
+        };
+        let u_sign = if h & 1 == 0 { 1.0 } else { -1.0 };
+        let v_sign = if h & 2 == 0 { 1.0 } else { -1.0 };
+        table[h] = (u_axis, v_axis, u_sign, v_sign);
+        h += 1;
+    }
+    table
+};
+
 /// Perlin's `grad`: the dot product of the hashed gradient with the offset from the corner,
 /// with that gradient as its own.
 fn dot(hash: usize, offset: [f64; 3]) -> Graded<3> {
-    let h = hash & 15;
-    let u_axis = if h < 8 { 0 } else { 1 };
-    let v_axis = match h {
-        0..4 => 1,
-        12 | 14 => 0,
-        _ => 2,
-    };
+    let (u_axis, v_axis, u_sign, v_sign) = GRADIENTS[hash & 15];
     let mut gradient = [0.0; 3];
-    gradient[u_axis] = if h & 1 == 0 { 1.0 } else { -1.0 };
-    gradient[v_axis] = if h & 2 == 0 { 1.0 } else { -1.0 };
+    gradient[u_axis] = u_sign;
+    gradient[v_axis] = v_sign;
     Graded {
-        value: gradient[u_axis] * offset[u_axis] + gradient[v_axis] * offset[v_axis],
+        value: u_sign * offset[u_axis] + v_sign * offset[v_axis],
         gradient,
     }
 }
@@ -243,6 +248,7 @@ mod tests {
             let (flat, volume) = (perlin2(x, y), perlin3(x, y, 0.0));
             assert_eq!(flat.value, volume.value);
             assert_eq!(flat.gradient, [volume.gradient[0], volume.gradient[1]]);
+            assert_eq!(flat.value, reference(x, y, 0.0));
         }
         assert_eq!(perlin2(3.0, -7.0).value, 0.0);
         for x in [1e12, -1e15, 3e38, f64::MAX] {
