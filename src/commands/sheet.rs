@@ -206,7 +206,8 @@ fn json_value(value: &str) -> serde_json::Value {
         .map_or_else(|| serde_json::Value::String(value.to_string()), Into::into)
 }
 
-/// The PNG files of `directory` but the sheet itself and hidden files, by name.
+/// The PNG files of `directory` but contact sheets (the one being made, and the default name's)
+/// and hidden files, by name.
 fn stills_in(directory: &Path, sheet: &Path) -> Result<Vec<Found>, Error> {
     let entries = std::fs::read_dir(directory)
         .map_err(|e| Error::read(directory, bumpwork::bounded_read::io_words(&e)))?;
@@ -216,7 +217,8 @@ fn stills_in(directory: &Path, sheet: &Path) -> Result<Vec<Found>, Error> {
         let path = entry.path();
         let name = entry.file_name().to_string_lossy().into_owned();
         let png = name.to_ascii_lowercase().ends_with(".png");
-        if png && !name.starts_with('.') && path != sheet && entry.path().is_file() {
+        let a_sheet = path == sheet || name == super::gallery::SHEET_NAME;
+        if png && !name.starts_with('.') && !a_sheet && entry.path().is_file() {
             paths.push(path);
         }
         if paths.len() > MAX_STILLS {

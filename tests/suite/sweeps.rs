@@ -118,6 +118,11 @@ fn shards_at_once_write_the_unsharded_stills_and_sheet_makes_the_same_index() {
         std::fs::read(sharded.join("contact-sheet.png")).unwrap(),
         sheet
     );
+    // A sheet made elsewhere leaves the directory's own sheet out of it.
+    let elsewhere = incomplete.join("again.png");
+    let again = bumpwork(&["sheet", output, "-o", elsewhere.to_str().unwrap()]);
+    assert!(again.status.success(), "{}", stderr(&again));
+    assert!(String::from_utf8_lossy(&again.stdout).starts_with("6 stills"));
 }
 
 #[test]
