@@ -30,20 +30,16 @@ pub fn files(dir: &Path) -> BTreeMap<String, Vec<u8>> {
         .collect()
 }
 
-#[test]
-fn four_shards_at_once_write_the_files_of_one_run_each_once() {
-    let (whole, sharded) = (temp_dir("shards-whole"), temp_dir("shards-four"));
-    let output = whole.join("frame.png");
-    let one = bumpwork(&sequence_args(output.to_str().unwrap(), &[]));
-    assert!(one.status.success(), "{}", stderr(&one));
-    let output = sharded.join("frame.png");
-    let output = output.to_str().unwrap();
-    let shards: Vec<String> = (1..=4).map(|k| format!("{k}/4")).collect();
+/// Runs shards 1/`count` … `count`/`count` at once, each in its own process with the
+/// arguments `args` gives for its `K/N`; each succeeds, and none finds another's file to replace
+/// (none writes a file twice).
+pub fn run_shards_at_once(count: u32, args: impl Fn(&str) -> Vec<String>) {
+    let shards: Vec<String> = (1..=count).map(|k| format!("{k}/{count}")).collect();
     let children: Vec<_> = shards
         .iter()
         .map(|shard| {
             Command::new(env!("CARGO_BIN_EXE_bumpwork"))
-                .args(sequence_args(output, &["--shard", shard]))
+                .args(args(shard))
                 .stdout(Stdio::null())
                 .stderr(Stdio::piped())
                 .spawn()
@@ -52,15 +48,26 @@ fn four_shards_at_once_write_the_files_of_one_run_each_once() {
         .collect();
     for child in children {
         let done = child.wait_with_output().unwrap();
-        assert!(
-            done.status.success(),
-            "{}",
-            String::from_utf8_lossy(&done.stderr)
-        );
-        // No shard found another's frame to replace: none writes a file twice.
         let said = String::from_utf8_lossy(&done.stderr);
+        assert!(done.status.success(), "{said}");
         assert!(!said.contains("replaced"), "{said}");
     }
+}
+
+/// Arguments as owned strings.
+pub fn owned(args: Vec<&str>) -> Vec<String> {
+    args.into_iter().map(str::to_string).collect()
+}
+
+#[test]
+fn four_shards_at_once_write_the_files_of_one_run_each_once() {
+    let (whole, sharded) = (temp_dir("shards-whole"), temp_dir("shards-four"));
+    let output = whole.join("frame.png");
+    let one = bumpwork(&sequence_args(output.to_str().unwrap(), &[]));
+    assert!(one.status.success(), "{}", stderr(&one));
+    let output = sharded.join("frame.png");
+    let output = output.to_str().unwrap();
+    run_shards_at_once(4, |shard| owned(sequence_args(output, &["--shard", shard])));
     let (expected, got) = (files(&whole), files(&sharded));
     assert_eq!(expected.len(), 12);
     assert_eq!(

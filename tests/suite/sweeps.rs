@@ -4,8 +4,7 @@
 //! `gallery --shard` splits the gallery the same way.
 
 use crate::cli_support::{assert_user_error, bumpwork, decode_png, stderr, temp_dir};
-use crate::shards::files;
-use std::process::{Command, Stdio};
+use crate::shards::{files, owned, run_shards_at_once};
 
 fn sweep_args<'a>(output: &'a str, extra: &[&'a str]) -> Vec<&'a str> {
     let mut args = vec!["sweep", "plane-cobbles", "--size", "48x36", "-o", output];
@@ -75,24 +74,7 @@ fn shards_at_once_write_the_unsharded_stills_and_sheet_makes_the_same_index() {
     let one = bumpwork(&sweep_args(whole.to_str().unwrap(), &[]));
     assert!(one.status.success(), "{}", stderr(&one));
     let output = sharded.to_str().unwrap();
-    let shards: Vec<String> = (1..=3).map(|k| format!("{k}/3")).collect();
-    let children: Vec<_> = shards
-        .iter()
-        .map(|shard| {
-            Command::new(env!("CARGO_BIN_EXE_bumpwork"))
-                .args(sweep_args(output, &["--shard", shard]))
-                .stdout(Stdio::null())
-                .stderr(Stdio::piped())
-                .spawn()
-                .unwrap()
-        })
-        .collect();
-    for child in children {
-        let done = child.wait_with_output().unwrap();
-        let said = String::from_utf8_lossy(&done.stderr);
-        assert!(done.status.success(), "{said}");
-        assert!(!said.contains("replaced"), "{said}");
-    }
+    run_shards_at_once(3, |shard| owned(sweep_args(output, &["--shard", shard])));
     let (mut expected, got) = (files(&whole), files(&sharded));
     let sheet = expected.remove("contact-sheet.png").expect("a sheet");
     let index_bytes = expected.remove("sweep.json").expect("an index");
