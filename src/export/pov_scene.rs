@@ -2,8 +2,10 @@
 //! meshes (mesh2 with our normals and (u,v)), camera, point and parallel lights, Blinn-Phong-like
 //! finishes, and each object's colour and bump baked over its (u,v) domain into image maps
 //! (`image_map` and `bump_map` with `uv_mapping`). Slope-only bump patterns define no height,
-//! so they cannot be baked: they are left out with a warning. POV-Ray scales bump maps its own
-//! way, so the bumps look alike, not equal. POV-Ray is left-handed: z is negated throughout.
+//! so they cannot be baked: they are left out with a warning. POV-Ray tilts a bump map's normal
+//! along the normal crossed with world y, not along the map's u and v, so bumps match ours where
+//! u runs along x and v along −z (docs/baking.md). POV-Ray is left-handed: z is negated
+//! throughout.
 
 use super::output_file::OutputFile;
 use super::png_file::PngStill;
@@ -167,8 +169,8 @@ fn bake_maps(
             Some(heights) => {
                 let file = asset_path(path, index, "bump");
                 let depth = write_height_png(&file, &heights)?;
-                // A height range over the object's size, in steps of the baked image: POV-Ray's
-                // bump_size scales the map's per-texel slope (found by eye, not derived).
+                // POV-Ray tilts the normal by bump_size times the map's step to the next texel
+                // (0..1 over the range), so range × texels / size makes the tilt the slope.
                 let bump_size = depth / world_extent(object) * BAKE_SIDE as f32;
                 maps.bump = Some((file_name(&file), bump_size));
             }

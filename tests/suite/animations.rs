@@ -4,6 +4,7 @@
 //! made is refused before anything is written.
 
 use crate::cli_support::{assert_user_error, bumpwork, decode_png, stderr, temp_dir};
+use crate::graphics_support::psnr;
 use std::path::Path;
 
 const SCENE: [&str; 4] = ["plane-ripples", "--set", "bump.speed=40", "--size=64x48"];
@@ -99,14 +100,6 @@ fn a_gif_holds_the_sequence_within_its_palette_error() {
         text.contains("bumpwork-recipe"),
         "the recipe is in a comment"
     );
-}
-
-fn psnr(a: &[u8], b: &[u8]) -> f64 {
-    let squared: f64 = (a.iter().zip(b))
-        .map(|(&x, &y)| (f64::from(x) - f64::from(y)).powi(2))
-        .sum::<f64>()
-        / a.len() as f64;
-    10.0 * (255.0f64.powi(2) / squared.max(1e-12)).log10()
 }
 
 #[test]

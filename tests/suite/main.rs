@@ -33,6 +33,7 @@ mod pattern_precision;
 mod pattern_seed_dimples;
 mod pattern_support;
 mod pattern_textures;
+mod pov_support;
 mod pty_support;
 mod quality_knobs;
 mod raster_clipping;

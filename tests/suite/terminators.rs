@@ -276,17 +276,7 @@ fn render_cli(scene: &std::path::Path, out: &std::path::Path, extra: &[&str]) {
 
 /// POV-Ray's one-sample picture of `pov`, or `None` where POV-Ray is not installed.
 fn pov_ray(pov: &std::path::Path) -> Option<std::path::PathBuf> {
-    let png = pov.with_extension("png");
-    let output = std::process::Command::new("povray")
-        .args(["+W160", "+H120", "-D", "-A", "-GA"])
-        .arg(format!("+O{}", png.display()))
-        .arg(pov)
-        .current_dir(pov.parent().unwrap())
-        .output()
-        .ok()?;
-    let log = String::from_utf8_lossy(&output.stderr);
-    assert!(output.status.success(), "povray failed: {log}");
-    Some(png)
+    crate::pov_support::pov_ray(pov, (160, 120), &["-A"])
 }
 
 fn rgb_pixels(png: &std::path::Path) -> Vec<[u8; 3]> {
