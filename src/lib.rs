@@ -9,6 +9,7 @@ mod huge_pages;
 pub mod label_font;
 pub mod measure;
 pub mod memory_budget;
+pub mod model;
 pub mod overrides;
 pub mod pattern;
 pub mod quality;

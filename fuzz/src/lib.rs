@@ -123,6 +123,38 @@ pub fn scene(data: &[u8]) {
     }
 }
 
+/// An OBJ model read as a scene reads one: refused with a printable message, or made into
+/// finite triangles whose chart names each one back and that a ray through one meets.
+pub fn obj(data: &[u8]) {
+    let raw = match bumpwork::model::parse_obj(data, "fuzz.obj") {
+        Ok(raw) => raw,
+        Err(error) => return assert_printable(&error.to_string()),
+    };
+    let model = bumpwork::model::model_data(raw, bumpwork::model::AS_IT_IS);
+    for corner in &model.corners {
+        assert!(corner.p.is_finite() && corner.n.is_finite() && corner.uv.is_finite());
+        assert!(
+            (corner.n.length() - 1.0).abs() < 1e-3,
+            "normal {:?}",
+            corner.n
+        );
+    }
+    for t in (0..model.corners.len() / 3).take(64) {
+        let chart = model.chart_uv(t, 0.25, 0.25);
+        assert_eq!(model.locate(chart).0, t, "the chart names triangle {t}");
+        let [a, b, c] = [0, 1, 2].map(|k| model.triangle(t)[k].p.as_dvec3());
+        let centre = (a + b + c) / 3.0;
+        let normal = (b - a).cross(c - a).normalize();
+        let hit = model.bvh.intersect(
+            &model.corners,
+            centre + normal,
+            -normal,
+            &(0.0..=f64::INFINITY),
+        );
+        assert!(hit.is_some(), "no hit through triangle {t}'s centre");
+    }
+}
+
 /// An image decoded through our header checks and limits; the first byte picks the file name's
 /// extension, which decides for TGA (no signature) and names the format in messages.
 pub fn image(data: &[u8]) {

@@ -176,6 +176,13 @@ fn on_plane(name: &str, pattern: &Pattern) -> Result<Scene, Error> {
 
 /// The bake's grid: the tile (or the whole domain) at the size asked, within the memory budget.
 fn grid_of(recipe: &BakeRecipe, object: &Object) -> Result<BakeGrid, Error> {
+    if let bumpwork::surface::Surface::Model(_) = object.surface {
+        return Err(Error::InvalidArgument(
+            "a model's bump is baked from its pattern alone (`bumpwork bake PATTERN`): a model has \
+             no point for each (u,v) of a map, and the map follows its (u,v) as it is"
+                .into(),
+        ));
+    }
     let (width, height) = recipe.size;
     let bytes = u64::from(width) * u64::from(height) * BYTES_PER_TEXEL;
     let budget = bumpwork::memory_budget::budget_bytes();

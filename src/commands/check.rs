@@ -50,18 +50,34 @@ fn check(path: &Path) -> Result<String, String> {
         Some("toml") => {
             let scene = bumpwork::scene::load_scene_file(path).map_err(|e| e.to_string())?;
             bumpwork::quality::Quality::default().with_settings(&scene.quality)?;
+            let models = scene
+                .objects
+                .iter()
+                .enumerate()
+                .filter_map(|(i, o)| match &o.surface {
+                    bumpwork::surface::Surface::Model(m) => Some(format!(
+                        "; object {}: {}",
+                        i + 1,
+                        bumpwork::model::describe(&m.data)
+                    )),
+                    _ => None,
+                });
             Ok(format!(
-                "scene '{}', {} objects, {} lights",
+                "scene '{}', {} objects, {} lights{}",
                 sanitize(&scene.name),
                 scene.objects.len(),
-                scene.lights.len()
+                scene.lights.len(),
+                models.collect::<String>()
             ))
         }
+        Some("obj") => bumpwork::model::load_model(path, bumpwork::model::AS_IT_IS)
+            .map(|data| bumpwork::model::describe(&data))
+            .map_err(|e| e.to_string()),
         Some(ext) if IMAGE_EXTENSIONS.contains(&ext) => bumpwork::texture::check_image(path)
             .map(|info| info.to_string())
             .map_err(|e| e.to_string()),
         _ => Err(format!(
-            "{}: not a pattern (.pat), scene (.toml) or image ({}) file",
+            "{}: not a pattern (.pat), scene (.toml), model (.obj) or image ({}) file",
             sanitize(&path.display().to_string()),
             IMAGE_EXTENSIONS.join(", ")
         )),

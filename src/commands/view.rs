@@ -7,7 +7,8 @@ use bumpwork::tui::{QualityPreset, WorkbenchOptions};
 
 #[derive(clap::Args, Default)]
 pub struct ViewArgs {
-    /// Built-in scene names or scene files; none opens the gallery of every built-in scene.
+    /// Built-in scene names, scene files, pattern files or model files (`model.obj my.pat` shows
+    /// the pattern on the model); none opens the gallery of every built-in scene.
     scenes: Vec<String>,
     /// Colours: truecolor, 256, 16, none or auto (from COLORTERM, TERM and NO_COLOR).
     #[arg(long, default_value = "auto", value_parser = parse_colors)]
@@ -56,7 +57,7 @@ pub fn run(args: ViewArgs) -> Result<(), Error> {
         scenes: if args.scenes.is_empty() {
             defaults.scenes
         } else {
-            args.scenes
+            patterns_on_models(args.scenes)
         },
         colors: args.colors.unwrap_or_default(),
         glyphs: args.glyphs.unwrap_or_default(),
@@ -79,6 +80,24 @@ pub fn run(args: ViewArgs) -> Result<(), Error> {
         settings: args.set,
     };
     bumpwork::tui::run(&options)
+}
+
+/// `model.obj my.pat` as one source, `model.obj+my.pat`: the pattern shown on the model.
+fn patterns_on_models(names: Vec<String>) -> Vec<String> {
+    let mut joined: Vec<String> = Vec::with_capacity(names.len());
+    for name in names {
+        let on_a_model = joined.last().is_some_and(|last| {
+            bumpwork::scene::ModelSource::parse(last).is_some_and(|m| m.pattern.is_none())
+        });
+        match joined.last_mut() {
+            Some(last) if on_a_model && name.ends_with(".pat") => {
+                last.push('+');
+                last.push_str(&name);
+            }
+            _ => joined.push(name),
+        }
+    }
+    joined
 }
 
 fn parse_colors(text: &str) -> Result<ColorChoice, String> {

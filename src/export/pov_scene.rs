@@ -15,6 +15,7 @@ use crate::raster::{PreparedObject, PreparedScene};
 use crate::scene::Camera;
 use crate::scene::{Light, Object, Scene};
 use crate::still::RowSink;
+use crate::surface::Surface;
 use glam::{DVec3, Vec2, Vec3};
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -152,6 +153,16 @@ fn bake_maps(
 ) -> Result<BakedMaps, Error> {
     let mut maps = BakedMaps::default();
     let material = &object.material;
+    if let crate::surface::Surface::Model(_) = object.surface
+        && (material.texture.is_some() || material.bump.is_some())
+    {
+        warnings.push(format!(
+            "object {}: a model's colour and bump are not baked for POV-Ray (a model has no \
+             point for each (u,v) of a map); bake its pattern with `bumpwork bake` instead",
+            index + 1
+        ));
+        return Ok(maps);
+    }
     if material.texture.is_some() {
         let colors = crate::shade::bake_color(&object.surface, material, time, BAKE_SIDE);
         let file = asset_path(path, index, "color");
@@ -235,11 +246,15 @@ fn write_object(
     let normal_at = |uv: &Vec2| pov(surface.frame(uv.x, uv.y).n.as_dvec3());
     write_list(sdl, mesh.uvs.iter().map(normal_at))?;
     write!(sdl, " }}\n  uv_vectors {{ ")?;
-    let uv_of = |&uv: &Vec2| {
+    let uv_of = |uv: Vec2| {
         let t = (uv - domain.min) / extent.max(Vec2::splat(1e-30));
         format!("<{}, {}>", t.x, t.y)
     };
-    write_list(sdl, mesh.uvs.iter().map(uv_of))?;
+    match surface {
+        // A model's mesh carries its chart; POV-Ray is given the texture's (u,v).
+        Surface::Model(model) => write_list(sdl, model.data.corners.iter().map(|c| uv_of(c.uv)))?,
+        _ => write_list(sdl, mesh.uvs.iter().map(|&uv| uv_of(uv)))?,
+    }
     write!(sdl, " }}\n  face_indices {{ ")?;
     let face = |[a, b, c]: &[u32; 3]| format!("<{a}, {b}, {c}>");
     write_list(sdl, mesh.indices.iter().map(face))?;

@@ -1,5 +1,6 @@
-//! Where a scene comes from: a built-in name, a scene file, or a pattern file shown on the
-//! sphere-on-plane scene; and the scene's text, as a file would hold it.
+//! Where a scene comes from: a built-in name, a scene file, a pattern file shown on the
+//! sphere-on-plane scene, or a model file (with a pattern file, `model.obj+my.pat`) on its stage;
+//! and the scene's text, as a file would hold it.
 
 use super::{BumpSource, MAX_SCENE_FILE_BYTES, PatternBinding, Scene, Texturing};
 use crate::Error;
@@ -12,6 +13,12 @@ const PATTERN_STAGE: &str = "sphere-on-plane-dimples";
 /// Loads the scene `name` names: a `.pat` file goes on the stage scene, anything else is a
 /// built-in scene or a scene file.
 pub fn load_source(name: &str) -> Result<Scene, Error> {
+    if let Some(model) = super::ModelSource::parse(name) {
+        let file = model.scene_file()?;
+        return file
+            .to_scene(name, Path::new("."))
+            .map_err(|message| Error::Diagnostic(crate::diagnostic::sanitize(&message).into()));
+    }
     if !name.ends_with(".pat") {
         return super::resolve(name);
     }
@@ -44,6 +51,9 @@ pub fn put_pattern_on(scene: &mut Scene, name: &str, pattern: &Pattern) {
 /// The text of the scene `name` names, as a scene file: the file itself, or a built-in scene
 /// (the stage scene for a pattern file) printed as one.
 pub fn source_text(name: &str) -> Result<String, Error> {
+    if let Some(model) = super::ModelSource::parse(name) {
+        return Ok(model.scene_file()?.to_toml());
+    }
     let preset = if name.ends_with(".pat") {
         PATTERN_STAGE
     } else {

@@ -1,11 +1,11 @@
 //! The files a scene file reads, so that a watcher knows what to look at.
 
 use super::binding_file::BindingFile;
-use super::file::{MAX_SCENE_FILE_BYTES, SceneFile};
+use super::file::{MAX_SCENE_FILE_BYTES, SceneFile, SurfaceFile};
 use crate::Error;
 use std::path::{Path, PathBuf};
 
-/// The scene file itself, then every pattern and image file its objects name (built-ins are not
+/// The scene file itself, then every model, pattern and image file its objects name (built-ins are not
 /// files), each once, in order of appearance. Paths are as the loader opens them: relative names
 /// joined to the scene file's directory. Only the TOML is read, so this works even when a
 /// pattern or image it names is missing or broken.
@@ -33,13 +33,19 @@ pub fn scene_text_dependencies(
         let message = super::user_words::in_user_words(e.message());
         Error::Diagnostic(crate::diagnostic::render(origin, text, offset, &message))
     })?;
-    Ok(file
+    let models = file.objects.iter().filter_map(|o| match &o.surface {
+        SurfaceFile::Mesh { file, .. } if crate::model::builtin_model(file).is_none() => {
+            Some(base.join(file))
+        }
+        _ => None,
+    });
+    let bindings = file
         .objects
         .iter()
         .flat_map(|o| [&o.texture, &o.bump])
         .flatten()
-        .flat_map(|b| binding_files(b, base))
-        .collect())
+        .flat_map(|b| binding_files(b, base));
+    Ok(models.chain(bindings).collect())
 }
 
 pub(crate) fn binding_files(binding: &BindingFile, base: &Path) -> Vec<PathBuf> {

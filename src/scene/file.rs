@@ -8,7 +8,9 @@ use super::quality_table::{QualityTable, knob_settings};
 use super::{Light, Material, Object, Scene};
 use crate::Error;
 use crate::scene::Camera;
-use crate::surface::{AxisBasis, Cone, Paraboloid, Plane, Sphere, Surface, Triangle, Wave};
+use crate::surface::{
+    AxisBasis, Cone, ModelSurface, Paraboloid, Plane, Sphere, Surface, Triangle, Wave,
+};
 use crate::texture::ImageCache;
 use glam::{DVec3, Vec2, Vec3};
 use serde::{Deserialize, Serialize};
@@ -129,6 +131,30 @@ pub enum SurfaceFile {
         b: Point,
         c: Point,
     },
+    /// A model read from a Wavefront OBJ file (relative to the scene file), scaled about its
+    /// origin and moved to `position`; its texture (u,v) 0..1 cover `uv-scale` pattern units.
+    Mesh {
+        file: String,
+        #[serde(default = "origin")]
+        position: Point,
+        #[serde(default = "unit")]
+        scale: Positive,
+        #[serde(rename = "uv-scale", default = "lecture_plane")]
+        uv_scale: Positive,
+    },
+}
+
+fn origin() -> Point {
+    Point(DVec3::ZERO)
+}
+
+fn unit() -> Positive {
+    Positive(1.0)
+}
+
+/// One texture unit is the lecture's 400-wide plane.
+fn lecture_plane() -> Positive {
+    Positive(400.0)
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -416,7 +442,7 @@ impl LightFile {
 
 impl ObjectFile {
     fn to_object(&self, base: &Path, images: &mut ImageCache) -> Result<Object, String> {
-        let surface = self.surface.to_surface()?;
+        let surface = self.surface.to_surface(base)?;
         let texture = self
             .texture
             .as_ref()
@@ -449,10 +475,11 @@ impl SurfaceFile {
             SurfaceFile::Cone { .. } => "cone",
             SurfaceFile::Wave { .. } => "wave",
             SurfaceFile::Triangle { .. } => "triangle",
+            SurfaceFile::Mesh { .. } => "mesh",
         }
     }
 
-    fn to_surface(&self) -> Result<Surface, String> {
+    fn to_surface(&self, base: &Path) -> Result<Surface, String> {
         Ok(match *self {
             SurfaceFile::Plane {
                 origin,
@@ -514,6 +541,23 @@ impl SurfaceFile {
                     return Err("the corners a, b and c are collinear".into());
                 }
                 Surface::Triangle(Triangle::new(a.0, b.0, c.0))
+            }
+            SurfaceFile::Mesh {
+                ref file,
+                position,
+                scale,
+                uv_scale,
+            } => {
+                let placement = crate::model::Placement {
+                    scale: scale.0,
+                    uv_scale: uv_scale.0,
+                };
+                let data = crate::model::load_named_model(file, base, placement)
+                    .map_err(|e| e.to_string())?;
+                Surface::Model(ModelSurface {
+                    origin: position.0,
+                    data: std::sync::Arc::new(data),
+                })
             }
         })
     }

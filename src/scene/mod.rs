@@ -7,6 +7,7 @@ pub mod dependencies;
 pub(crate) mod exact_arrays;
 mod file;
 mod material;
+mod model_stage;
 mod presets;
 mod quality_table;
 pub(crate) mod user_words;
@@ -22,6 +23,7 @@ pub use material::{
     Bump, BumpSource, ImageHeight, ImageTexture, Material, NormalMapBump, PatternBinding,
     Placement, Texturing,
 };
+pub use model_stage::ModelSource;
 pub use presets::{PRESET_NAMES, preset, preset_file};
 pub use quality_table::{KnobPlace, KnobSetting, QualityTable, written_table};
 
@@ -100,8 +102,10 @@ pub fn resolve(name_or_path: &str) -> Result<Scene, crate::Error> {
 /// path, or a name ending in `.toml` or `.pat`), with the closest built-in name; `None` if the
 /// name may be loaded.
 pub fn unknown_scene(name: &str) -> Option<crate::Error> {
-    let could_be_a_file =
-        std::path::Path::new(name).exists() || name.ends_with(".toml") || name.ends_with(".pat");
+    let could_be_a_file = std::path::Path::new(name).exists()
+        || name.ends_with(".toml")
+        || name.ends_with(".pat")
+        || ModelSource::parse(name).is_some();
     (preset(name).is_none() && !could_be_a_file).then(|| crate::Error::UnknownScene {
         name: name.to_string(),
         suggestion: presets::closest_name(name),

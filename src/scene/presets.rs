@@ -53,6 +53,7 @@ pub const PRESET_NAMES: &[&str] = &[
     "plane-stucco",
     "plane-cobbles",
     "cone-bark",
+    "rounded-cube-dimples",
 ];
 
 /// The built-in scene of that name, as a scene file (so it can be printed and edited).
@@ -74,6 +75,7 @@ fn geometry(name: &str) -> SceneFile {
         _ if name.starts_with("parabola-") => parabola(),
         _ if name.starts_with("big-sphere-") => big_sphere(),
         _ if name.starts_with("cone-") => cone(),
+        _ if name.starts_with("rounded-cube-") => rounded_cube(),
         "sphere-image-bump" | "textured-sphere" => single_sphere(),
         "textured-spheres" => spheres_on_floor(),
         "planes-stripes-checks-image" => room_corner(),
@@ -337,6 +339,27 @@ fn sphere_on_plane() -> SceneFile {
         vec![
             object(ground(600.0), material(0.55, 0.6, 0.7)),
             object(sphere(0.0, 100.0, 0.0, 100.0), material(0.8, 0.45, 0.3)),
+        ],
+    )
+}
+
+/// The shipped rounded cube (side 160) resting on the floor, its texture cross 640 units wide so
+/// a face's 160 units of (u,v) are its 160 units of side, as on the floor.
+fn rounded_cube() -> SceneFile {
+    scene(
+        camera(point(-180.0, 300.0, 560.0), point(0.0, 70.0, 0.0), 40.0),
+        vec![key_light(-400.0, 600.0, 500.0)],
+        vec![
+            object(ground(600.0), material(0.55, 0.6, 0.7)),
+            object(
+                SurfaceFile::Mesh {
+                    file: "rounded-cube".into(),
+                    position: point(0.0, 80.0, 0.0),
+                    scale: Positive(80.0),
+                    uv_scale: Positive(640.0),
+                },
+                material(0.8, 0.45, 0.3),
+            ),
         ],
     )
 }

@@ -192,7 +192,7 @@ pub(super) fn nearer_neighbours(
 ) -> usize {
     let mut count = 0;
     // A flat surface's fragments are where its mesh put them, so they beat every hull in depth.
-    let settled = objects[index as usize].prepared.surface.is_flat();
+    let settled = objects[index as usize].prepared.surface.is_its_own_mesh();
     for &other in neighbours.of(index as usize) {
         let object = &objects[other as usize];
         if settled && neighbours.hidden_by_hull(other as usize, object.origin, rays) {

@@ -76,7 +76,7 @@ pub fn exact_fragments(
         let index = fragments[start].object;
         let object = &objects[index as usize];
         let surface = &object.prepared.surface;
-        if !surface.is_flat() {
+        if !surface.is_its_own_mesh() {
             let moved = move_run(object, rays, &mut fragments[start..end], scratch);
             count.moved += moved;
             for (k, &found) in (start..end).zip(&scratch.found) {

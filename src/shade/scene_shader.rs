@@ -20,7 +20,7 @@ use crate::raster::{
 };
 use crate::scene::Camera;
 use crate::scene::{BumpSource, Material, Scene, Texturing};
-use crate::surface::{Frame, Surface};
+use crate::surface::{Frame, ModelSurface, Surface};
 use crate::texture::{Footprint, HeightSample, Mapping, SurfacePoint, SurfaceUv, Texel, Wrap};
 use glam::{Mat2, Vec2, Vec3};
 use std::borrow::Cow;
@@ -274,6 +274,9 @@ impl LitShader {
         scratch.frames.clear();
         let uv = |k: usize| fragments[group[k] as usize].uv;
         surface.frames(group.len(), uv, &mut scratch.frames);
+        if let Surface::Model(model) = surface {
+            to_texture_space(model, fragments, group, &mut scratch.frames);
+        }
         // Fragments moved to their true hits take their derivatives from these frames, the
         // true surface's (before any interpolated normals replace them).
         if self.surface_point == SurfacePointSource::Exact && self.reads_derivatives(object) {
@@ -548,9 +551,11 @@ impl LitShader {
             GradientMethod::SeedLattice => {
                 let shifted = &mut scratch.shifted;
                 shifted_fragments(fragments, group, Vec2::floor, &mut shifted.fragments);
+                let base = (&scratch.frames[..], fragments, group);
                 let flattened = self.shifted_bump(
                     object,
                     shifted,
+                    base,
                     (&mut scratch.patterns, &mut scratch.height_lookups),
                 );
                 std::mem::swap(&mut scratch.heights, &mut shifted.heights);
@@ -591,7 +596,8 @@ impl LitShader {
         for (k, shift) in shifts.into_iter().enumerate() {
             shifted_fragments(fragments, group, |uv| uv + shift, &mut shifted.fragments);
             let work = (&mut scratch.patterns, &mut scratch.height_lookups);
-            self.shifted_bump(object, shifted, work);
+            let base = (&scratch.frames[..], fragments, group);
+            self.shifted_bump(object, shifted, base, work);
             std::mem::swap(&mut shifted.around[k], &mut shifted.heights);
         }
         let around = &shifted.around;
@@ -607,6 +613,7 @@ impl LitShader {
         &self,
         object: &FrameObject,
         shifted: &mut Shifted,
+        base: (&[Frame], &[Fragment], &[u32]),
         (patterns, height_lookups): (&mut PatternBatch, &mut HeightLookups),
     ) -> usize {
         let surface = &object.prepared.surface;
@@ -615,7 +622,21 @@ impl LitShader {
         shifted.identity.extend(0..n as u32);
         shifted.frames.clear();
         let fragments = &shifted.fragments;
-        surface.frames(n, |k| fragments[k].uv, &mut shifted.frames);
+        match surface {
+            // A model's (u,v) name no point: its shifted frames step along its unshifted ones.
+            Surface::Model(_) => {
+                let (frames, originals, group) = base;
+                shifted.frames.extend((0..n).map(|k| {
+                    let step = fragments[k].uv - originals[group[k] as usize].uv;
+                    let frame = frames[k];
+                    Frame {
+                        p: frame.p + frame.pu * step.x + frame.pv * step.y,
+                        ..frame
+                    }
+                }));
+            }
+            _ => surface.frames(n, |k| fragments[k].uv, &mut shifted.frames),
+        }
         let mut output = BumpOutput {
             frames: &shifted.frames,
             patterns,
@@ -743,6 +764,23 @@ struct BumpOutput<'a> {
     height_lookups: &'a mut HeightLookups,
     heights: &'a mut Vec<f32>,
     gradients: &'a mut Vec<Vec2>,
+}
+
+/// Moves `group`'s fragments (chart (u,v) and derivatives) and their `frames` to the model's
+/// texture (u,v), where patterns and images are read and bumps tilt.
+fn to_texture_space(
+    model: &ModelSurface,
+    fragments: &mut [Fragment],
+    group: &[u32],
+    frames: &mut [Frame],
+) {
+    for (&i, frame) in group.iter().zip(frames.iter_mut()) {
+        let fragment = &mut fragments[i as usize];
+        let texture = model.to_texture_space(fragment.uv, frame);
+        fragment.uv = texture.uv;
+        fragment.duv_dx = texture.derivative(fragment.duv_dx);
+        fragment.duv_dy = texture.derivative(fragment.duv_dy);
+    }
 }
 
 /// An image's mapping in its cheapest exact form on `surface`. A spherical mapping about a

@@ -37,7 +37,7 @@ pub fn push_out_to_hull(surface: &Surface, mesh: &mut Mesh) {
                     + past_edge(frame.pu, uv.x == 0.0, uv.x == wave.size.x)
                     + past_edge(frame.pv, uv.y == 0.0, uv.y == wave.size.y)
             }
-            Surface::Plane(_) | Surface::Triangle(_) => Vec3::ZERO,
+            Surface::Plane(_) | Surface::Triangle(_) | Surface::Model(_) => Vec3::ZERO,
         };
         *position += outwards * push;
     }

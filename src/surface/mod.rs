@@ -10,6 +10,8 @@ mod angles;
 mod basis;
 mod cone;
 mod hull;
+mod model;
+mod model_bvh;
 mod paraboloid;
 mod plane;
 mod ray_differentials;
@@ -24,6 +26,8 @@ pub use angles::{atan2, sin_cos};
 pub use basis::AxisBasis;
 pub use cone::Cone;
 pub use hull::push_out_to_hull;
+pub use model::{Corner, ModelData, ModelSurface, TexturePoint};
+pub use model_bvh::ModelHit;
 pub use paraboloid::Paraboloid;
 pub use plane::Plane;
 pub use ray_differentials::uv_derivatives;
@@ -58,6 +62,8 @@ pub enum Surface {
     Cone(Cone),
     Wave(Wave),
     Triangle(Triangle),
+    /// A user's triangle mesh, in the (u,v) of its chart (see `model.rs`).
+    Model(ModelSurface),
 }
 
 /// The rectangle of (u,v) a surface is defined on. The triangle's domain is the triangle inside it.
@@ -77,6 +83,7 @@ impl Surface {
             Surface::Cone(s) => s.apex,
             Surface::Wave(s) => s.origin,
             Surface::Triangle(s) => s.a,
+            Surface::Model(s) => s.origin,
         }
     }
 
@@ -90,6 +97,7 @@ impl Surface {
             Surface::Cone(s) => s.frame(u, v),
             Surface::Wave(s) => s.frame(u, v),
             Surface::Triangle(s) => s.frame(u, v),
+            Surface::Model(s) => s.frame(u, v),
         }
     }
 
@@ -104,12 +112,22 @@ impl Surface {
             Surface::Cone(s) => frames_each(count, uv, |u, v| s.frame(u, v), out),
             Surface::Wave(s) => frames_each(count, uv, |u, v| s.frame(u, v), out),
             Surface::Triangle(s) => flat_frames(count, uv, s.frame(0.0, 0.0), out),
+            Surface::Model(s) => frames_each(count, uv, |u, v| s.frame(u, v), out),
         }
     }
 
     /// Whether Pu, Pv and n are the same at every (u,v) (only the point varies).
     pub fn is_flat(&self) -> bool {
         matches!(self, Surface::Plane(_) | Surface::Triangle(_))
+    }
+
+    /// Whether the rasterizer's triangles are the surface itself, so its fragments lie on it
+    /// already: the flat surfaces and models.
+    pub fn is_its_own_mesh(&self) -> bool {
+        matches!(
+            self,
+            Surface::Plane(_) | Surface::Triangle(_) | Surface::Model(_)
+        )
     }
 
     pub fn domain(&self) -> Domain {
@@ -120,6 +138,7 @@ impl Surface {
             Surface::Cone(s) => s.domain(),
             Surface::Wave(s) => s.domain(),
             Surface::Triangle(s) => s.domain(),
+            Surface::Model(s) => s.domain(),
         }
     }
 
@@ -128,7 +147,8 @@ impl Surface {
     /// its apex; its value half way along the side is given.
     pub fn max_curvature(&self) -> f32 {
         match self {
-            Surface::Plane(_) | Surface::Triangle(_) => 0.0,
+            // A model's triangles are the surface: nothing to tessellate.
+            Surface::Plane(_) | Surface::Triangle(_) | Surface::Model(_) => 0.0,
             Surface::Sphere(s) => 1.0 / s.radius,
             Surface::Paraboloid(s) => 2.0 * s.curvature,
             Surface::Cone(s) => {
@@ -158,14 +178,17 @@ impl Surface {
     pub fn tessellate(&self, tessellation: Tessellation) -> Mesh {
         match self {
             Surface::Triangle(s) => s.mesh(),
+            Surface::Model(s) => s.mesh(),
             _ => tessellate::grid(self, tessellation),
         }
     }
 
     /// The triangles `tessellate` makes, counted without making them.
     pub fn triangle_count(&self, tessellation: Tessellation) -> u64 {
-        if let Surface::Triangle(_) = self {
-            return 1;
+        match self {
+            Surface::Triangle(_) => return 1,
+            Surface::Model(s) => return s.triangle_count() as u64,
+            _ => {}
         }
         let shape = self.grid_shape(tessellation);
         let fans = u64::from(shape.collapsed_v_min) + u64::from(shape.collapsed_v_max);
@@ -177,7 +200,9 @@ impl Surface {
     fn grid_shape(&self, tessellation: Tessellation) -> tessellate::GridShape {
         let d = tessellation.density.max(1);
         match self {
-            Surface::Plane(_) | Surface::Triangle(_) => tessellate::GridShape::flat(1, 1),
+            Surface::Plane(_) | Surface::Triangle(_) | Surface::Model(_) => {
+                tessellate::GridShape::flat(1, 1)
+            }
             // Both poles are fans: a single row would have to be a fan at both ends at once.
             Surface::Sphere(_) => tessellate::GridShape {
                 cells_u: 2 * d,

@@ -59,7 +59,7 @@ impl Surface {
             depths,
         };
         match self {
-            Surface::Plane(_) | Surface::Triangle(_) => {
+            Surface::Plane(_) | Surface::Triangle(_) | Surface::Model(_) => {
                 for k in 0..n {
                     let ray = Ray {
                         origin: eye,

@@ -1,6 +1,6 @@
-//! A scene opened by name with its files watched: a built-in name, a scene file, or a pattern file
-//! shown on the sphere-on-plane scene; files come with a hot reloader watching them (the
-//! workbench and `render --watch`).
+//! A scene opened by name with its files watched: a built-in name, a scene file, a pattern file
+//! shown on the sphere-on-plane scene, or a model file (and a pattern file on it); files come
+//! with a hot reloader watching them (the workbench and `render --watch`).
 
 use super::{FileSetSource, Reloader, SceneFileSource};
 use crate::Error;
@@ -16,6 +16,10 @@ pub fn open_watched(name: &str, watch: bool) -> Result<(Scene, Option<Reloader>)
     }
     let started = if !watch {
         return Ok((load_source(name)?, None));
+    } else if let Some(model) = crate::scene::ModelSource::parse(name) {
+        let owned = name.to_string();
+        let source = FileSetSource::new(model.files(), move || load_source(&owned));
+        Reloader::start(source)
     } else if name.ends_with(".pat") {
         let owned = name.to_string();
         let source = FileSetSource::new(vec![PathBuf::from(name)], move || load_source(&owned));

@@ -46,6 +46,11 @@ fn image_inputs() {
 }
 
 #[test]
+fn obj_inputs() {
+    replay("obj", entry::obj);
+}
+
+#[test]
 fn png_metadata_inputs() {
     replay("png_metadata", entry::png_metadata);
 }

@@ -21,6 +21,7 @@ mod hostile_files;
 mod hostile_tui;
 mod memory_budget;
 mod messages;
+mod models;
 mod never_stuck;
 mod nothing_lost;
 mod output_paths;

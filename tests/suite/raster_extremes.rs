@@ -87,6 +87,7 @@ fn translated(mut scene: Scene, offset: DVec3) -> Scene {
             Surface::Cone(s) => s.apex += offset,
             Surface::Wave(s) => s.origin += offset,
             Surface::Triangle(s) => s.a += offset,
+            Surface::Model(s) => s.origin += offset,
         }
     }
     scene
@@ -103,6 +104,7 @@ fn a_scene_translated_by_a_million_renders_the_same() {
         "cone-ripple",
         "image-to-triangle",
         "wave-spheres",
+        "rounded-cube-dimples",
     ] {
         let near = render_scene(preset(name).unwrap(), viewport);
         let far = render_scene(

@@ -204,6 +204,7 @@ fn translate(surface: &mut bumpwork::surface::Surface, offset: DVec3) {
         Cone(s) => s.apex += offset,
         Wave(s) => s.origin += offset,
         Triangle(s) => s.a += offset,
+        Model(s) => s.origin += offset,
     }
 }
 

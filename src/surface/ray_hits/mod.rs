@@ -35,6 +35,7 @@ pub fn intersect(surface: &Surface, ray: &Ray, range: RangeInclusive<f64>) -> Op
         Surface::Cone(s) => intersect_cone(s, ray, &range),
         Surface::Wave(s) => intersect_wave(s, ray, &range),
         Surface::Triangle(s) => intersect_triangle(s, ray, &range),
+        Surface::Model(s) => intersect_model(s, ray, &range),
     }?;
     hit.uv.is_finite().then_some(hit)
 }
@@ -48,5 +49,57 @@ pub fn surface_uv(surface: &Surface, p: DVec3) -> Vec2 {
         Surface::Cone(s) => cone_uv(s, p),
         Surface::Wave(_) => wave_uv(p),
         Surface::Triangle(s) => triangle_uv(s, p),
+        Surface::Model(s) => model_uv(s, p),
     }
+}
+
+/// The nearest hit of the ray with the model's triangles, in its chart's (u,v).
+fn intersect_model(
+    model: &crate::surface::ModelSurface,
+    ray: &Ray,
+    range: &RangeInclusive<f64>,
+) -> Option<Hit> {
+    let data = &*model.data;
+    let hit = data
+        .bvh
+        .intersect(&data.corners, ray.origin, ray.direction, range)?;
+    Some(Hit {
+        t: hit.t,
+        uv: data.chart_uv(hit.triangle, hit.a as f32, hit.b as f32),
+    })
+}
+
+/// The chart (u,v) of the model's point nearest `p`: a point alone does not name its triangle,
+/// so every triangle is tried (for tests and tools, not for rendering).
+fn model_uv(model: &crate::surface::ModelSurface, p: DVec3) -> Vec2 {
+    let data = &*model.data;
+    let nearest = (0..model.triangle_count())
+        .map(|t| {
+            let [a, b, c] = [0, 1, 2].map(|k| data.triangle(t)[k].p.as_dvec3());
+            let (weights, distance) = closest_on_triangle(p, a, b, c);
+            (distance, t, weights)
+        })
+        .min_by(|x, y| x.0.total_cmp(&y.0));
+    nearest.map_or(Vec2::NAN, |(_, t, (wb, wc))| {
+        data.chart_uv(t, wb as f32, wc as f32)
+    })
+}
+
+/// The weights of b and c at the point of triangle abc nearest `p`, and its distance.
+fn closest_on_triangle(p: DVec3, a: DVec3, b: DVec3, c: DVec3) -> ((f64, f64), f64) {
+    let (e1, e2) = (b - a, c - a);
+    let (d11, d12, d22) = (e1.dot(e1), e1.dot(e2), e2.dot(e2));
+    let (r1, r2) = ((p - a).dot(e1), (p - a).dot(e2));
+    let det = d11 * d22 - d12 * d12;
+    let (mut wb, mut wc) = if det > 0.0 {
+        ((d22 * r1 - d12 * r2) / det, (d11 * r2 - d12 * r1) / det)
+    } else {
+        (0.0, 0.0)
+    };
+    // Outside: the nearest point is on an edge; clamping the weights is close enough for a
+    // point that lies on the model, which is what this is asked of.
+    wb = wb.clamp(0.0, 1.0);
+    wc = wc.clamp(0.0, 1.0 - wb);
+    let q = a + e1 * wb + e2 * wc;
+    ((wb, wc), q.distance(p))
 }

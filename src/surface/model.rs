@@ -1,0 +1,219 @@
+//! A user's triangle mesh (an OBJ or glTF model) as a surface. A mesh has no (u,v) → point
+//! function of its own: its texture coordinates may repeat (mirrored or overlapping islands),
+//! so they cannot tell a fragment's triangle. The rasterizer is given instead a chart of the
+//! mesh's own: triangle t is laid in a unit cell of a grid, its corners at (¼,¼), (¾,¼) and
+//! (¼,¾) of the cell, so a fragment's interpolated chart (u,v) names its triangle (the cell;
+//! the margin keeps a fragment at a triangle's edge inside it) and its barycentric weights (the
+//! place in the cell), exactly and perspective-correct. Shading then moves each fragment to the
+//! texture's (u,v) (`to_texture_space`), where patterns and images are read and bumps tilt.
+//!
+//! Numerics: positions, normals and tangents are f32 relative to the model's anchor, as every
+//! surface's local geometry is; chart coordinates are f32 and stay under √(triangles) + 1, so a
+//! million triangles keep barycentrics to 1e-4.
+
+use super::{Domain, Frame, Mesh, normalize_or};
+use glam::{DVec3, Vec2, Vec3, Vec4};
+use std::sync::Arc;
+
+/// One corner of a triangle: its point (relative to the anchor), unit normal, MikkTSpace tangent
+/// (w: the bitangent's sign) and texture (u,v), the latter already scaled to pattern units.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Corner {
+    pub p: Vec3,
+    pub n: Vec3,
+    pub tangent: Vec4,
+    pub uv: Vec2,
+}
+
+/// A loaded model: three corners a triangle, its bounding volume hierarchy, and where it came
+/// from.
+pub struct ModelData {
+    /// `corners[3t..3t + 3]` are triangle t's.
+    pub corners: Vec<Corner>,
+    /// Cells across the chart.
+    pub columns: u32,
+    /// The texture domain in pattern units (0..uv-scale on each side).
+    pub domain: Domain,
+    pub bvh: super::model_bvh::Bvh,
+    /// Triangles left out because they had no area in space or in (u,v).
+    pub degenerate: usize,
+}
+
+/// A model placed in a scene.
+#[derive(Clone)]
+pub struct ModelSurface {
+    /// The anchor: corners are relative to it.
+    pub origin: DVec3,
+    pub data: Arc<ModelData>,
+}
+
+impl std::fmt::Debug for ModelSurface {
+    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        write!(
+            f,
+            "ModelSurface {{ origin: {:?}, triangles: {} }}",
+            self.origin,
+            self.triangle_count()
+        )
+    }
+}
+
+impl PartialEq for ModelSurface {
+    fn eq(&self, other: &ModelSurface) -> bool {
+        let same_data = |a: &ModelData, b: &ModelData| {
+            a.corners == b.corners && a.domain == b.domain && a.degenerate == b.degenerate
+        };
+        self.origin == other.origin
+            && (Arc::ptr_eq(&self.data, &other.data) || same_data(&self.data, &other.data))
+    }
+}
+
+/// A chart corner's place in its cell: (¼,¼), (¾,¼), (¼,¾).
+const CHART_CORNERS: [Vec2; 3] = [
+    Vec2::new(0.25, 0.25),
+    Vec2::new(0.75, 0.25),
+    Vec2::new(0.25, 0.75),
+];
+
+impl ModelData {
+    /// The data for `corners` (three a triangle), with the chart laid out for them.
+    pub fn new(corners: Vec<Corner>, domain: Domain, degenerate: usize) -> ModelData {
+        let triangles = corners.len() / 3;
+        let columns = (triangles as f64).sqrt().ceil().max(1.0) as u32;
+        let bvh = super::model_bvh::Bvh::new(&corners);
+        ModelData {
+            corners,
+            columns,
+            domain,
+            bvh,
+            degenerate,
+        }
+    }
+
+    pub fn triangle(&self, t: usize) -> &[Corner] {
+        &self.corners[3 * t..3 * t + 3]
+    }
+
+    /// Triangle `t`'s chart cell's lowest corner.
+    pub fn cell(&self, t: usize) -> Vec2 {
+        let columns = self.columns as usize;
+        Vec2::new((t % columns) as f32, (t / columns) as f32)
+    }
+
+    /// The chart (u,v) of the point with barycentric weights (1 − a − b, a, b) on triangle t.
+    pub fn chart_uv(&self, t: usize, a: f32, b: f32) -> Vec2 {
+        self.cell(t) + CHART_CORNERS[0] + Vec2::new(a, b) * 0.5
+    }
+
+    /// The triangle a chart (u,v) lies in, and the weights (a, b) of its second and third
+    /// corners there.
+    #[inline]
+    pub fn locate(&self, chart: Vec2) -> (usize, f32, f32) {
+        let cell = chart.floor();
+        let columns = self.columns as usize;
+        let triangles = self.corners.len() / 3;
+        let column = (cell.x.max(0.0) as usize).min(columns - 1);
+        let t = (cell.y.max(0.0) as usize * columns + column).min(triangles.max(1) - 1);
+        let inside = (chart - self.cell(t) - CHART_CORNERS[0]) * 2.0;
+        (t, inside.x, inside.y)
+    }
+}
+
+impl ModelSurface {
+    pub fn triangle_count(&self) -> usize {
+        self.data.corners.len() / 3
+    }
+
+    pub fn domain(&self) -> Domain {
+        self.data.domain
+    }
+
+    /// The frame at a chart (u,v): the point on the triangle, the interpolated vertex normal,
+    /// and the partials along the chart's u and v (`to_texture_space` turns them into the
+    /// texture's).
+    #[inline]
+    pub fn frame(&self, u: f32, v: f32) -> Frame {
+        let data = &*self.data;
+        if data.corners.is_empty() {
+            return Frame::default();
+        }
+        let (t, a, b) = data.locate(Vec2::new(u, v));
+        let [c0, c1, c2] = [0, 1, 2].map(|k| data.triangle(t)[k]);
+        let (e1, e2) = (c1.p - c0.p, c2.p - c0.p);
+        let flat = normalize_or(e1.cross(e2), Vec3::Z);
+        let n = c0.n * (1.0 - a - b) + c1.n * a + c2.n * b;
+        Frame {
+            p: c0.p + e1 * a + e2 * b,
+            pu: e1 * 2.0,
+            pv: e2 * 2.0,
+            n: normalize_or(n, flat),
+        }
+    }
+
+    /// The rasterizer's mesh: each triangle with its own three vertices at its chart corners.
+    pub fn mesh(&self) -> Mesh {
+        let data = &*self.data;
+        let triangles = self.triangle_count();
+        let uvs = (0..triangles)
+            .flat_map(|t| CHART_CORNERS.map(|corner| data.cell(t) + corner))
+            .collect();
+        Mesh {
+            positions: data.corners.iter().map(|c| c.p).collect(),
+            uvs,
+            indices: (0..triangles as u32)
+                .map(|t| [3 * t, 3 * t + 1, 3 * t + 2])
+                .collect(),
+            chord_error: 0.0,
+        }
+    }
+
+    /// The texture's (u,v) at a chart (u,v), and how chart steps map to texture steps (a chart
+    /// derivative `d` is `along_u · d.x + along_v · d.y` in the texture); `frame`, whose partials
+    /// were along the chart, is turned to the texture's: partials along its u and v, in the
+    /// MikkTSpace frame (the tangent the model was baked with, and its bitangent) at each one's
+    /// stretch.
+    pub fn to_texture_space(&self, chart: Vec2, frame: &mut Frame) -> TexturePoint {
+        let data = &*self.data;
+        if data.corners.is_empty() {
+            return TexturePoint::default();
+        }
+        let (t, a, b) = data.locate(chart);
+        let [c0, c1, c2] = [0, 1, 2].map(|k| data.triangle(t)[k]);
+        // d(texture uv)/d(chart uv): the chart's corners are half a cell apart.
+        let (along_u, along_v) = ((c1.uv - c0.uv) * 2.0, (c2.uv - c0.uv) * 2.0);
+        let det = along_u.x * along_v.y - along_v.x * along_u.y;
+        // d(chart)/d(texture) is the inverse; each column a partial of P along texture u, v.
+        let (du, dv) = (
+            Vec2::new(along_v.y, -along_u.y) / det,
+            Vec2::new(-along_v.x, along_u.x) / det,
+        );
+        let pu = frame.pu * du.x + frame.pv * du.y;
+        let pv = frame.pu * dv.x + frame.pv * dv.y;
+        let tangent = c0.tangent * (1.0 - a - b) + c1.tangent * a + c2.tangent * b;
+        let n = frame.n;
+        let along = normalize_or(tangent.truncate() - n * n.dot(tangent.truncate()), pu);
+        let across = n.cross(along) * tangent.w.signum();
+        frame.pu = along * pu.length();
+        frame.pv = across * pv.length();
+        TexturePoint {
+            uv: c0.uv + (c1.uv - c0.uv) * a + (c2.uv - c0.uv) * b,
+            along_u,
+            along_v,
+        }
+    }
+}
+
+/// A chart point in the texture: its (u,v) and the texture steps of unit chart steps.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct TexturePoint {
+    pub uv: Vec2,
+    pub along_u: Vec2,
+    pub along_v: Vec2,
+}
+
+impl TexturePoint {
+    /// A chart derivative of (u,v) as the texture's.
+    pub fn derivative(&self, chart: Vec2) -> Vec2 {
+        self.along_u * chart.x + self.along_v * chart.y
+    }
+}

@@ -1,0 +1,216 @@
+//! Models (OBJ meshes) in scenes: the rasterizer's fragments on a model are the exact
+//! reference's, bumps shade it as the reference shades them, and bad model files are one line.
+
+use crate::cli_support::{assert_user_error, bumpwork, stderr, temp_dir};
+use crate::common::render_with;
+use crate::reference_support::{SMALL, raster_error, render_both};
+use bumpwork::raster::{Fragment, FrameObject, PerFragment, PreparedScene, RenderTarget};
+use bumpwork::reference::render_reference;
+use bumpwork::scene::preset;
+use bumpwork::surface::Tessellation;
+use glam::Vec3;
+
+/// The point each fragment names on its object (in the colour channels), and the object in
+/// the depth's place: a pixel on an edge two triangles share may name either, and the same point.
+fn point_shader() -> PerFragment<impl Fn(&FrameObject, &Fragment) -> Vec3 + Sync> {
+    PerFragment(|o: &FrameObject, f: &Fragment| {
+        let surface = &o.prepared.surface;
+        let p = surface.frame(f.uv.x, f.uv.y).p;
+        if f.object == 1 { p } else { Vec3::splat(-1e6) }
+    })
+}
+
+#[test]
+fn a_models_fragments_are_where_the_exact_rays_meet_its_triangles() {
+    let scene = preset("rounded-cube-dimples").unwrap();
+    let prepared = PreparedScene::new(scene.clone(), Tessellation::default());
+    let target = RenderTarget::new(&scene.camera, SMALL);
+    let raster = render_with(&prepared, &target, &point_shader()).0;
+    let reference = render_reference(&prepared, &scene.camera, SMALL, &point_shader()).0;
+    let (mut compared, mut mismatched) = (0, 0);
+    let on_model = |p: Vec3| p.x > -1e5;
+    for i in 0..raster.color().len() {
+        let (a, b) = (raster.color()[i], reference.color()[i]);
+        match (on_model(a), on_model(b)) {
+            (true, true) => {
+                // Model units of a cube 160 across: a thousandth of a unit.
+                compared += 1;
+                assert!(
+                    (a - b).abs().max_element() <= 1e-3,
+                    "pixel {i}: raster {a} against reference {b}"
+                );
+            }
+            (false, false) => {}
+            _ => mismatched += 1,
+        }
+    }
+    assert!(compared > 500, "only {compared} pixels of the model");
+    assert!(
+        mismatched <= 4,
+        "{mismatched} pixels differ in coverage or object"
+    );
+}
+
+/// The model is its own surface, so only pixels whose centre lies on an edge where the
+/// texture's (u,v) jumps (one face's island to the next) or a shadow's edge may differ: two
+/// of 3072 here, which set the PSNR (measured 39.1 dB, 0.04° mean normal error).
+#[test]
+fn a_bumped_model_shades_as_the_exact_reference_shades_it() {
+    let scene = preset("rounded-cube-dimples").unwrap();
+    let density = Tessellation::default().density;
+    let error = raster_error(&scene, SMALL, density);
+    eprintln!("rounded-cube-dimples: {error:?}");
+    assert!(error.psnr_db >= 37.0, "{error:?}");
+    assert!(error.mean_normal_angle_degrees <= 0.1, "{error:?}");
+    assert!(error.silhouette_mismatch <= 4, "{error:?}");
+    let pair = render_both(&scene, SMALL, density, |_| {});
+    let (raster, reference) = (pair.raster.color(), pair.reference.color());
+    let apart = (raster.iter().zip(reference))
+        .filter(|(a, b)| (**a - **b).abs().max_element() > 0.05)
+        .count();
+    assert!(apart <= 4, "{apart} pixels differ by over 5 %");
+}
+
+/// A scene around the model file `name` in `dir`.
+fn model_scene(dir: &std::path::Path, name: &str) -> std::path::PathBuf {
+    let scene = dir.join("scene.toml");
+    let text = format!(
+        "[camera]\neye = [0, 0, 5]\ntarget = [0, 0, 0]\nfov = 40\n\
+         [[light]]\npoint = {{ position = [3, 4, 5] }}\n\
+         [[object]]\nsurface = {{ mesh = {{ file = \"{name}\" }} }}\n\
+         bump = {{ pattern = \"dimples\" }}\n"
+    );
+    std::fs::write(&scene, text).unwrap();
+    scene
+}
+
+const QUAD: &str = "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n\
+                    vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 1/1 2/2 3/3 4/4\n";
+
+fn render(dir: &std::path::Path, model: &str, text: &[u8]) -> std::process::Output {
+    std::fs::write(dir.join(model), text).unwrap();
+    let scene = model_scene(dir, model);
+    let still = dir.join("still.png");
+    bumpwork(&[
+        "render",
+        scene.to_str().unwrap(),
+        "-o",
+        still.to_str().unwrap(),
+        "--size",
+        "64x48",
+    ])
+}
+
+#[test]
+fn bad_model_files_are_one_line_and_degenerate_triangles_are_left_out() {
+    let dir = temp_dir("models-bad");
+    let good = render(&dir, "quad.obj", QUAD.as_bytes());
+    assert!(good.status.success(), "{}", stderr(&good));
+    let no_uvs = "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nf 1 2 3\n";
+    assert_user_error(
+        &render(&dir, "bare.obj", no_uvs.as_bytes()),
+        "no texture coordinates",
+    );
+    let nan = QUAD.replace("v 1 1 0", "v 1 nan 0");
+    assert_user_error(
+        &render(&dir, "nan.obj", nan.as_bytes()),
+        "nan.obj:3:5: expected a finite number, found 'nan'",
+    );
+    let outside = QUAD.replace("f 1/1 2/2 3/3 4/4", "f 1/1 2/2 9/3");
+    assert_user_error(
+        &render(&dir, "outside.obj", outside.as_bytes()),
+        "not a readable OBJ",
+    );
+    assert_user_error(
+        &render(&dir, "binary.obj", b"v 0 0 0\n\xff\xfe\n"),
+        "binary.obj:2:1: expected UTF-8 text",
+    );
+    assert_user_error(
+        &render(&dir, "empty.obj", b"# nothing\n"),
+        "it has no triangles",
+    );
+    let scene = model_scene(&dir, "missing.obj");
+    let missing = bumpwork(&["check", scene.to_str().unwrap()]);
+    assert_user_error(&missing, "missing.obj");
+    // A face repeated onto a line: no area, left out; the model is the quad's other triangle.
+    let degenerate = format!("{QUAD}v 2 2 0\nvt 0.5 0.5\nf 1/1 3/3 5/5\n");
+    let said = bumpwork(&["check", &*render_and_path(&dir, "line.obj", &degenerate)]);
+    assert!(said.status.success(), "{}", stderr(&said));
+    let out = String::from_utf8_lossy(&said.stdout);
+    assert!(out.contains("1 degenerate triangle left out"), "{out}");
+}
+
+/// Writes `text` as the model `name` and returns its scene's path.
+fn render_and_path(dir: &std::path::Path, name: &str, text: &str) -> String {
+    std::fs::write(dir.join(name), text).unwrap();
+    model_scene(dir, name).to_str().unwrap().to_string()
+}
+
+#[test]
+fn a_model_past_the_memory_budget_is_refused_before_it_is_read() {
+    let dir = temp_dir("models-budget");
+    // 200 000 triangles of text (3 MB): past a 16 MiB budget at the worst expansion.
+    let mut text = String::from(QUAD);
+    for _ in 0..200_000 {
+        text.push_str("f 1/1 2/2 3/3\n");
+    }
+    std::fs::write(dir.join("big.obj"), text).unwrap();
+    let scene = model_scene(&dir, "big.obj");
+    let still = dir.join("still.png");
+    let run = std::process::Command::new(env!("CARGO_BIN_EXE_bumpwork"))
+        .args([
+            "render",
+            scene.to_str().unwrap(),
+            "-o",
+            still.to_str().unwrap(),
+        ])
+        .env("BUMPWORK_MEMORY_MIB", "16")
+        .output()
+        .unwrap();
+    assert_user_error(&run, "over the 16 MiB memory budget");
+    assert!(!still.exists());
+}
+
+/// `render --watch model.obj+my.pat`: saving the model or the pattern renders again; Ctrl-C ends
+/// the watch.
+#[test]
+fn a_watched_model_and_its_pattern_render_again_when_either_is_saved() {
+    use std::time::Duration;
+    let dir = temp_dir("models-watch");
+    let (model, pattern, still) = (dir.join("m.obj"), dir.join("p.pat"), dir.join("m.png"));
+    std::fs::write(&model, QUAD).unwrap();
+    std::fs::write(&pattern, "height = sin(u / 10)\n").unwrap();
+    let source = format!("{}+{}", model.display(), pattern.display());
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_bumpwork"))
+        .args(["render", &source, "--size", "48x32", "--watch", "-o"])
+        .arg(&still)
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    let read = || std::fs::read(&still).ok();
+    let wait = |what: &str, condition: &dyn Fn() -> bool| {
+        crate::cli_support::wait_until(what, Duration::from_secs(60), condition)
+    };
+    wait("the first still", &|| read().is_some());
+    let first = read().unwrap();
+    std::fs::write(&pattern, "height = 4 * sin(u / 3)\n").unwrap();
+    wait("a still after the pattern's save", &|| {
+        read().is_some_and(|b| b != first)
+    });
+    let second = read().unwrap();
+    std::fs::write(&model, QUAD.replace("v 1 1 0", "v 1 1 0.8")).unwrap();
+    wait("a still after the model's save", &|| {
+        read().is_some_and(|b| b != second)
+    });
+    // SAFETY: kill only sends a signal to the process we started.
+    assert_eq!(unsafe { libc::kill(child.id() as i32, libc::SIGINT) }, 0);
+    let deadline = std::time::Instant::now() + Duration::from_secs(30);
+    while child.try_wait().unwrap().is_none() {
+        assert!(
+            std::time::Instant::now() < deadline,
+            "still watching after Ctrl-C"
+        );
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    assert_eq!(child.wait().unwrap().code(), Some(0));
+}
