@@ -126,10 +126,24 @@ pub fn scene(data: &[u8]) {
 /// An OBJ model read as a scene reads one: refused with a printable message, or made into
 /// finite triangles whose chart names each one back and that a ray through one meets.
 pub fn obj(data: &[u8]) {
-    let raw = match bumpwork::model::parse_obj(data, "fuzz.obj") {
-        Ok(raw) => raw,
-        Err(error) => return assert_printable(&error.to_string()),
-    };
+    match bumpwork::model::parse_obj(data, "fuzz.obj") {
+        Ok(raw) => assert_model(raw),
+        Err(error) => assert_printable(&error.to_string()),
+    }
+}
+
+/// A glTF or GLB model read with no directory beside it (a buffer file is refused, as one
+/// outside the model's directory is), with `obj`'s properties.
+pub fn gltf(data: &[u8]) {
+    match bumpwork::model::parse_gltf(data, Path::new("fuzz.glb"), None) {
+        Ok(raw) => assert_model(raw),
+        Err(error) => assert_printable(&error.to_string()),
+    }
+}
+
+/// Triangles made into a model are finite, their chart names each one back, and a ray through
+/// one meets it.
+fn assert_model(raw: bumpwork::model::RawTriangles) {
     let model = bumpwork::model::model_data(raw, bumpwork::model::AS_IT_IS);
     for corner in &model.corners {
         assert!(corner.p.is_finite() && corner.n.is_finite() && corner.uv.is_finite());

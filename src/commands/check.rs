@@ -70,14 +70,16 @@ fn check(path: &Path) -> Result<String, String> {
                 models.collect::<String>()
             ))
         }
-        Some("obj") => bumpwork::model::load_model(path, bumpwork::model::AS_IT_IS)
-            .map(|data| bumpwork::model::describe(&data))
-            .map_err(|e| e.to_string()),
+        Some("obj" | "gltf" | "glb") => {
+            bumpwork::model::load_model(path, bumpwork::model::AS_IT_IS)
+                .map(|data| bumpwork::model::describe(&data))
+                .map_err(|e| e.to_string())
+        }
         Some(ext) if IMAGE_EXTENSIONS.contains(&ext) => bumpwork::texture::check_image(path)
             .map(|info| info.to_string())
             .map_err(|e| e.to_string()),
         _ => Err(format!(
-            "{}: not a pattern (.pat), scene (.toml), model (.obj) or image ({}) file",
+            "{}: not a pattern (.pat), scene (.toml), model (.obj, .gltf, .glb) or image ({}) file",
             sanitize(&path.display().to_string()),
             IMAGE_EXTENSIONS.join(", ")
         )),

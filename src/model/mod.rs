@@ -1,12 +1,15 @@
-//! A user's model read from a file (Wavefront OBJ, with the `tobj` crate) into a surface: its
+//! A user's model read from a file (Wavefront OBJ with the `tobj` crate, glTF 2.0 with the
+//! `gltf` crate) into a surface: its
 //! triangles with normals, texture (u,v) and MikkTSpace tangents, checked against the memory
 //! budget before they are made. Degenerate triangles are left out and counted; non-finite
 //! numbers are refused at their line.
 
+mod gltf_file;
 mod obj;
 mod shipped;
 mod tangents;
 
+pub use gltf_file::parse_gltf;
 pub use obj::{MAX_OBJ_EXPANSION, parse_obj};
 pub use shipped::{BUILTIN_MODELS, builtin_model};
 
@@ -41,6 +44,20 @@ pub fn load_named_model(name: &str, base: &Path, placement: Placement) -> Result
         Some(bytes) => Ok(model_data(parse_obj(bytes, name)?, placement)),
         None => load_model(&base.join(name), placement),
     }
+}
+
+/// Whether a model file is glTF (`.gltf` or `.glb`) rather than OBJ, by its name.
+pub fn is_gltf(path: &Path) -> bool {
+    let extension = path
+        .extension()
+        .map(|e| e.to_string_lossy().to_ascii_lowercase());
+    matches!(extension.as_deref(), Some("gltf" | "glb"))
+}
+
+/// Whether a name is a model file's: `.obj`, `.gltf` or `.glb`, any case.
+pub fn is_model_file(name: &str) -> bool {
+    let lower = name.to_ascii_lowercase();
+    [".obj", ".gltf", ".glb"].iter().any(|e| lower.ends_with(e))
 }
 
 /// What a loaded model is, for `check`: its triangles, and those left out.
@@ -84,7 +101,11 @@ pub fn load_model(path: &Path, placement: Placement) -> Result<ModelData, Error>
     }
     let bytes =
         crate::bounded_read::read_bounded(path, size.max(1)).map_err(|e| Error::read(path, e))?;
-    let raw = parse_obj(&bytes, &path.display().to_string())?;
+    let raw = if is_gltf(path) {
+        parse_gltf(&bytes, path, Some(path.parent().unwrap_or(Path::new("."))))?
+    } else {
+        parse_obj(&bytes, &path.display().to_string())?
+    };
     Ok(model_data(raw, placement))
 }
 

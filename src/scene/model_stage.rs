@@ -22,10 +22,11 @@ pub struct ModelSource<'a> {
 }
 
 impl ModelSource<'_> {
-    /// `name` as a model source, if it is one: a name ending in `.obj` (any case), or one joined
-    /// by `+` to a name ending in `.pat`, and not an existing file of another kind.
+    /// `name` as a model source, if it is one: a name ending in `.obj`, `.gltf` or `.glb` (any
+    /// case), or one joined by `+` to a name ending in `.pat`, and not an existing file of
+    /// another kind.
     pub fn parse(name: &str) -> Option<ModelSource<'_>> {
-        let is_model = |n: &str| n.to_ascii_lowercase().ends_with(".obj");
+        let is_model = crate::model::is_model_file;
         if is_model(name) {
             return Some(ModelSource {
                 model: name,

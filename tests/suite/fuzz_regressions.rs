@@ -51,6 +51,11 @@ fn obj_inputs() {
 }
 
 #[test]
+fn gltf_inputs() {
+    replay("gltf", entry::gltf);
+}
+
+#[test]
 fn png_metadata_inputs() {
     replay("png_metadata", entry::png_metadata);
 }

@@ -214,3 +214,94 @@ fn a_watched_model_and_its_pattern_render_again_when_either_is_saved() {
     }
     assert_eq!(child.wait().unwrap().code(), Some(0));
 }
+
+/// The quad as a glTF buffer: four positions, four (u,v) (glTF's v runs down), six indices.
+fn quad_buffer() -> Vec<u8> {
+    let positions: [f32; 12] = [-1., -1., 0., 1., -1., 0., 1., 1., 0., -1., 1., 0.];
+    let uvs: [f32; 8] = [0., 1., 1., 1., 1., 0., 0., 0.];
+    let indices: [u16; 6] = [0, 1, 2, 0, 2, 3];
+    let mut bytes: Vec<u8> = positions.iter().flat_map(|f| f.to_le_bytes()).collect();
+    bytes.extend(uvs.iter().flat_map(|f| f.to_le_bytes()));
+    bytes.extend(indices.iter().flat_map(|i| i.to_le_bytes()));
+    bytes
+}
+
+/// glTF JSON for the quad, its buffer at `uri` (`None`: the GLB's own).
+fn quad_gltf(uri: Option<&str>) -> String {
+    let buffer = match uri {
+        Some(uri) => format!("{{\"byteLength\": 92, \"uri\": \"{uri}\"}}"),
+        None => "{\"byteLength\": 92}".into(),
+    };
+    format!(
+        r#"{{"asset": {{"version": "2.0"}}, "scene": 0, "scenes": [{{"nodes": [0]}}],
+        "nodes": [{{"mesh": 0, "translation": [0, 0, 0.5]}}],
+        "meshes": [{{"primitives": [{{"attributes": {{"POSITION": 0, "TEXCOORD_0": 1}}, "indices": 2}}]}}],
+        "buffers": [{buffer}],
+        "bufferViews": [{{"buffer": 0, "byteOffset": 0, "byteLength": 48}},
+                        {{"buffer": 0, "byteOffset": 48, "byteLength": 32}},
+                        {{"buffer": 0, "byteOffset": 80, "byteLength": 12}}],
+        "accessors": [
+          {{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3",
+            "min": [-1, -1, 0], "max": [1, 1, 0]}},
+          {{"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC2"}},
+          {{"bufferView": 2, "componentType": 5123, "count": 6, "type": "SCALAR"}}]}}"#
+    )
+}
+
+/// A GLB: the JSON chunk and the buffer as its BIN chunk.
+fn quad_glb() -> Vec<u8> {
+    let mut json = quad_gltf(None).into_bytes();
+    while !json.len().is_multiple_of(4) {
+        json.push(b' ');
+    }
+    let mut bin = quad_buffer();
+    while !bin.len().is_multiple_of(4) {
+        bin.push(0);
+    }
+    let total = 12 + 8 + json.len() + 8 + bin.len();
+    let mut glb = b"glTF".to_vec();
+    glb.extend(2u32.to_le_bytes());
+    glb.extend((total as u32).to_le_bytes());
+    glb.extend((json.len() as u32).to_le_bytes());
+    glb.extend(b"JSON");
+    glb.extend(json);
+    glb.extend((bin.len() as u32).to_le_bytes());
+    glb.extend(b"BIN\0");
+    glb.extend(bin);
+    glb
+}
+
+#[test]
+fn gltf_models_read_their_buffers_only_from_beside_them() {
+    let dir = temp_dir("models-gltf");
+    std::fs::write(dir.join("quad.bin"), quad_buffer()).unwrap();
+    let check = |name: &str| bumpwork(&["check", dir.join(name).to_str().unwrap()]);
+    std::fs::write(dir.join("quad.gltf"), quad_gltf(Some("quad.bin"))).unwrap();
+    let beside = check("quad.gltf");
+    assert!(beside.status.success(), "{}", stderr(&beside));
+    assert!(String::from_utf8_lossy(&beside.stdout).contains("a model of 2 triangles"));
+    std::fs::write(dir.join("quad.glb"), quad_glb()).unwrap();
+    let glb = render(&dir, "quad.glb", &quad_glb());
+    assert!(glb.status.success(), "{}", stderr(&glb));
+    // A buffer named outside the model's directory is refused, by name or through a link.
+    let outside = dir.join("outside");
+    std::fs::create_dir_all(&outside).unwrap();
+    std::fs::write(outside.join("up.gltf"), quad_gltf(Some("../quad.bin"))).unwrap();
+    assert_user_error(
+        &check("outside/up.gltf"),
+        "is not a plain name in the model's directory",
+    );
+    std::fs::write(outside.join("abs.gltf"), quad_gltf(Some("/etc/passwd"))).unwrap();
+    assert_user_error(&check("outside/abs.gltf"), "is not a plain name");
+    std::os::unix::fs::symlink(dir.join("quad.bin"), outside.join("link.bin")).unwrap();
+    std::fs::write(outside.join("link.gltf"), quad_gltf(Some("link.bin"))).unwrap();
+    assert_user_error(
+        &check("outside/link.gltf"),
+        "leads outside the model's directory",
+    );
+    std::fs::write(dir.join("short.bin"), &quad_buffer()[..40]).unwrap();
+    std::fs::write(dir.join("short.gltf"), quad_gltf(Some("short.bin"))).unwrap();
+    assert_user_error(&check("short.gltf"), "holds 40 bytes of the 92 it declares");
+    std::fs::write(dir.join("junk.glb"), b"glTF\x02\0\0\0junk").unwrap();
+    assert_user_error(&check("junk.glb"), "not a readable glTF model");
+}
