@@ -322,6 +322,11 @@ pub fn nearest_true_hit(
 }
 
 fn culled(surface: &Surface, eye: DVec3, hit: &Hit, direction: DVec3) -> bool {
+    // A ray's first hit on a closed model seen from outside faces it already; its interpolated
+    // normal may not, near the outline, and the crossing count costs a ray of its own.
+    if let Surface::Model(_) = surface {
+        return false;
+    }
     let normal = || surface.frame(hit.uv.x, hit.uv.y).n.as_dvec3();
     surface.encloses_eye_at(eye) == Some(true) && normal().dot(direction) >= 0.0
 }

@@ -171,6 +171,7 @@ impl Surface {
     pub fn encloses_eye_at(&self, eye_from_anchor: DVec3) -> Option<bool> {
         match self {
             Surface::Sphere(s) => Some(eye_from_anchor.length() > s.radius as f64),
+            Surface::Model(s) => s.encloses_eye_at(eye_from_anchor),
             _ => None,
         }
     }

@@ -37,6 +37,9 @@ pub struct ModelData {
     pub bvh: super::model_bvh::Bvh,
     /// Triangles left out because they had no area in space or in (u,v).
     pub degenerate: usize,
+    /// Whether the triangles close a volume, wound counter-clockwise seen from outside: every
+    /// edge met once each way, and a positive volume. Only then may back faces be culled.
+    pub closed: bool,
 }
 
 /// A model placed in a scene.
@@ -81,12 +84,14 @@ impl ModelData {
         let triangles = corners.len() / 3;
         let columns = (triangles as f64).sqrt().ceil().max(1.0) as u32;
         let bvh = super::model_bvh::Bvh::new(&corners);
+        let closed = closes_a_volume(&corners);
         ModelData {
             corners,
             columns,
             domain,
             bvh,
             degenerate,
+            closed,
         }
     }
 
@@ -119,7 +124,40 @@ impl ModelData {
     }
 }
 
+/// Whether `corners` close a volume wound counter-clockwise from outside (see `closed`).
+fn closes_a_volume(corners: &[Corner]) -> bool {
+    // Adding 0 makes −0 the +0 it equals, so a seam's two zeros are one point.
+    let key = |p: Vec3| p.to_array().map(|c| (c + 0.0).to_bits());
+    let mut edges = std::collections::HashMap::with_capacity(corners.len());
+    for face in corners.chunks_exact(3) {
+        for k in 0..3 {
+            let edge = (key(face[k].p), key(face[(k + 1) % 3].p));
+            if edges.insert(edge, ()).is_some() {
+                return false;
+            }
+        }
+    }
+    let paired = edges.keys().all(|&(a, b)| edges.contains_key(&(b, a)));
+    let volume: f64 = corners
+        .chunks_exact(3)
+        .map(|f| f64::from(f[0].p.dot(f[1].p.cross(f[2].p))))
+        .sum();
+    paired && volume > 0.0
+}
+
 impl ModelSurface {
+    /// For a closed model: whether the eye (relative to the anchor) is outside it, by the
+    /// parity of a ray's crossings; `None` for an open one, whose back faces may show.
+    pub fn encloses_eye_at(&self, eye: DVec3) -> Option<bool> {
+        let data = &*self.data;
+        if !data.closed {
+            return None;
+        }
+        // A direction no face of an axis-aligned model lies along.
+        let direction = DVec3::new(0.5773, 0.5774, 0.5775);
+        Some(data.bvh.crossings(&data.corners, eye, direction).is_multiple_of(2))
+    }
+
     pub fn triangle_count(&self) -> usize {
         self.data.corners.len() / 3
     }
@@ -215,5 +253,63 @@ impl TexturePoint {
     /// A chart derivative of (u,v) as the texture's.
     pub fn derivative(&self, chart: Vec2) -> Vec2 {
         self.along_u * chart.x + self.along_v * chart.y
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A tetrahedron's corners, each face counter-clockwise from outside (reversed: inside).
+    fn tetrahedron(reversed: bool) -> Vec<Corner> {
+        let p = [Vec3::ZERO, Vec3::X, Vec3::Y, Vec3::Z];
+        let faces = [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
+        faces
+            .iter()
+            .flat_map(|&[a, b, c]| if reversed { [a, c, b] } else { [a, b, c] })
+            .map(|i| Corner {
+                p: p[i],
+                n: Vec3::Y,
+                tangent: Vec4::X,
+                uv: p[i].truncate(),
+            })
+            .collect()
+    }
+
+    fn surface(corners: Vec<Corner>) -> ModelSurface {
+        let domain = Domain {
+            min: Vec2::ZERO,
+            max: Vec2::ONE,
+        };
+        ModelSurface {
+            origin: DVec3::ZERO,
+            data: Arc::new(ModelData::new(corners, domain, 0)),
+        }
+    }
+
+    #[test]
+    fn only_a_closed_outward_model_says_whether_the_eye_is_inside() {
+        let closed = surface(tetrahedron(false));
+        assert_eq!(closed.encloses_eye_at(DVec3::splat(5.0)), Some(true));
+        assert_eq!(closed.encloses_eye_at(DVec3::splat(0.1)), Some(false));
+        assert_eq!(
+            surface(tetrahedron(true)).encloses_eye_at(DVec3::splat(5.0)),
+            None
+        );
+        let mut open = tetrahedron(false);
+        open.truncate(9);
+        assert_eq!(surface(open).encloses_eye_at(DVec3::splat(5.0)), None);
+    }
+
+    #[test]
+    fn the_chart_names_every_triangle_and_its_weights() {
+        let model = surface(tetrahedron(false));
+        for t in 0..4 {
+            for (a, b) in [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (0.2, 0.3)] {
+                let (found, fa, fb) = model.data.locate(model.data.chart_uv(t, a, b));
+                assert_eq!(found, t);
+                assert!((fa - a).abs() < 1e-6 && (fb - b).abs() < 1e-6);
+            }
+        }
     }
 }

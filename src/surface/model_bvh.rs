@@ -141,6 +141,41 @@ impl Bvh {
     }
 }
 
+impl Bvh {
+    /// How many triangles the ray from `origin` along `direction` crosses, for t > 0.
+    pub fn crossings(&self, corners: &[Corner], origin: DVec3, direction: DVec3) -> usize {
+        if self.nodes.is_empty() {
+            return 0;
+        }
+        let inverse = direction.recip();
+        let (mut count, mut stack, mut depth) = (0, [0u32; 64], 1);
+        while depth > 0 {
+            depth -= 1;
+            let index = stack[depth];
+            let node = self.nodes[index as usize];
+            if !box_hit(node.min, node.max, origin, inverse, 0.0, f64::INFINITY) {
+                continue;
+            }
+            if node.count > 0 {
+                let run = node.start as usize..(node.start + node.count) as usize;
+                count += self.order[run]
+                    .iter()
+                    .filter_map(|&t| {
+                        let t = t as usize;
+                        triangle_hit(&corners[3 * t..3 * t + 3], origin, direction)
+                    })
+                    .filter(|&(distance, _, _)| distance > 0.0)
+                    .count();
+            } else if depth + 2 <= stack.len() {
+                stack[depth] = node.start;
+                stack[depth + 1] = index + 1;
+                depth += 2;
+            }
+        }
+        count
+    }
+}
+
 /// Whether the ray meets the box for some t in `near..=far` (slabs, in f64).
 fn box_hit(min: Vec3, max: Vec3, origin: DVec3, inverse: DVec3, near: f64, far: f64) -> bool {
     let a = (min.as_dvec3() - origin) * inverse;
