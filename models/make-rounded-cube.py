@@ -1,6 +1,7 @@
 """Writes rounded-cube.obj: a cube of side 2 whose edges and corners are rounded to radius 0.3,
 each face a 14×14 grid (8 cells across its flat part, 3 over each rounded edge), texture (u,v)
-laid out as a cross of six squares (one island a face), normals exact.
+laid out as a cross of six squares (one island a face, each a quarter of the texture
+across), normals exact.
 Run: python3 make-rounded-cube.py > rounded-cube.obj"""
 import math
 
@@ -43,7 +44,7 @@ for normal, u_axis, v_axis, (column, row) in FACES:
             point, n = rounded(p)
             print("v %.5f %.5f %.5f" % tuple(point))
             print("vn %.5f %.5f %.5f" % tuple(n))
-            print("vt %.5f %.5f" % ((column + (s + 1) / 2) / 4, (row + (t + 1) / 2) / 3))
+            print("vt %.5f %.5f" % ((column + (s + 1) / 2) / 4, (row + (t + 1) / 2) / 4))
     for j in range(N):
         for i in range(N):
             a = count + j * (N + 1) + i + 1

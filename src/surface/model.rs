@@ -155,7 +155,11 @@ impl ModelSurface {
         }
         // A direction no face of an axis-aligned model lies along.
         let direction = DVec3::new(0.5773, 0.5774, 0.5775);
-        Some(data.bvh.crossings(&data.corners, eye, direction).is_multiple_of(2))
+        Some(
+            data.bvh
+                .crossings(&data.corners, eye, direction)
+                .is_multiple_of(2),
+        )
     }
 
     pub fn triangle_count(&self) -> usize {

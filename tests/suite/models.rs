@@ -305,3 +305,56 @@ fn gltf_models_read_their_buffers_only_from_beside_them() {
     std::fs::write(dir.join("junk.glb"), b"glTF\x02\0\0\0junk").unwrap();
     assert_user_error(&check("junk.glb"), "not a readable glTF model");
 }
+
+/// The rounded cube close up, its texture cross 640 units wide so a unit of (u,v) is a unit of
+/// its side (a normal map's tilt does not stretch with the surface, a height's slope does),
+/// with `bump`.
+fn cube_scene(bump: &str) -> String {
+    format!(
+        "[camera]\neye = [-120, 200, 260]\ntarget = [0, 40, 0]\nfov = 40\n\
+         [[light]]\npoint = {{ position = [-400, 600, 500] }}\n\
+         [[object]]\nsurface = {{ mesh = {{ file = \"rounded-cube\", position = [0, 80, 0], \
+         scale = 80, uv-scale = 640 }} }}\nbump = {bump}\n"
+    )
+}
+
+/// A tangent-space normal map baked from a pattern shades a model as the pattern does: the
+/// map is read in the model's MikkTSpace frame, the pattern's gradient in its (u,v) partials
+/// turned to the same frame (measured 40.6 dB; 22.2 dB without bumps).
+#[test]
+fn a_baked_normal_map_shades_a_model_as_its_pattern_does() {
+    let dir = temp_dir("models-normal-map");
+    let maps = dir.join("maps");
+    let maps_arg = maps.to_str().unwrap();
+    let baked = bumpwork(&[
+        "bake", "dimples", "-o", maps_arg, "--size", "2048", "--tile", "640,640",
+    ]);
+    assert!(baked.status.success(), "{}", stderr(&baked));
+    let render = |name: &str, bump: &str| {
+        let scene = dir.join(format!("{name}.toml"));
+        std::fs::write(&scene, cube_scene(bump)).unwrap();
+        let still = dir.join(format!("{name}.png"));
+        let run = bumpwork(&[
+            "render",
+            scene.to_str().unwrap(),
+            "-o",
+            still.to_str().unwrap(),
+            "--size",
+            "320x240",
+            "--samples",
+            "16",
+        ]);
+        assert!(run.status.success(), "{}", stderr(&run));
+        crate::cli_support::decode_png(&still).2
+    };
+    let pattern = render("pattern", "{ pattern = \"dimples\" }");
+    let map = render("map", "{ normal-map = \"maps/dimples-normal.png\" }");
+    let flat = render("flat", "{ pattern = \"dimples\", strength = 0 }");
+    let agreement = crate::graphics_support::psnr(&pattern, &map);
+    let unbumped = crate::graphics_support::psnr(&pattern, &flat);
+    eprintln!("normal map against pattern {agreement:.1} dB; unbumped {unbumped:.1} dB");
+    assert!(
+        agreement >= 38.0 && agreement > unbumped + 10.0,
+        "the normal map is {agreement:.1} dB from the pattern, an unbumped cube {unbumped:.1} dB"
+    );
+}
