@@ -109,8 +109,9 @@ pub fn load_model(path: &Path, placement: Placement) -> Result<ModelData, Error>
     Ok(model_data(raw, placement))
 }
 
-/// The model from its raw triangles: degenerate ones left out, normals made where missing,
-/// tangents generated, positions and (u,v) scaled.
+/// The model from its raw triangles: degenerate ones (no area in space or in (u,v), or not
+/// finite once scaled) left out, normals made where missing, tangents generated, positions and
+/// (u,v) scaled.
 pub fn model_data(raw: RawTriangles, placement: Placement) -> ModelData {
     let mut corners = Vec::with_capacity(raw.positions.len() * 3);
     let mut degenerate = 0;
@@ -123,7 +124,9 @@ pub fn model_data(raw: RawTriangles, placement: Placement) -> ModelData {
             .length_squared()
             .max((positions[2] - positions[0]).length_squared());
         let has_area = face.length_squared() > 1e-12 * scale * scale;
-        if !has_area || uv_area.is_nan() || uv_area.abs() <= 1e-12 {
+        // Scaling can overflow what a file gave finite.
+        let finite = positions.iter().all(|p| p.is_finite()) && uvs.iter().all(|t| t.is_finite());
+        if !finite || !has_area || !uv_area.is_finite() || uv_area.abs() <= 1e-12 {
             degenerate += 1;
             continue;
         }

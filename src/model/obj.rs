@@ -95,11 +95,9 @@ fn check_lines(text: &str, file: &str) -> Result<u64, Error> {
 /// An error at the first word after the keyword of `line` (at `offset` in `text`) that is not
 /// a finite number.
 fn check_numbers(text: &str, line: &str, offset: usize, file: &str) -> Result<(), Error> {
-    let keyword_end = line
-        .trim_start()
-        .find(char::is_whitespace)
-        .unwrap_or(line.len());
-    let start = line.len() - line.trim_start().len() + keyword_end;
+    let trimmed = line.trim_start();
+    let keyword_end = trimmed.find(char::is_whitespace).unwrap_or(trimmed.len());
+    let start = line.len() - trimmed.len() + keyword_end;
     let mut at = start;
     for word in line[start..].split_inclusive(char::is_whitespace) {
         let number = word.trim();
@@ -111,7 +109,8 @@ fn check_numbers(text: &str, line: &str, offset: usize, file: &str) -> Result<()
             }
             continue;
         }
-        if !number.parse::<f64>().is_ok_and(f64::is_finite) {
+        // tobj reads f32: 1e39 is finite as f64 but infinite there.
+        if !number.parse::<f32>().is_ok_and(f32::is_finite) {
             return Err(Error::Diagnostic(crate::diagnostic::render(
                 file,
                 text,
