@@ -18,6 +18,7 @@ pub fn parse_gltf(
     directory: Option<&Path>,
 ) -> Result<RawTriangles, Error> {
     let fail = |reason: String| Error::read(file, reason);
+    check_glb_header(bytes).map_err(|why| fail(format!("not a readable glTF model: {why}")))?;
     let gltf = gltf::Gltf::from_slice(bytes)
         .map_err(|e| fail(format!("not a readable glTF model: {e}")))?;
     let budget = crate::memory_budget::budget_bytes();
@@ -47,6 +48,12 @@ pub fn parse_gltf(
         normals: Vec::with_capacity(triangles as usize),
         uvs: Vec::with_capacity(triangles as usize),
     };
+    for mesh in gltf.meshes() {
+        for primitive in mesh.primitives() {
+            check_accessors(&primitive)
+                .map_err(|why| fail(format!("not a readable glTF model: {why}")))?;
+        }
+    }
     let scene = gltf.default_scene().or_else(|| gltf.scenes().next());
     let Some(scene) = scene else {
         return Err(fail("it has no scene".into()));
@@ -65,6 +72,71 @@ pub fn parse_gltf(
         ));
     }
     Ok(raw)
+}
+
+/// A GLB's header, checked before the crate reads it: its length field must cover the header
+/// and no more than the file (the crate's parser takes it on trust).
+fn check_glb_header(bytes: &[u8]) -> Result<(), String> {
+    let Some(header) = bytes.strip_prefix(b"glTF") else {
+        return Ok(());
+    };
+    let field = |at: usize| {
+        header
+            .get(at..at + 4)
+            .map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]]))
+    };
+    let (Some(_version), Some(length)) = (field(0), field(4)) else {
+        return Err("the GLB header is cut short".into());
+    };
+    match length as usize {
+        12.. if length as usize <= bytes.len() => Ok(()),
+        _ => Err(format!(
+            "the GLB header says {length} bytes, the file has {}",
+            bytes.len()
+        )),
+    }
+}
+
+/// Whether a triangle primitive's accessors are what their semantics say (the crate's readers
+/// take them on trust): positions and normals three floats, texture coordinates two numbers,
+/// indices whole numbers, none empty, none sparse.
+fn check_accessors(primitive: &gltf::Primitive) -> Result<(), String> {
+    use gltf::accessor::{DataType, Dimensions};
+    if primitive.mode() != gltf::mesh::Mode::Triangles {
+        return Ok(());
+    }
+    let expect = |what: &str, accessor: gltf::Accessor, dimensions: Dimensions, floats: bool| {
+        let kind_ok = match floats {
+            true => accessor.data_type() == DataType::F32,
+            false => accessor.data_type() != DataType::F32,
+        };
+        let fits = accessor.dimensions() == dimensions && (kind_ok || what == "TEXCOORD_0");
+        let stride = accessor.view().and_then(|view| view.stride());
+        let overlapping = stride.is_some_and(|stride| stride < accessor.size());
+        let empty = accessor.count() == 0 || accessor.view().is_none();
+        if !fits || empty || overlapping || accessor.sparse().is_some() {
+            return Err(format!(
+                "accessor {} for {what} is {:?} {:?} × {}, expected {dimensions:?} values stored in a buffer",
+                accessor.index(),
+                accessor.dimensions(),
+                accessor.data_type(),
+                accessor.count()
+            ));
+        }
+        Ok(())
+    };
+    for (semantic, accessor) in primitive.attributes() {
+        match semantic {
+            gltf::Semantic::Positions => expect("POSITION", accessor, Dimensions::Vec3, true)?,
+            gltf::Semantic::Normals => expect("NORMAL", accessor, Dimensions::Vec3, true)?,
+            gltf::Semantic::TexCoords(0) => expect("TEXCOORD_0", accessor, Dimensions::Vec2, true)?,
+            _ => {}
+        }
+    }
+    if let Some(indices) = primitive.indices() {
+        expect("indices", indices, Dimensions::Scalar, false)?;
+    }
+    Ok(())
 }
 
 /// The triangles every triangle primitive declares, before anything is read.

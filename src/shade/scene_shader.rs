@@ -286,7 +286,10 @@ impl LitShader {
             true_hit_derivatives(surface, rays, fragments, group, frames, moved, derivatives);
         }
         let fragments = &*fragments;
-        if let Some(normals) = &self.vertex_normals {
+        // A model's frames are interpolated from its vertices already (and its fragments'
+        // (u,v) are the texture's by now, which name no triangle).
+        let from_vertices = self.vertex_normals.as_ref();
+        if let Some(normals) = from_vertices.filter(|_| !matches!(surface, Surface::Model(_))) {
             interpolate_frames(
                 &normals[object_index],
                 fragments,

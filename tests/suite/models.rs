@@ -358,3 +358,25 @@ fn a_baked_normal_map_shades_a_model_as_its_pattern_does() {
         "the normal map is {agreement:.1} dB from the pattern, an unbumped cube {unbumped:.1} dB"
     );
 }
+
+/// Interpolated vertex normals are what a model is shaded with anyway: the knob leaves it as
+/// it is (and does not look its texture (u,v) up as a chart).
+#[test]
+fn the_interpolated_normals_knob_leaves_a_model_as_it_is() {
+    let dir = temp_dir("models-knobs");
+    let still = |name: &str, extra: &[&str]| {
+        let out = dir.join(name);
+        let mut args = vec!["render", "rounded-cube-dimples", "--size", "96x72", "-o"];
+        args.push(out.to_str().unwrap());
+        args.extend(extra);
+        let run = bumpwork(&args);
+        assert!(run.status.success(), "{}", stderr(&run));
+        crate::cli_support::decode_png(&out).2
+    };
+    let plain = still("plain.png", &[]);
+    let interpolated = still(
+        "interpolated.png",
+        &["--set", "quality.normals=interpolated-vertex"],
+    );
+    assert_eq!(plain, interpolated);
+}
