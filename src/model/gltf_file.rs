@@ -19,6 +19,8 @@ pub fn parse_gltf(
 ) -> Result<RawTriangles, Error> {
     let fail = |reason: String| Error::read(file, reason);
     check_glb_header(bytes).map_err(|why| fail(format!("not a readable glTF model: {why}")))?;
+    check_position_indices(bytes)
+        .map_err(|why| fail(format!("not a readable glTF model: {why}")))?;
     let gltf = gltf::Gltf::from_slice(bytes)
         .map_err(|e| fail(format!("not a readable glTF model: {e}")))?;
     let budget = crate::memory_budget::budget_bytes();
@@ -105,18 +107,18 @@ fn check_accessors(primitive: &gltf::Primitive) -> Result<(), String> {
     if primitive.mode() != gltf::mesh::Mode::Triangles {
         return Ok(());
     }
-    let expect = |what: &str, accessor: gltf::Accessor, dimensions: Dimensions, floats: bool| {
-        let kind_ok = match floats {
-            true => accessor.data_type() == DataType::F32,
-            false => accessor.data_type() != DataType::F32,
-        };
-        let fits = accessor.dimensions() == dimensions && (kind_ok || what == "TEXCOORD_0");
+    let expect = |what: &str,
+                  accessor: gltf::Accessor,
+                  dimensions: Dimensions,
+                  kinds: &[DataType]| {
+        let fits = accessor.dimensions() == dimensions && kinds.contains(&accessor.data_type());
         let stride = accessor.view().and_then(|view| view.stride());
         let overlapping = stride.is_some_and(|stride| stride < accessor.size());
         let empty = accessor.count() == 0 || accessor.view().is_none();
         if !fits || empty || overlapping || accessor.sparse().is_some() {
             return Err(format!(
-                "accessor {} for {what} is {:?} {:?} × {}, expected {dimensions:?} values stored in a buffer",
+                "accessor {} for {what} is {:?} {:?} × {}, expected {dimensions:?} of {kinds:?} \
+                 stored in a buffer",
                 accessor.index(),
                 accessor.dimensions(),
                 accessor.data_type(),
@@ -125,18 +127,57 @@ fn check_accessors(primitive: &gltf::Primitive) -> Result<(), String> {
         }
         Ok(())
     };
+    let floats = [DataType::F32];
     for (semantic, accessor) in primitive.attributes() {
         match semantic {
-            gltf::Semantic::Positions => expect("POSITION", accessor, Dimensions::Vec3, true)?,
-            gltf::Semantic::Normals => expect("NORMAL", accessor, Dimensions::Vec3, true)?,
-            gltf::Semantic::TexCoords(0) => expect("TEXCOORD_0", accessor, Dimensions::Vec2, true)?,
+            gltf::Semantic::Positions => expect("POSITION", accessor, Dimensions::Vec3, &floats)?,
+            gltf::Semantic::Normals => expect("NORMAL", accessor, Dimensions::Vec3, &floats)?,
+            gltf::Semantic::TexCoords(0) => {
+                let kinds = [DataType::U8, DataType::U16, DataType::F32];
+                expect("TEXCOORD_0", accessor, Dimensions::Vec2, &kinds)?
+            }
             _ => {}
         }
     }
     if let Some(indices) = primitive.indices() {
-        expect("indices", indices, Dimensions::Scalar, false)?;
+        let kinds = [DataType::U8, DataType::U16, DataType::U32];
+        expect("indices", indices, Dimensions::Scalar, &kinds)?;
     }
     Ok(())
+}
+
+/// Every primitive's POSITION names an accessor there is: the crate's validation looks the
+/// accessor up before it checks the index.
+fn check_position_indices(bytes: &[u8]) -> Result<(), String> {
+    let json = match bytes.starts_with(b"glTF") {
+        true => gltf::Glb::from_slice(bytes)
+            .map_err(|e| e.to_string())?
+            .json
+            .into_owned(),
+        false => bytes.to_vec(),
+    };
+    // What does not parse is the crate's to report.
+    let Ok(root) = gltf::json::Root::from_slice(&json) else {
+        return Ok(());
+    };
+    let positions = root
+        .meshes
+        .iter()
+        .flat_map(|mesh| &mesh.primitives)
+        .filter_map(|p| {
+            p.attributes.get(&gltf::json::validation::Checked::Valid(
+                gltf::Semantic::Positions,
+            ))
+        });
+    match positions
+        .map(|index| index.value())
+        .find(|&i| i >= root.accessors.len())
+    {
+        Some(index) => Err(format!(
+            "a POSITION names accessor {index}, and there is none"
+        )),
+        None => Ok(()),
+    }
 }
 
 /// The triangles every triangle primitive declares, before anything is read.
