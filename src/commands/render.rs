@@ -25,7 +25,8 @@ use std::path::{Path, PathBuf};
 
 #[derive(clap::Args)]
 pub struct RenderArgs {
-    /// A built-in scene name (see --list), a scene file (.toml) or a pattern file (.pat).
+    /// A built-in scene name (see --list), a scene file (.toml), a pattern file (.pat) or a model
+    /// (.obj, .gltf, .glb; MODEL+PATTERN.pat puts the pattern on it).
     #[arg(required_unless_present_any = ["list", "from"], conflicts_with = "from")]
     scene: Option<String>,
     /// The file to write.

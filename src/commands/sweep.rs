@@ -18,7 +18,8 @@ use std::path::{Path, PathBuf};
 
 #[derive(clap::Args)]
 pub struct SweepArgs {
-    /// A built-in scene name, a scene file (.toml) or a pattern file (.pat).
+    /// A built-in scene name, a scene file (.toml), a pattern file (.pat) or a model
+    /// (.obj, .gltf, .glb; MODEL+PATTERN.pat puts the pattern on it).
     scene: String,
     /// A setting to vary, KEY=START..END:COUNT (COUNT values, both ends included) or
     /// KEY=A,B,C, with any key `--set` takes (repeatable: every combination is rendered, the
