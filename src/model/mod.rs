@@ -1,8 +1,7 @@
 //! A user's model read from a file (Wavefront OBJ with the `tobj` crate, glTF 2.0 with the
-//! `gltf` crate) into a surface: its
-//! triangles with normals, texture (u,v) and MikkTSpace tangents, checked against the memory
-//! budget before they are made. Degenerate triangles are left out and counted; non-finite
-//! numbers are refused at their line.
+//! `gltf` crate) into a surface: its triangles with normals, texture (u,v) and MikkTSpace
+//! tangents, checked against the memory budget before they are made. Degenerate triangles are
+//! left out and counted; an OBJ's non-finite numbers are refused at their line.
 
 mod gltf_file;
 mod obj;
@@ -84,7 +83,8 @@ pub fn load_model(path: &Path, placement: Placement) -> Result<ModelData, Error>
         .map_err(|e| Error::read(path, crate::bounded_read::io_words(&e)))?
         .len();
     // A byte of OBJ text makes at most MAX_OBJ_EXPANSION bytes of model (a face line of
-    // 8 bytes, one triangle): refused before it is read where that could pass the budget.
+    // 8 bytes, one triangle): refused before it is read where that could pass the budget. (A
+    // glTF model's triangles are counted from its accessors before its buffers are read.)
     let worst = size.saturating_mul(MAX_OBJ_EXPANSION);
     if worst > budget {
         return Err(Error::read(
