@@ -291,11 +291,16 @@ fn run_instrs_here<T: Lane>(instrs: &[Instr], slots: &mut [T::Real]) {
     }
 }
 
-/// One monomorphised lane loop per op, so the op's `match` is resolved outside the loop.
+/// One monomorphised lane loop per op, so the op's `match` is resolved outside the loop. Ops of
+/// up to three operands read three slots; only `fbm` of (x, y, z) reads a fourth.
 macro_rules! lane_loops {
     ($op:expr, $out:expr, $operands:expr; $($name:ident),* $(,)?) => {
         match $op {
-            $(Op::$name => lanes::<T>($out, $operands, |a, b, c, d| apply(Op::$name, a, b, c, d)),)*
+            Op::Fbm3 => lanes4::<T>($out, $operands, |a, b, c, d| apply(Op::Fbm3, a, b, c, d)),
+            $(Op::$name => {
+                let [a, b, c, _] = $operands;
+                lanes::<T>($out, a, b, c, |x, y, z| apply(Op::$name, x, y, z, x))
+            })*
         }
     };
 }
@@ -306,13 +311,33 @@ fn dispatch<T: Lane>(op: Op, out: &mut [T::Real], operands: [&[T::Real]; 4]) {
         Neg, Not, Sin, Cos, Tan, Asin, Acos, Atan, Sqrt, Abs, Sign, Floor, Ceil, Fract, Exp, Log,
         Add, Sub, Mul, Div, Pow, Mod, Min, Max, Atan2, Hypot, Step, Lt, Le, Gt, Ge, Eq, Ne, And,
         Or, Noise2, Perlin2, Cells2, Select, Clamp, Mix, Smoothstep, Hypot3, Noise3, Perlin3,
-        Cells3, Fbm2, Fbm3,
+        Cells3, Fbm2,
     );
 }
 
 #[inline(always)]
-fn lanes<T: Lane>(out: &mut [T::Real], operands: [&[T::Real]; 4], f: impl Fn(T, T, T, T) -> T) {
+fn lanes<T: Lane>(
+    out: &mut [T::Real],
+    a: &[T::Real],
+    b: &[T::Real],
+    c: &[T::Real],
+    f: impl Fn(T, T, T) -> T,
+) {
     // Exact lengths let the compiler drop the bounds checks in the loop.
+    let (out, a, b, c) = (
+        &mut out[..T::SLOT],
+        &a[..T::SLOT],
+        &b[..T::SLOT],
+        &c[..T::SLOT],
+    );
+    for i in 0..CHUNK {
+        T::set(out, i, f(T::get(a, i), T::get(b, i), T::get(c, i)));
+    }
+}
+
+/// `lanes` for an op of four operands.
+#[inline(always)]
+fn lanes4<T: Lane>(out: &mut [T::Real], operands: [&[T::Real]; 4], f: impl Fn(T, T, T, T) -> T) {
     let out = &mut out[..T::SLOT];
     let [a, b, c, d] = operands.map(|operand| &operand[..T::SLOT]);
     for i in 0..CHUNK {
