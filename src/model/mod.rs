@@ -78,6 +78,12 @@ pub const AS_IT_IS: Placement = Placement {
 
 /// Reads the model at `path` into a surface's data.
 pub fn load_model(path: &Path, placement: Placement) -> Result<ModelData, Error> {
+    Ok(model_data(read_triangles(path)?, placement))
+}
+
+/// The model file at `path` as its raw triangles, before anything is made of them (enough to
+/// know where a model lies).
+pub fn read_triangles(path: &Path) -> Result<RawTriangles, Error> {
     let budget = crate::memory_budget::budget_bytes();
     let size = std::fs::metadata(path)
         .map_err(|e| Error::read(path, crate::bounded_read::io_words(&e)))?
@@ -101,12 +107,11 @@ pub fn load_model(path: &Path, placement: Placement) -> Result<ModelData, Error>
     }
     let bytes =
         crate::bounded_read::read_bounded(path, size.max(1)).map_err(|e| Error::read(path, e))?;
-    let raw = if is_gltf(path) {
-        parse_gltf(&bytes, path, Some(path.parent().unwrap_or(Path::new("."))))?
+    if is_gltf(path) {
+        parse_gltf(&bytes, path, Some(path.parent().unwrap_or(Path::new("."))))
     } else {
-        parse_obj(&bytes, &path.display().to_string())?
-    };
-    Ok(model_data(raw, placement))
+        parse_obj(&bytes, &path.display().to_string())
+    }
 }
 
 /// The model from its raw triangles: degenerate ones (no area in space or in (u,v), or not

@@ -103,10 +103,10 @@ fn check_numbers(text: &str, line: &str, offset: usize, file: &str) -> Result<()
         let number = word.trim();
         let column = at + (word.len() - word.trim_start().len());
         at += word.len();
-        if number.is_empty() || number.starts_with('#') {
-            if number.starts_with('#') {
-                break;
-            }
+        if number.starts_with('#') {
+            break;
+        }
+        if number.is_empty() {
             continue;
         }
         // tobj reads f32: 1e39 is finite as f64 but infinite there.

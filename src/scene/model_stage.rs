@@ -53,8 +53,9 @@ impl ModelSource<'_> {
 
     /// The stage with the model on it, as a scene file.
     pub fn scene_file(&self) -> Result<SceneFile, Error> {
-        let model = crate::model::load_model(Path::new(self.model), crate::model::AS_IT_IS)?;
-        let (min, max) = bounds(&model);
+        // Only where the model lies is needed here: its triangles are made when the scene is.
+        let raw = crate::model::read_triangles(Path::new(self.model))?;
+        let (min, max) = bounds(&raw);
         let size = (max - min).max_element();
         if !(size > 0.0 && size.is_finite()) {
             return Err(Error::read(
@@ -111,10 +112,14 @@ fn pattern_binding(pattern: &str) -> BindingFile {
     }
 }
 
-/// The model's box, in its own units.
-fn bounds(model: &crate::surface::ModelData) -> (Vec3, Vec3) {
-    model.corners.iter().fold(
-        (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY)),
-        |(min, max), corner| (min.min(corner.p), max.max(corner.p)),
-    )
+/// The box of the model's finite corners, in its own units.
+fn bounds(raw: &crate::model::RawTriangles) -> (Vec3, Vec3) {
+    raw.positions
+        .iter()
+        .flatten()
+        .filter(|p| p.is_finite())
+        .fold(
+            (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY)),
+            |(min, max), &p| (min.min(p), max.max(p)),
+        )
 }
