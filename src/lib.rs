@@ -18,7 +18,7 @@ pub mod reference;
 pub mod scene;
 pub mod shade;
 pub mod shadow;
-mod simd;
+pub mod simd;
 pub mod still;
 pub mod surface;
 pub mod sweep;
