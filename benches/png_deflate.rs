@@ -118,9 +118,7 @@ fn main() {
     println!("  png crate, whole file:");
     for (label, filter, deflate) in settings {
         let mut bytes = 0;
-        let timing = Timing::measure(1, runs(), || {
-            bytes = png(&rows, filter, deflate).len()
-        });
+        let timing = Timing::measure(1, runs(), || bytes = png(&rows, filter, deflate).len());
         println!("    {label:<40} {}  {bytes:>9} B", timing.summary_ms());
     }
     let filtered = up_filtered(&rows);
