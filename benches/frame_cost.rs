@@ -16,16 +16,14 @@ mod bench_support;
 
 use bench_support::render_into;
 use bench_support::{
-    pov_peer_files, pov_peer_settings, textured_sphere_scene, time_png_stills, write_pov_peer_scene,
+    PeerStill, pov_peer_files, pov_peer_settings, textured_sphere_scene, time_png_stills,
+    write_pov_peer_scene,
 };
-use bumpwork::export::StillRequest;
 use bumpwork::quality::Quality;
 use bumpwork::raster::{FragmentShader, Framebuffer, PreparedScene, RenderTarget, Viewport};
 use bumpwork::scene::Camera;
 use bumpwork::scene::load_scene_file;
-use bumpwork::still::{
-    BandBuffers, BandJob, Recipe, ResolveFilter, Supersampling, render_supersampled,
-};
+use bumpwork::still::{BandBuffers, BandJob, ResolveFilter, Supersampling, render_supersampled};
 use bumpwork::surface::Tessellation;
 use glam::Vec3;
 
@@ -50,19 +48,8 @@ fn stills(n: usize, samples: u32, contrast: Option<f32>) {
     let dir = std::env::temp_dir().join(format!("bumpwork-still-cost-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("temp dir");
     let (_, text, scene) = pov_peer_files(&dir);
-    let camera = scene.camera.clone();
-    let settings = pov_peer_settings(samples, contrast);
-    let prepared = settings.prepare(scene, &camera).unwrap();
-    let recipe = Recipe::capture("peer", &prepared.scene, &camera, &settings);
-    let request = StillRequest {
-        prepared: &prepared,
-        camera: &camera,
-        settings,
-        scene_text: &text,
-        recipe: &recipe,
-        frame: None,
-        sweep: None,
-    };
+    let still = PeerStill::new(scene, text, pov_peer_settings(samples, contrast));
+    let request = still.request();
     let out = dir.join("still.png");
     let timing = time_png_stills(&request, &out, n);
     println!("{n} stills: {}", timing.summary_ms());

@@ -9,10 +9,9 @@
 
 mod bench_support;
 
-use bench_support::{pov_peer_files, pov_peer_settings};
-use bumpwork::export::{StillFormat, StillRequest, write_still};
+use bench_support::{PeerStill, pov_peer_files, pov_peer_settings};
+use bumpwork::export::StillFormat;
 use bumpwork::measure::Timing;
-use bumpwork::still::Recipe;
 use std::io::Write;
 
 const SIZE: (u32, u32) = (1920, 1080);
@@ -29,21 +28,8 @@ fn still_rows() -> Vec<u8> {
     let dir = std::env::temp_dir().join(format!("bumpwork-png-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("temp dir");
     let (_, text, scene) = pov_peer_files(&dir);
-    let camera = scene.camera.clone();
-    let settings = pov_peer_settings(1, None);
-    let prepared = settings.prepare(scene, &camera).expect("prepared");
-    let recipe = Recipe::capture("peer", &prepared.scene, &camera, &settings);
-    let request = StillRequest {
-        prepared: &prepared,
-        camera: &camera,
-        settings,
-        scene_text: &text,
-        recipe: &recipe,
-        frame: None,
-        sweep: None,
-    };
     let out = dir.join("still.png");
-    write_still(&request, &out, StillFormat::Png, &mut |_| {}, &|| None).expect("still");
+    PeerStill::new(scene, text, pov_peer_settings(1, None)).write(&out, StillFormat::Png);
     let rows = image::open(&out).expect("still").to_rgb8().into_raw();
     let _ = std::fs::remove_dir_all(&dir);
     rows

@@ -134,6 +134,50 @@ pub fn pov_peer_settings(samples: u32, adaptive_samples: Option<f32>) -> StillSe
     }
 }
 
+/// The POV-Ray peer's scene (or a variant of it) prepared for a 1920×1080 still.
+pub struct PeerStill {
+    pub prepared: bumpwork::raster::PreparedScene,
+    pub camera: Camera,
+    pub settings: StillSettings,
+    pub recipe: bumpwork::still::Recipe,
+    pub text: String,
+}
+
+impl PeerStill {
+    /// `scene` (written as `text`) at `settings`.
+    pub fn new(scene: Scene, text: String, settings: StillSettings) -> PeerStill {
+        let camera = scene.camera.clone();
+        let prepared = settings
+            .prepare(scene, &camera)
+            .expect("prepared peer scene");
+        let recipe = bumpwork::still::Recipe::capture("peer", &prepared.scene, &camera, &settings);
+        PeerStill {
+            prepared,
+            camera,
+            settings,
+            recipe,
+            text,
+        }
+    }
+
+    pub fn request(&self) -> StillRequest<'_> {
+        StillRequest {
+            prepared: &self.prepared,
+            camera: &self.camera,
+            settings: self.settings,
+            scene_text: &self.text,
+            recipe: &self.recipe,
+            frame: None,
+            sweep: None,
+        }
+    }
+
+    /// Writes the still to `out` as `format`.
+    pub fn write(&self, out: &Path, format: StillFormat) {
+        write_still(&self.request(), out, format, &mut |_| {}, &|| None).expect("still");
+    }
+}
+
 /// Writes `request` as a PNG still to `out` `runs` times after one unmeasured run; their times.
 pub fn time_png_stills(request: &StillRequest, out: &Path, runs: usize) -> Timing {
     Timing::measure(1, runs, || {

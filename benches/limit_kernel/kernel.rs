@@ -500,10 +500,26 @@ fn power_40(x: f32) -> f32 {
     x32 * x8
 }
 
+/// The finer of the two mip levels for a footprint of ∂(s,t)/∂x and ∂(s,t)/∂y, and how far
+/// towards the coarser one it lies.
+#[inline(always)]
+fn levels<T: bumpwork::texture::Averageable>(
+    chain: &MipChain<T>,
+    footprint: [Vec2; 2],
+) -> (usize, f32) {
+    let lod = level_of_detail(chain, footprint);
+    let fine = lod.floor();
+    (fine as usize, lod - fine)
+}
+
 /// The mip level (fractional) for a footprint of ∂(s,t)/∂x and ∂(s,t)/∂y.
 #[inline(always)]
-fn level_of_detail(base: (u32, u32), coarsest: usize, footprint: [Vec2; 2]) -> f32 {
-    let texels = Vec2::new(base.0 as f32, base.1 as f32);
+fn level_of_detail<T: bumpwork::texture::Averageable>(
+    chain: &MipChain<T>,
+    footprint: [Vec2; 2],
+) -> f32 {
+    let (base, coarsest) = (chain.base(), chain.coarsest_level());
+    let texels = Vec2::new(base.width() as f32, base.height() as f32);
     let longest = (footprint[0] * texels)
         .length_squared()
         .max((footprint[1] * texels).length_squared());
@@ -534,19 +550,12 @@ fn wrap(i: i32, n: u32, repeat: bool) -> usize {
 /// Trilinear sample of `chain` at `st` (s repeating, t clamped).
 #[inline(always)]
 fn trilinear(chain: &MipChain<Texel>, st: Vec2, footprint: [Vec2; 2]) -> Vec3 {
-    let base = chain.base();
-    let lod = level_of_detail(
-        (base.width(), base.height()),
-        chain.coarsest_level(),
-        footprint,
-    );
-    let fine = lod.floor();
-    let near = bilinear(chain.level(fine as usize), st);
-    let blend = lod - fine;
+    let (fine, blend) = levels(chain, footprint);
+    let near = bilinear(chain.level(fine), st);
     if blend == 0.0 {
         return near;
     }
-    near + (bilinear(chain.level(fine as usize + 1), st) - near) * blend
+    near + (bilinear(chain.level(fine + 1), st) - near) * blend
 }
 
 #[inline(always)]
@@ -563,19 +572,12 @@ fn bilinear(level: &TexelGrid<Texel>, st: Vec2) -> Vec3 {
 /// Height and its (s, t) gradient by Catmull-Rom at the footprint's two mip levels.
 #[inline(always)]
 fn catmull_rom_height(chain: &MipChain<f32>, st: Vec2, footprint: [Vec2; 2]) -> (f32, Vec2) {
-    let base = chain.base();
-    let lod = level_of_detail(
-        (base.width(), base.height()),
-        chain.coarsest_level(),
-        footprint,
-    );
-    let fine = lod.floor();
-    let (h, g) = bicubic(chain.level(fine as usize), st);
-    let blend = lod - fine;
+    let (fine, blend) = levels(chain, footprint);
+    let (h, g) = bicubic(chain.level(fine), st);
     if blend == 0.0 {
         return (h, g);
     }
-    let (h2, g2) = bicubic(chain.level(fine as usize + 1), st);
+    let (h2, g2) = bicubic(chain.level(fine + 1), st);
     (h + (h2 - h) * blend, g + (g2 - g) * blend)
 }
 

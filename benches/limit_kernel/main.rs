@@ -15,14 +15,11 @@
 mod bench_support;
 mod kernel;
 
-use bench_support::{pov_peer_files, pov_peer_settings};
-use bumpwork::export::{StillFormat, StillRequest, write_still};
+use bench_support::{PeerStill, pov_peer_files, pov_peer_settings};
+use bumpwork::export::StillFormat;
 use bumpwork::measure::{Timing, ratio_by_round};
-use bumpwork::raster::PreparedScene;
-use bumpwork::scene::{Camera, Scene};
-use bumpwork::still::Recipe;
+use bumpwork::scene::Scene;
 use kernel::PeerKernel;
-use std::path::Path;
 use std::time::Duration;
 
 const SIZE: (u32, u32) = (1920, 1080);
@@ -60,40 +57,6 @@ fn variants(full: &Scene) -> Vec<(&'static str, Scene)> {
     out
 }
 
-/// Our still of a scene, written as `format` into `out`.
-struct OursStill {
-    prepared: PreparedScene,
-    camera: Camera,
-    recipe: Recipe,
-}
-
-impl OursStill {
-    fn new(scene: Scene) -> OursStill {
-        let camera = scene.camera.clone();
-        let settings = pov_peer_settings(1, None);
-        let prepared = settings.prepare(scene, &camera).expect("prepared");
-        let recipe = Recipe::capture("peer", &prepared.scene, &camera, &settings);
-        OursStill {
-            prepared,
-            camera,
-            recipe,
-        }
-    }
-
-    fn write(&self, out: &Path, format: StillFormat) {
-        let request = StillRequest {
-            prepared: &self.prepared,
-            camera: &self.camera,
-            settings: pov_peer_settings(1, None),
-            scene_text: "",
-            recipe: &self.recipe,
-            frame: None,
-            sweep: None,
-        };
-        write_still(&request, out, format, &mut |_| {}, &|| None).expect("still");
-    }
-}
-
 /// `kernel N`: only the kernel's frame, N times (for a profiler).
 fn kernel_only() -> Option<usize> {
     let args: Vec<String> = std::env::args()
@@ -129,7 +92,13 @@ fn main() {
     }
     let steps: Vec<_> = variants(&full)
         .into_iter()
-        .map(|(part, scene)| (part, PeerKernel::new(&scene, SIZE), OursStill::new(scene)))
+        .map(|(part, scene)| {
+            (
+                part,
+                PeerKernel::new(&scene, SIZE),
+                PeerStill::new(scene, String::new(), pov_peer_settings(1, None)),
+            )
+        })
         .collect();
 
     let (kernel, ours) = (&steps[0].1, &steps[0].2);
@@ -175,7 +144,7 @@ fn main() {
 }
 
 /// The whole frames, then each part's cost in both and their ratio.
-fn report(steps: &[(&str, PeerKernel, OursStill)], times: &[Vec<Duration>]) {
+fn report(steps: &[(&str, PeerKernel, PeerStill)], times: &[Vec<Duration>]) {
     let (kernel_full, ours_full, ours_ppm) = (&times[0], &times[1], &times[times.len() - 1]);
     let (ratio, least, most) = ratio_by_round(ours_full, kernel_full);
     println!(
