@@ -6,7 +6,7 @@
 //! `still` writes the POV-Ray peer's PNG still FRAMES times as `peer_povray` does (render, 8-bit
 //! conversion, PNG encoding, sync; 1 sample per pixel unless SAMPLES, adaptive at CONTRAST if
 //! given) and prints the wall time's median and range, for comparing two builds run one after
-//! the other.
+//! the other; with BUMPWORK_NO_SHADOWS set, the still is rendered without shadows.
 //!
 //! Run: `cargo bench --bench frame_cost -- euc|pov|pov16|still FRAMES [ARGS]` (pov16: CONTRAST;
 //! still: SAMPLES CONTRAST), e.g. under
@@ -47,7 +47,10 @@ fn frames(prepared: &PreparedScene, camera: &Camera, shader: &impl FragmentShade
 fn stills(n: usize, samples: u32, contrast: Option<f32>) {
     let dir = std::env::temp_dir().join(format!("bumpwork-still-cost-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("temp dir");
-    let (_, text, scene) = pov_peer_files(&dir);
+    let (_, text, mut scene) = pov_peer_files(&dir);
+    if std::env::var_os("BUMPWORK_NO_SHADOWS").is_some() {
+        scene.shadows = false;
+    }
     let still = PeerStill::new(scene, text, pov_peer_settings(samples, contrast));
     let request = still.request();
     let out = dir.join("still.png");
