@@ -226,7 +226,9 @@ impl PeerKernel {
         let mut indices = [[0u16; LANES]; 3];
         for (indices, channel) in indices.iter_mut().zip([&color.x, &color.y, &color.z]) {
             for (index, &c) in indices.iter_mut().zip(channel) {
-                *index = (c.clamp(0.0, 1.0) * 65535.0 + 0.5) as i32 as u16;
+                let scaled = if c > 0.0 { c.min(1.0) } else { 0.0 } * 65535.0 + 0.5;
+                // SAFETY: NaN fails the comparison, so `scaled` lies in [0.5, 65535.5].
+                *index = unsafe { scaled.to_int_unchecked::<i32>() } as u16;
             }
         }
         for (k, out) in out.iter_mut().enumerate() {

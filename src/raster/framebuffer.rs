@@ -187,10 +187,16 @@ fn srgb8_table() -> &'static [u8; 1 << 16] {
     })
 }
 
-/// The table entry nearest `linear`; NaN clamps to NaN, and casts to 0.
+/// The table entry nearest `linear`; NaN goes to 0. `as` conversions saturate, and the
+/// compiler does that one channel at a time (measured: 9 % of a plain still); an unchecked
+/// conversion of a value known to be in range is one vector instruction for eight.
 #[inline(always)]
 fn table_index(linear: f32) -> u16 {
-    (linear.clamp(0.0, 1.0) * 65535.0 + 0.5) as u16
+    // NaN fails the comparison and goes to 0 (`clamp` would keep it).
+    let within = if linear > 0.0 { linear.min(1.0) } else { 0.0 };
+    let index = within * 65535.0 + 0.5;
+    // SAFETY: `index` is finite and within [0.5, 65535.5], so it fits an i32.
+    unsafe { index.to_int_unchecked::<i32>() as u16 }
 }
 
 fn srgb_encode(linear: f64) -> u8 {
@@ -219,6 +225,29 @@ mod tests {
         encode_srgb8(&linear, &mut batch);
         let single: Vec<u8> = linear.iter().map(|&x| linear_to_srgb8(x)).collect();
         assert_eq!(batch, single);
+    }
+
+    #[test]
+    fn table_index_is_the_saturating_conversion_for_any_float() {
+        let saturating = |x: f32| (x.clamp(0.0, 1.0) * 65535.0 + 0.5) as u16;
+        let odd = [
+            f32::NAN,
+            -f32::NAN,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            -0.0,
+            0.0,
+            f32::MIN_POSITIVE / 2.0,
+            1.0,
+            1.0 + f32::EPSILON,
+            f32::MAX,
+            -f32::MAX,
+            0.5 / 65535.0,
+        ];
+        let sweep = (0..200_000).map(|i| i as f32 / 150_000.0 - 0.1);
+        for x in odd.into_iter().chain(sweep) {
+            assert_eq!(table_index(x), saturating(x), "at {x:e}");
+        }
     }
 
     #[test]
