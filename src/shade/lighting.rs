@@ -146,8 +146,8 @@ fn blinn_phong_lanes<Pairs: Iterator<Item = (Vec3, Vec3)>>(
         for (index, light) in lights.lights.iter().enumerate() {
             // Copied into a lane array first: read through `get` in the loop below, the
             // compiler made masked loads of `reach`, and when it is empty (no shadows) every one
-            // of them touched its dangling address and took a microcode assist (measured: a
-            // shadowless still took 10 % longer than one with shadows).
+            // of them touched its dangling address and took a microcode assist, so a still
+            // without shadows took longer than one with them.
             let mut reaching = [1.0f32; LANES];
             if !reach.is_empty() {
                 let row = index * fragments + first;
