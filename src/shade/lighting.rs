@@ -201,15 +201,28 @@ fn power_lanes(x: &mut [f32; LANES], exponent: f32) {
         x.iter_mut().for_each(|x| *x = x.powf(exponent));
         return;
     }
+    let least = least_base(exponent);
+    x.iter_mut()
+        .for_each(|x| *x = if *x < least { 0.0 } else { *x });
     let (mut base, mut n, mut result) = (*x, exponent as u32, [1.0f32; LANES]);
     while n > 0 {
         if n & 1 == 1 {
             (0..LANES).for_each(|k| result[k] *= base[k]);
         }
-        (0..LANES).for_each(|k| base[k] *= base[k]);
         n >>= 1;
+        if n > 0 {
+            (0..LANES).for_each(|k| base[k] *= base[k]);
+        }
     }
     *x = result;
+}
+
+/// The least base whose power `exponent` is a normal float. Below it the power is subnormal or
+/// zero, far below anything a colour can show, and it is taken as zero: arithmetic on subnormal
+/// floats takes a microcode assist on x86, many times a multiply's time.
+#[inline(always)]
+fn least_base(exponent: f32) -> f32 {
+    f32::MIN_POSITIVE.powf(1.0 / exponent)
 }
 
 /// Whether `power` takes `exponent` by repeated squaring.
@@ -224,13 +237,16 @@ fn power(x: f32, exponent: f32) -> f32 {
     if !is_whole_power(exponent) {
         return x.powf(exponent);
     }
+    let x = if x < least_base(exponent) { 0.0 } else { x };
     let (mut base, mut n, mut result) = (x, exponent as u32, 1.0f32);
     while n > 0 {
         if n & 1 == 1 {
             result *= base;
         }
-        base *= base;
         n >>= 1;
+        if n > 0 {
+            base *= base;
+        }
     }
     result
 }
@@ -248,6 +264,24 @@ mod tests {
                     (got - want).abs() <= 1e-5 * want.max(1e-30) + 1e-30,
                     "{x}^{exponent}: {got} vs {want}"
                 );
+            }
+        }
+    }
+
+    #[test]
+    fn powers_are_zero_or_normal_floats() {
+        for exponent in [1.0, 2.0, 7.0, 32.0, 40.0, 1024.0] {
+            let least = least_base(exponent);
+            for i in 0..=2000 {
+                let x = i as f32 / 2000.0;
+                let (got, exact) = (power(x, exponent), f64::from(x).powf(f64::from(exponent)));
+                assert!(
+                    got == 0.0 || got >= f32::MIN_POSITIVE,
+                    "{x}^{exponent} = {got:e}"
+                );
+                // Only powers below the least normal float are dropped.
+                assert!(got != 0.0 || exact < 1.0001 * f64::from(f32::MIN_POSITIVE));
+                assert_eq!(got == 0.0, x < least, "{x}^{exponent}");
             }
         }
     }
