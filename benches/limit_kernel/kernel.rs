@@ -492,9 +492,11 @@ fn atan2(y: f32, x: f32) -> f32 {
     if y < 0.0 { -r } else { r }
 }
 
-/// x⁴⁰, the peer's shininess, in six multiplies.
+/// x⁴⁰, the peer's shininess, in six multiplies; 0 below 0.1127, where x⁴⁰ would be a
+/// subnormal float (slow on x86) far under any colour's last bit.
 #[inline(always)]
 fn power_40(x: f32) -> f32 {
+    let x = if x < 0.1127 { 0.0 } else { x };
     let x2 = x * x;
     let x4 = x2 * x2;
     let x8 = x4 * x4;
