@@ -492,7 +492,7 @@ fn atan2(y: f32, x: f32) -> f32 {
     if y < 0.0 { -r } else { r }
 }
 
-/// x⁴⁰, the peer's shininess, in six multiplies; 0 below 0.1127, where x⁴⁰ would be a
+/// x⁴⁰, the peer's shininess, in six multiplies; 0 below 0.1127, about where x⁴⁰ becomes a
 /// subnormal float (slow on x86) far under any colour's last bit.
 #[inline(always)]
 fn power_40(x: f32) -> f32 {
