@@ -80,12 +80,22 @@ impl LitShader {
 /// Zeroes `reach` where the light is behind the seen side of the geometric surface (facing
 /// unit `normals` at camera-relative `points`), or the side cannot be told (a NaN normal).
 fn stop_at_terminator(light: &RelativeLight, points: &[Vec3], normals: &[Vec3], reach: &mut [f32]) {
-    for ((reach, &p), &n) in reach.iter_mut().zip(points).zip(normals) {
-        let faces_light = n.dot(light.way_from(p)) > 0.0;
-        if !faces_light {
-            *reach = 0.0;
+    // One loop per kind of light, compiled for the widest SIMD: with the light's kind matched
+    // inside it, the loop stayed scalar.
+    #[inline(always)]
+    fn stop(points: &[Vec3], normals: &[Vec3], reach: &mut [f32], way: impl Fn(Vec3) -> Vec3) {
+        for ((reach, &p), &n) in reach.iter_mut().zip(points).zip(normals) {
+            let faces_light = n.dot(way(p)) > 0.0;
+            *reach = if faces_light { *reach } else { 0.0 };
         }
     }
+    crate::simd::widest(
+        #[inline(always)]
+        || match *light {
+            RelativeLight::Point { position, .. } => stop(points, normals, reach, |p| position - p),
+            RelativeLight::Directional { towards, .. } => stop(points, normals, reach, |_| towards),
+        },
+    );
 }
 
 /// Per-thread working memory, reused for every batch.
