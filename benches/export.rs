@@ -22,10 +22,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 fn runs() -> usize {
-    std::env::var("BUMPWORK_BENCH_RUNS")
-        .ok()
-        .and_then(|r| r.parse().ok())
-        .unwrap_or(7)
+    bench_support::runs_or(7)
 }
 
 /// The bench scene as a file (the binary reads it for the memory measurement).

@@ -25,10 +25,7 @@ const WIDTH: usize = 1920;
 const HEIGHT: usize = 1080;
 
 fn runs() -> usize {
-    std::env::var("BUMPWORK_BENCH_RUNS")
-        .ok()
-        .and_then(|r| r.parse().ok())
-        .unwrap_or(15)
+    bench_support::runs_or(15)
 }
 
 /// The textured sphere as euc sees it: indexed vertices, per-pixel lighting.

@@ -28,10 +28,7 @@ use std::time::Duration;
 const SIZE: (u32, u32) = (1920, 1080);
 
 fn runs() -> usize {
-    std::env::var("BUMPWORK_BENCH_RUNS")
-        .ok()
-        .and_then(|r| r.parse().ok())
-        .unwrap_or(3)
+    bench_support::runs_or(3)
 }
 
 /// The adaptive supersampling contrast the peer is run with.

@@ -17,10 +17,7 @@ use std::io::Write;
 const SIZE: (u32, u32) = (1920, 1080);
 
 fn runs() -> usize {
-    std::env::var("BUMPWORK_BENCH_RUNS")
-        .ok()
-        .and_then(|r| r.parse().ok())
-        .unwrap_or(7)
+    bench_support::runs_or(7)
 }
 
 /// The peer's still, as 8-bit RGB rows.

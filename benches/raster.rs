@@ -19,10 +19,7 @@ use glam::Vec3;
 
 /// Frames per measurement; `BUMPWORK_BENCH_RUNS=1` makes a single-frame run for callgrind.
 fn runs() -> usize {
-    std::env::var("BUMPWORK_BENCH_RUNS")
-        .ok()
-        .and_then(|r| r.parse().ok())
-        .unwrap_or(31)
+    bench_support::runs_or(31)
 }
 
 fn main() {

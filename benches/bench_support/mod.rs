@@ -17,6 +17,14 @@ use glam::{DVec3, Vec3};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
+/// The rounds a benchmark runs: `BUMPWORK_BENCH_RUNS` if set, else `default`.
+pub fn runs_or(default: usize) -> usize {
+    std::env::var("BUMPWORK_BENCH_RUNS")
+        .ok()
+        .and_then(|r| r.parse().ok())
+        .unwrap_or(default)
+}
+
 /// A lit unit sphere filling 540 of 1080 pixels, in the middle of the frame.
 pub fn sphere_scene() -> Scene {
     // r / d = sin(atan(0.5·tan 20°)) puts the 1-unit sphere 540 of 1080 pixels high at fov 40°.

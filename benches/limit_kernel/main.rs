@@ -25,10 +25,7 @@ use std::time::Duration;
 const SIZE: (u32, u32) = (1920, 1080);
 
 fn runs() -> usize {
-    std::env::var("BUMPWORK_BENCH_RUNS")
-        .ok()
-        .and_then(|r| r.parse().ok())
-        .unwrap_or(5)
+    bench_support::runs_or(5)
 }
 
 /// The scene with all its parts, then with one more taken off at each step: each step's name
