@@ -20,6 +20,7 @@ use bumpwork::export::StillFormat;
 use bumpwork::measure::{Timing, ratio_by_round};
 use bumpwork::scene::Scene;
 use kernel::PeerKernel;
+use std::path::Path;
 use std::time::Duration;
 
 const SIZE: (u32, u32) = (1920, 1080);
@@ -80,26 +81,38 @@ fn main() {
     let dir = std::env::temp_dir().join(format!("bumpwork-limit-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("temp dir");
     let (_, _, full) = pov_peer_files(&dir);
-    let pixels = (SIZE.0 * SIZE.1) as usize;
     if let Some(frames) = kernel_only() {
         let kernel = PeerKernel::new(&full, SIZE);
-        let mut frame = vec![[0u8; 3]; pixels];
+        let mut frame = vec![[0u8; 3]; pixel_count()];
         (0..frames).for_each(|_| kernel.render(&mut frame));
-        return;
+    } else {
+        let steps: Vec<_> = variants(&full)
+            .into_iter()
+            .map(|(part, scene)| {
+                let ours = PeerStill::new(scene.clone(), String::new(), pov_peer_settings(1, None));
+                (part, PeerKernel::new(&scene, SIZE), ours)
+            })
+            .collect();
+        println!(
+            "{}x{} POV-Ray peer frame, 1 sample; {} rounds. Kernel against our still: {:.1} dB",
+            SIZE.0,
+            SIZE.1,
+            runs(),
+            same_frame(&steps[0].1, &steps[0].2, &dir)
+        );
+        report(&steps, &time_parts(&steps, &dir));
     }
-    let steps: Vec<_> = variants(&full)
-        .into_iter()
-        .map(|(part, scene)| {
-            (
-                part,
-                PeerKernel::new(&scene, SIZE),
-                PeerStill::new(scene, String::new(), pov_peer_settings(1, None)),
-            )
-        })
-        .collect();
+    let _ = std::fs::remove_dir_all(&dir);
+}
 
-    let (kernel, ours) = (&steps[0].1, &steps[0].2);
-    let mut frame = vec![[0u8; 3]; pixels];
+fn pixel_count() -> usize {
+    (SIZE.0 * SIZE.1) as usize
+}
+
+/// The PSNR of the kernel's frame against our still (written into `dir`); the kernel's frame
+/// also goes to BUMPWORK_KERNEL_PNG if that is set.
+fn same_frame(kernel: &PeerKernel, ours: &PeerStill, dir: &Path) -> f64 {
+    let mut frame = vec![[0u8; 3]; pixel_count()];
     kernel.render(&mut frame);
     let png = dir.join("ours.png");
     ours.write(&png, StillFormat::Png);
@@ -109,22 +122,20 @@ fn main() {
         .pixels()
         .map(|p| p.0)
         .collect();
-    println!(
-        "{}x{} POV-Ray peer frame, 1 sample; {} rounds. Kernel against our still: {:.1} dB",
-        SIZE.0,
-        SIZE.1,
-        runs(),
-        psnr(&ours_frame, &frame)
-    );
     if let Some(path) = std::env::var_os("BUMPWORK_KERNEL_PNG") {
         let flat: Vec<u8> = frame.iter().flatten().copied().collect();
         image::save_buffer(&path, &flat, SIZE.0, SIZE.1, image::ColorType::Rgb8).expect("png");
     }
+    psnr(&ours_frame, &frame)
+}
 
-    let ppm = dir.join("ours.ppm");
+/// Every step's kernel frame and our still, then our full still as a PPM, taking turns round
+/// by round: their times, in that order.
+fn time_parts(steps: &[(&str, PeerKernel, PeerStill)], dir: &Path) -> Vec<Vec<Duration>> {
+    let (png, ppm) = (dir.join("ours.png"), dir.join("ours.ppm"));
     let mut works: Vec<Box<dyn FnMut()>> = Vec::new();
-    for (_, kernel, ours) in &steps {
-        let mut frame = vec![[0u8; 3]; pixels];
+    for (_, kernel, ours) in steps {
+        let mut frame = vec![[0u8; 3]; pixel_count()];
         works.push(Box::new(move || kernel.render(&mut frame)));
         let png = png.clone();
         works.push(Box::new(move || ours.write(&png, StillFormat::Png)));
@@ -135,9 +146,7 @@ fn main() {
         .iter_mut()
         .map(|w| (1, &mut **w as &mut dyn FnMut()))
         .collect();
-    let times = Timing::interleaved(1, runs(), &mut turns);
-    report(&steps, &times);
-    let _ = std::fs::remove_dir_all(&dir);
+    Timing::interleaved(1, runs(), &mut turns)
 }
 
 /// The whole frames, then each part's cost in both and their ratio.
