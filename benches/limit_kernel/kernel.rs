@@ -27,6 +27,9 @@ const LANES: usize = 64;
 
 type Lane = [f32; LANES];
 
+/// Rows a pool thread takes at a time.
+const ROWS_PER_TASK: usize = 8;
+
 /// Vectors of a lane of pixels, one array per coordinate.
 #[derive(Clone, Copy)]
 struct Vectors {
@@ -176,14 +179,14 @@ impl PeerKernel {
     /// The frame as 8-bit sRGB, row-major, on the rayon pool.
     pub fn render(&self, out: &mut [[u8; 3]]) {
         assert_eq!(out.len(), self.width * self.height);
-        out.par_chunks_mut(self.width * 8)
+        out.par_chunks_mut(self.width * ROWS_PER_TASK)
             .enumerate()
             .for_each(|(band, rows)| {
                 bumpwork::simd::widest(
                     #[inline(always)]
                     || {
                         for (r, row) in rows.chunks_mut(self.width).enumerate() {
-                            self.row(band * 8 + r, row);
+                            self.row(band * ROWS_PER_TASK + r, row);
                         }
                     },
                 )
