@@ -2,7 +2,7 @@
 //! a normal map (both conventions) that shade a plane as the pattern itself does, the recipe in
 //! every map, and bad input told in one line.
 
-use crate::cli_support::{assert_user_error, bumpwork, decode_png, stderr, temp_dir};
+use crate::cli_support::{assert_user_error, bumpwork, decode_png, run_ok, stderr, temp_dir};
 use crate::graphics_support::psnr;
 use std::path::Path;
 
@@ -16,12 +16,6 @@ fn plane_scene(bump: &str) -> String {
          surface = {{ plane = {{ origin = [-200, -200, 0], normal = [0, 0, 1], u-axis = [1, 0, 0], size = [400, 400] }} }}\n\
          material = {{ color = [0.72, 0.72, 0.78] }}\nbump = {bump}\n"
     )
-}
-
-fn run_ok(args: &[&str]) -> String {
-    let output = bumpwork(args);
-    assert!(output.status.success(), "{args:?}: {}", stderr(&output));
-    stderr(&output)
 }
 
 /// The plane with `bump`, rendered at 1024 × 1024 from a scene file in `dir`, 16 samples a
@@ -52,7 +46,9 @@ fn baked_height_and_normal_maps_shade_the_plane_as_the_pattern_does() {
     // The dimples' rims are slope discontinuities: a height map, read through a Catmull-Rom
     // filter and its mip chain, needs about ten texels per pattern unit to draw them as sharply.
     let heights = &format!("{out}/fine");
-    let said = run_ok(&["bake", "dimples", "-o", heights, "--size", "4096"]);
+    let said = stderr(&run_ok(&[
+        "bake", "dimples", "-o", heights, "--size", "4096",
+    ]));
     let strength: f32 = said
         .split("strength = ")
         .nth(1)

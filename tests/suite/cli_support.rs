@@ -13,6 +13,13 @@ pub fn bumpwork(args: &[&str]) -> Output {
         .expect("the binary runs")
 }
 
+/// Runs the binary and asserts it succeeded (the arguments and its stderr otherwise).
+pub fn run_ok(args: &[&str]) -> Output {
+    let output = bumpwork(args);
+    assert!(output.status.success(), "{args:?}: {}", stderr(&output));
+    output
+}
+
 pub fn temp_dir(name: &str) -> TestDir {
     TestDir::new(&format!("cli-{name}"))
 }

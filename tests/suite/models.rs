@@ -1,7 +1,7 @@
 //! Models (OBJ meshes) in scenes: the rasterizer's fragments on a model are the exact
 //! reference's, bumps shade it as the reference shades them, and bad model files are one line.
 
-use crate::cli_support::{assert_user_error, bumpwork, stderr, temp_dir};
+use crate::cli_support::{assert_user_error, bumpwork, run_ok, stderr, temp_dir};
 use crate::common::render_with;
 use crate::reference_support::{SMALL, raster_error, render_both};
 use bumpwork::raster::{Fragment, FrameObject, PerFragment, PreparedScene, RenderTarget};
@@ -326,15 +326,14 @@ fn a_baked_normal_map_shades_a_model_as_its_pattern_does() {
     let dir = temp_dir("models-normal-map");
     let maps = dir.join("maps");
     let maps_arg = maps.to_str().unwrap();
-    let baked = bumpwork(&[
+    run_ok(&[
         "bake", "dimples", "-o", maps_arg, "--size", "2048", "--tile", "640,640",
     ]);
-    assert!(baked.status.success(), "{}", stderr(&baked));
     let render = |name: &str, bump: &str| {
         let scene = dir.join(format!("{name}.toml"));
         std::fs::write(&scene, cube_scene(bump)).unwrap();
         let still = dir.join(format!("{name}.png"));
-        let run = bumpwork(&[
+        run_ok(&[
             "render",
             scene.to_str().unwrap(),
             "-o",
@@ -344,7 +343,6 @@ fn a_baked_normal_map_shades_a_model_as_its_pattern_does() {
             "--samples",
             "16",
         ]);
-        assert!(run.status.success(), "{}", stderr(&run));
         crate::cli_support::decode_png(&still).2
     };
     let pattern = render("pattern", "{ pattern = \"dimples\" }");
@@ -369,8 +367,7 @@ fn the_interpolated_normals_knob_leaves_a_model_as_it_is() {
         let mut args = vec!["render", "rounded-cube-dimples", "--size", "96x72", "-o"];
         args.push(out.to_str().unwrap());
         args.extend(extra);
-        let run = bumpwork(&args);
-        assert!(run.status.success(), "{}", stderr(&run));
+        run_ok(&args);
         crate::cli_support::decode_png(&out).2
     };
     let plain = still("plain.png", &[]);
