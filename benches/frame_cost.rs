@@ -6,7 +6,8 @@
 //! `still` writes the POV-Ray peer's PNG still FRAMES times as `peer_povray` does (render, 8-bit
 //! conversion, PNG encoding, sync; 1 sample per pixel unless SAMPLES, adaptive at CONTRAST if
 //! given) and prints the wall time's median and range, for comparing two builds run one after
-//! the other; with BUMPWORK_NO_SHADOWS set, the still is rendered without shadows.
+//! the other; with BUMPWORK_NO_SHADOWS set, the still is rendered without shadows, and with
+//! BUMPWORK_PLAIN set, without shadows, bumps or textures (the limit kernel's plain objects).
 //!
 //! Run: `cargo bench --bench frame_cost -- euc|pov|pov16|still FRAMES [ARGS]` (pov16: CONTRAST;
 //! still: SAMPLES CONTRAST), e.g. under
@@ -50,6 +51,13 @@ fn stills(n: usize, samples: u32, contrast: Option<f32>) {
     let (_, text, mut scene) = pov_peer_files(&dir);
     if std::env::var_os("BUMPWORK_NO_SHADOWS").is_some() {
         scene.shadows = false;
+    }
+    if std::env::var_os("BUMPWORK_PLAIN").is_some() {
+        scene.shadows = false;
+        for object in &mut scene.objects {
+            object.material.bump = None;
+            object.material.texture = None;
+        }
     }
     let still = PeerStill::new(scene, text, pov_peer_settings(samples, contrast));
     let request = still.request();
