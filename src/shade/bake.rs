@@ -7,7 +7,7 @@ use super::pattern_batch::{PatternBatch, Sites};
 use crate::pattern::OutputKind;
 use crate::raster::Fragment;
 use crate::scene::{Bump, BumpSource, Material, Texturing};
-use crate::surface::{Frame, Surface};
+use crate::surface::{Frame, Frames, Surface};
 use crate::texture::{Footprint, SurfacePoint, TextureMapping};
 use glam::{Vec2, Vec3};
 
@@ -49,7 +49,7 @@ impl BakeGrid {
 }
 
 /// The (u,v) at each cell of one grid row, and the surface frames there.
-fn grid_row(surface: &Surface, grid: &BakeGrid, row: u32) -> (Vec<Fragment>, Vec<Frame>) {
+fn grid_row(surface: &Surface, grid: &BakeGrid, row: u32) -> (Vec<Fragment>, Frames) {
     let fragments: Vec<Fragment> = (0..grid.width)
         .map(|column| Fragment {
             object: 0,
@@ -107,10 +107,12 @@ pub fn bake_color_on(
                 batch.colors(binding, at, time, &mut colors);
             }
             Some(Texturing::Image(image)) => {
-                for ((color, fragment), frame) in colors.iter_mut().zip(&fragments).zip(&frames) {
+                for ((color, fragment), frame) in
+                    colors.iter_mut().zip(&fragments).zip(frames.iter())
+                {
                     let st = image
                         .mapping
-                        .map(&surface_point(frame, fragment.uv, time))
+                        .map(&surface_point(&frame, fragment.uv, time))
                         .st;
                     *color = image
                         .texture
@@ -166,8 +168,8 @@ pub fn bake_bump_on(surface: &Surface, bump: &Bump, time: f64, grid: &BakeGrid) 
             }
             BumpSource::Image(image) => {
                 let each = heights.iter_mut().zip(gradients.iter_mut());
-                for ((h, g), (fragment, frame)) in each.zip(fragments.iter().zip(&frames)) {
-                    let mapped = image.mapping.map(&surface_point(frame, fragment.uv, time));
+                for ((h, g), (fragment, frame)) in each.zip(fragments.iter().zip(frames.iter())) {
+                    let mapped = image.mapping.map(&surface_point(&frame, fragment.uv, time));
                     let sample = (image.map).sample_gradient(
                         mapped.st,
                         image.wrap_s,
@@ -179,10 +181,10 @@ pub fn bake_bump_on(surface: &Surface, bump: &Bump, time: f64, grid: &BakeGrid) 
                 }
             }
             BumpSource::NormalMap(map) => {
-                let each = fragments.iter().zip(&frames);
+                let each = fragments.iter().zip(frames.iter());
                 for ((g, h), (fragment, frame)) in gradients.iter_mut().zip(&mut heights).zip(each)
                 {
-                    let point = surface_point(frame, fragment.uv, time);
+                    let point = surface_point(&frame, fragment.uv, time);
                     *g = map.gradient(&point);
                     *h = 0.0;
                 }
@@ -191,8 +193,8 @@ pub fn bake_bump_on(surface: &Surface, bump: &Bump, time: f64, grid: &BakeGrid) 
         if has_height {
             heights_out.extend(heights.iter().map(|h| h * scale));
         }
-        let each = gradients.iter().zip(&frames);
-        normals.extend(each.map(|(g, frame)| tangent_normal(*g * scale, frame)));
+        let each = gradients.iter().zip(frames.iter());
+        normals.extend(each.map(|(g, frame)| tangent_normal(*g * scale, &frame)));
     }
     BakedBump {
         heights: has_height.then_some(heights_out),

@@ -7,7 +7,7 @@
 //! Pu × Pv pointing inwards; every form here is oriented by the outward n instead.
 
 use super::lanes::{LANES, Lanes};
-use crate::surface::{Frame, Surface, normalize_or};
+use crate::surface::{Frame, Frames, Surface, normalize_or};
 use glam::{Vec2, Vec3};
 
 /// Which normal the bump produces: the trade between speed and exactness.
@@ -73,7 +73,7 @@ fn full_unnormalised(frame: &Frame, b: f32, bu: f32, bv: f32, nu: Vec3, nv: Vec3
 /// one). `false`, with nothing written, for other surfaces.
 pub fn full_normals_in_closed_form(
     surface: &Surface,
-    frames: &[Frame],
+    frames: &Frames,
     heights: &[f32],
     gradients: &[Vec2],
     out: &mut [Vec3],
@@ -88,17 +88,15 @@ pub fn full_normals_in_closed_form(
     crate::simd::widest(
         #[inline(always)]
         || {
-            let each = frames
-                .iter()
-                .zip(heights)
-                .zip(gradients)
-                .zip(out.iter_mut());
-            for (((frame, &b), gradient), out) in each {
-                let (bu, bv) = (gradient.x, gradient.y);
-                let (nu, nv) = closed_form_normal_derivatives(surface, frame);
-                let bumped = normalize_or(full_unnormalised(frame, b, bu, bv, nu, nv), frame.n);
+            let frames = frames.slices();
+            let n = frames.len;
+            let (heights, gradients, out) = (&heights[..n], &gradients[..n], &mut out[..n]);
+            for k in 0..n {
+                let (frame, b, (bu, bv)) = (frames.at(k), heights[k], gradients[k].into());
+                let (nu, nv) = closed_form_normal_derivatives(surface, &frame);
+                let bumped = normalize_or(full_unnormalised(&frame, b, bu, bv, nu, nv), frame.n);
                 let unbumped = b == 0.0 && bu == 0.0 && bv == 0.0;
-                *out = if unbumped { frame.n } else { bumped };
+                out[k] = if unbumped { frame.n } else { bumped };
             }
         },
     );
@@ -166,7 +164,7 @@ impl BlinnTilt {
 /// `bumped_normal` in the Blinn form for a whole group: the same bits, computed a lane of
 /// fragments at a time in the widest SIMD the CPU has (one fragment at a time, its square roots
 /// and divisions were a third of the shader's own time).
-pub fn blinn_normals(frames: &[Frame], heights: &[f32], gradients: &[Vec2], out: &mut [Vec3]) {
+pub fn blinn_normals(frames: &Frames, heights: &[f32], gradients: &[Vec2], out: &mut [Vec3]) {
     crate::simd::widest(
         #[inline(always)]
         || blinn_normal_lanes(frames, heights, gradients, out),
@@ -191,20 +189,18 @@ pub fn blinn_normals_on_flat(frame: &Frame, heights: &[f32], gradients: &[Vec2],
 }
 
 #[inline(always)]
-fn blinn_normal_lanes(frames: &[Frame], heights: &[f32], gradients: &[Vec2], out: &mut [Vec3]) {
+fn blinn_normal_lanes(frames: &Frames, heights: &[f32], gradients: &[Vec2], out: &mut [Vec3]) {
     let n = out.len();
-    let chunks = frames[..n]
+    let chunks = heights[..n]
         .chunks(LANES)
-        .zip(heights[..n].chunks(LANES))
         .zip(gradients[..n].chunks(LANES))
         .zip(out.chunks_mut(LANES));
-    for (((frames, heights), gradients), out) in chunks {
+    for (chunk, ((heights, gradients), out)) in chunks.enumerate() {
+        let range = chunk * LANES..chunk * LANES + out.len();
         let [mut normal, mut pu, mut pv] = [(); 3].map(|_| Lanes::splat(Vec3::ZERO));
-        for (k, frame) in frames.iter().enumerate() {
-            normal.set(k, frame.n);
-            pu.set(k, frame.pu);
-            pv.set(k, frame.pv);
-        }
+        normal.load(&frames.n, range.clone());
+        pu.load(&frames.pu, range.clone());
+        pv.load(&frames.pv, range);
         let bump = BumpLanes::new(heights, gradients);
         let normals = Lanes::from_fn(|k| {
             let frame = Frame {
@@ -373,7 +369,12 @@ mod tests {
         gradients[5] = Vec2::new(1e30, -1e30);
         gradients[6] = Vec2::new(f32::NAN, 0.0);
         let mut lanes = vec![Vec3::NAN; count];
-        blinn_normals(&frames, &heights, &gradients, &mut lanes);
+        blinn_normals(
+            &frames.iter().copied().collect(),
+            &heights,
+            &gradients,
+            &mut lanes,
+        );
         for (k, frame) in frames.iter().enumerate() {
             let (g, b) = (gradients[k], heights[k]);
             let one = bumped_normal(&sphere, Vec2::ZERO, frame, b, g.x, g.y, NormalForm::Blinn);
@@ -413,7 +414,12 @@ mod tests {
                 .collect();
             let (mut flat, mut each) = (vec![Vec3::NAN; count], vec![Vec3::NAN; count]);
             blinn_normals_on_flat(&frames[0], &heights, &gradients, &mut flat);
-            blinn_normals(&frames, &heights, &gradients, &mut each);
+            blinn_normals(
+                &frames.iter().copied().collect(),
+                &heights,
+                &gradients,
+                &mut each,
+            );
             let bits = |v: Vec3| v.to_array().map(f32::to_bits);
             for k in 0..count {
                 assert_eq!(
@@ -483,8 +489,13 @@ mod tests {
                 .map(|i| Vec2::new((i % 5) as f32 * 0.3 - 0.6, (i % 3) as f32 * -0.2))
                 .collect();
             let mut batch = vec![Vec3::ZERO; 100];
+            let batch_frames = frames.iter().copied().collect();
             assert!(full_normals_in_closed_form(
-                &surface, &frames, &heights, &gradients, &mut batch
+                &surface,
+                &batch_frames,
+                &heights,
+                &gradients,
+                &mut batch
             ));
             for k in 0..100 {
                 let (b, g) = (heights[k], gradients[k]);

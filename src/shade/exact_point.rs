@@ -5,7 +5,7 @@
 
 use super::exact_coverage::{Neighbours, cast_dropped, nearer_neighbours};
 use crate::raster::{Fragment, FrameObject, SampleRays};
-use crate::surface::{Frame, Surface, TrueHit, uv_derivatives};
+use crate::surface::{Frames, Surface, TrueHit, uv_derivatives};
 use glam::{DVec3, Vec2, Vec3};
 
 /// Where a fragment of a curved surface is shaded.
@@ -158,7 +158,7 @@ pub(super) fn true_hit_derivatives(
     rays: &SampleRays,
     fragments: &mut [Fragment],
     group: &[u32],
-    frames: &[Frame],
+    frames: &Frames,
     moved: &[bool],
     scratch: &mut DerivativeScratch,
 ) {
@@ -183,11 +183,14 @@ pub(super) fn true_hit_derivatives(
     crate::simd::widest(
         #[inline(always)]
         || {
-            let each = frames.iter().zip(&scratch.rays);
-            for ((frame, &(direction, t)), out) in each.zip(&mut scratch.derivatives) {
-                *out = (
-                    uv_derivatives(frame, t, direction, dx, domain),
-                    uv_derivatives(frame, t, direction, dy, domain),
+            let frames = frames.slices();
+            let n = frames.len;
+            let (rays, out) = (&scratch.rays[..n], &mut scratch.derivatives[..n]);
+            for k in 0..n {
+                let (frame, (direction, t)) = (frames.at(k), rays[k]);
+                out[k] = (
+                    uv_derivatives(&frame, t, direction, dx, domain),
+                    uv_derivatives(&frame, t, direction, dy, domain),
                 );
             }
         },

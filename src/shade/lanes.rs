@@ -2,7 +2,9 @@
 //! coordinate, so a loop over the lanes that works on `Vec3`s compiles to SIMD over fragments
 //! (an array of `Vec3`s or of frames compiled to shuffles instead: measured).
 
+use crate::surface::Vectors;
 use glam::Vec3;
+use std::ops::Range;
 
 /// Fragments a lane loop takes at once.
 pub const LANES: usize = 64;
@@ -36,6 +38,16 @@ impl Lanes {
             first.set(k, a);
             second.set(k, b);
         }
+    }
+
+    /// Sets the first lanes to `vectors[range]` (at most `LANES` of them).
+    #[inline(always)]
+    pub fn load(&mut self, vectors: &Vectors, range: Range<usize>) {
+        let n = range.len();
+        let [x, y, z] = vectors.coordinates();
+        self.x[..n].copy_from_slice(&x[range.clone()]);
+        self.y[..n].copy_from_slice(&y[range.clone()]);
+        self.z[..n].copy_from_slice(&z[range]);
     }
 
     #[inline(always)]

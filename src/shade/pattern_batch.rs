@@ -4,7 +4,7 @@
 use crate::pattern::{BumpSample, Inputs, Precision, Scratch};
 use crate::raster::Fragment;
 use crate::scene::{PatternBinding, Placement};
-use crate::surface::Frame;
+use crate::surface::{Frames, Vectors};
 use glam::{Vec2, Vec3};
 
 /// Where a pattern is evaluated: the fragments `group` picks out, and their surface frames in
@@ -13,7 +13,7 @@ use glam::{Vec2, Vec3};
 pub struct Sites<'a> {
     pub fragments: &'a [Fragment],
     pub group: &'a [u32],
-    pub frames: &'a [Frame],
+    pub frames: &'a Frames,
 }
 
 /// Whether the point's partials are loaded: only a height's gradient reads them.
@@ -82,22 +82,13 @@ impl InputLanes {
         };
         let [x, y, z, x_u, y_u, z_u, x_v, y_v, z_v] = &mut self.point;
         if lanes >= 3 {
-            write_vectors([x, y, z], n, at.frames.iter().map(|frame| frame.p));
+            copy_vectors([x, y, z], n, &at.frames.p);
         }
         if lanes == 9 {
             let inverse = jacobian.inverse();
-            let along =
-                |column: glam::Vec2| move |frame: &Frame| frame.pu * column.x + frame.pv * column.y;
-            write_vectors(
-                [x_u, y_u, z_u],
-                n,
-                at.frames.iter().map(along(inverse.x_axis)),
-            );
-            write_vectors(
-                [x_v, y_v, z_v],
-                n,
-                at.frames.iter().map(along(inverse.y_axis)),
-            );
+            let tangents = (&at.frames.pu, &at.frames.pv);
+            write_combined([x_u, y_u, z_u], n, tangents, inverse.x_axis);
+            write_combined([x_v, y_v, z_v], n, tangents, inverse.y_axis);
         }
         let read = |lane: &'a [f32], used: bool| if used { &lane[..n] } else { &[][..] };
         let uv = pattern.uses_uv();
@@ -180,11 +171,19 @@ fn at_least<T: Clone + Default>(values: &mut Vec<T>, n: usize) -> &mut [T] {
     &mut values[..n]
 }
 
-/// Writes the first `n` vectors' x, y and z into the three lanes.
-fn write_vectors(lanes: [&mut Vec<f32>; 3], n: usize, vectors: impl Iterator<Item = Vec3>) {
-    let [x, y, z] = lanes.map(|lane| at_least(lane, n));
-    for (((v, x), y), z) in vectors.zip(x).zip(y).zip(z) {
-        (*x, *y, *z) = (v.x, v.y, v.z);
+/// The first `n` of `vectors` into `lanes`, a coordinate to a lane.
+fn copy_vectors(lanes: [&mut Vec<f32>; 3], n: usize, vectors: &Vectors) {
+    for (lane, coordinate) in lanes.into_iter().zip(vectors.coordinates()) {
+        at_least(lane, n).copy_from_slice(&coordinate[..n]);
+    }
+}
+
+/// The first `n` of a·w.x + b·w.y into `lanes`, a coordinate to a lane.
+fn write_combined(lanes: [&mut Vec<f32>; 3], n: usize, (a, b): (&Vectors, &Vectors), w: Vec2) {
+    let pairs = a.coordinates().into_iter().zip(b.coordinates());
+    for (lane, (a, b)) in lanes.into_iter().zip(pairs) {
+        let each = at_least(lane, n).iter_mut().zip(&a[..n]).zip(&b[..n]);
+        each.for_each(|((out, &a), &b)| *out = a * w.x + b * w.y);
     }
 }
 
@@ -212,7 +211,7 @@ mod tests {
         let at = Sites {
             fragments: &fragments,
             group: &group,
-            frames: &[],
+            frames: &Frames::default(),
         };
         let (mut heights, mut gradients) = (vec![0.0; uvs.len()], vec![Vec2::ZERO; uvs.len()]);
         PatternBatch::default().bump(binding, at, 0.0, &mut heights, &mut gradients);

@@ -20,7 +20,7 @@ use crate::raster::{
 };
 use crate::scene::Camera;
 use crate::scene::{BumpSource, Material, Scene, Texturing};
-use crate::surface::{Frame, ModelSurface, Surface};
+use crate::surface::{Frame, Frames, ModelSurface, Surface, Vectors};
 use crate::texture::{Footprint, HeightSample, Mapping, SurfacePoint, SurfaceUv, Texel, Wrap};
 use glam::{Mat2, Vec2, Vec3};
 use std::borrow::Cow;
@@ -106,7 +106,7 @@ pub struct ShadeScratch {
     /// Fragment indices grouped by object.
     order: Vec<u32>,
     group_starts: Vec<usize>,
-    frames: Vec<Frame>,
+    frames: Frames,
     colors: Vec<Vec3>,
     /// Camera-relative positions (for shadows and lighting), facing normals to light, and the
     /// lit colours.
@@ -149,7 +149,7 @@ struct HeightLookups {
 struct Shifted {
     fragments: Vec<Fragment>,
     identity: Vec<u32>,
-    frames: Vec<Frame>,
+    frames: Frames,
     heights: Vec<f32>,
     gradients: Vec<Vec2>,
     /// Heights at +u, −u, +v, −v.
@@ -311,7 +311,7 @@ impl LitShader {
         flattened += self.bump_gradients(object, fragments, group, scratch);
         let (points, origin) = (&mut scratch.points, object.origin);
         points.clear();
-        points.extend(scratch.frames.iter().map(|frame| origin + frame.p));
+        origin_plus(origin, &scratch.frames.p, points);
         // On a flat surface every frame has the same normal: read once, not from each frame.
         let constant_normal = match scratch.frames.first() {
             Some(frame) if self.frame_is_constant(surface) => Some(frame.n),
@@ -326,8 +326,8 @@ impl LitShader {
             let surface = |range: Range<usize>| {
                 let points = points[range.clone()].iter();
                 points
-                    .zip(&frames[range])
-                    .map(|(&p, frame)| (p, frame.n * facing_sign(p, frame.n)))
+                    .zip(frames.n.range(range))
+                    .map(|(&p, n)| (p, n * facing_sign(p, n)))
             };
             self.lighting(material, group, &scratch.colors, &scratch.reach)
                 .light(surface, &mut scratch.lit, out);
@@ -389,8 +389,8 @@ impl LitShader {
         match constant_normal {
             Some(n) => normals.extend(points.iter().map(|&p| facing(p, n))),
             None => {
-                let frames = points.iter().zip(&scratch.frames);
-                normals.extend(frames.map(|(&p, frame)| facing(p, frame.n)));
+                let frames = points.iter().zip(scratch.frames.n.range(0..points.len()));
+                normals.extend(frames.map(|(&p, n)| facing(p, n)));
             }
         }
         let count = points.len();
@@ -426,7 +426,7 @@ impl LitShader {
             bumped && matches!(self.normal_form, NormalForm::Blinn | NormalForm::Full);
         if let (true, Some(frame), Some(n)) = (blinn_when_flat, frames.first(), constant_normal) {
             // On a flat surface the full normal is Blinn's (see `bumped_normal`).
-            blinn_normals_on_flat(frame, heights, gradients, normals);
+            blinn_normals_on_flat(&frame, heights, gradients, normals);
             let facing = normals.iter_mut().zip(points);
             facing.for_each(|(normal, &p)| *normal *= facing_sign(p, n));
             return;
@@ -443,26 +443,21 @@ impl LitShader {
             }
             NormalForm::Seed => false,
         };
-        let frames = group.iter().zip(&scratch.frames);
+        if batched || !bumped {
+            let geometric = scratch.frames.n.range(0..group.len());
+            for ((&p, normal), n) in points.iter().zip(normals.iter_mut()).zip(geometric) {
+                let shown = if batched { *normal } else { n };
+                *normal = shown * facing_sign(p, n);
+            }
+            return;
+        }
+        let frames = group.iter().zip(scratch.frames.iter());
         let outputs = points.iter().zip(normals);
         for (k, ((&i, frame), (&p, normal))) in frames.zip(outputs).enumerate() {
-            let n = if batched {
-                *normal
-            } else if bumped {
-                let (b, gradient) = (scratch.heights[k], scratch.gradients[k]);
-                let uv = fragments[i as usize].uv;
-                bumped_normal(
-                    surface,
-                    uv,
-                    frame,
-                    b,
-                    gradient.x,
-                    gradient.y,
-                    self.normal_form,
-                )
-            } else {
-                frame.n
-            };
+            let (b, gradient) = (scratch.heights[k], scratch.gradients[k]);
+            let uv = fragments[i as usize].uv;
+            let (form, (bu, bv)) = (self.normal_form, gradient.into());
+            let n = bumped_normal(surface, uv, &frame, b, bu, bv, form);
             *normal = n * facing_sign(p, frame.n);
         }
     }
@@ -512,7 +507,7 @@ impl LitShader {
             Some(Texturing::Image(image)) => {
                 let surface = &object.prepared.surface;
                 let mapping = mapping_on(&image.mapping, surface, image.sampler.wrap_s);
-                let points = self.surface_points(fragments, group, &scratch.frames);
+                let point = self.surface_point(fragments, group, &scratch.frames);
                 let texture = &mut scratch.texture;
                 // Every coordinate (and footprint, if wanted) is written below: resized, not
                 // cleared, and written in place (a push per fragment stalled on the list's length).
@@ -520,7 +515,7 @@ impl LitShader {
                 texture.st.resize(group.len(), Vec2::ZERO);
                 let footprints = if wants_footprint { group.len() } else { 0 };
                 texture.footprints.resize(footprints, Footprint::POINT);
-                mapping.map_each(points, |k, mapped| {
+                mapping.map_each(group.len(), point, |k, mapped| {
                     texture.st[k] = mapped.st;
                     if wants_footprint {
                         let fragment = &fragments[group[k] as usize];
@@ -564,7 +559,7 @@ impl LitShader {
             GradientMethod::SeedLattice => {
                 let shifted = &mut scratch.shifted;
                 shifted_fragments(fragments, group, Vec2::floor, &mut shifted.fragments);
-                let base = (&scratch.frames[..], fragments, group);
+                let base = (&scratch.frames, fragments, group);
                 let flattened = self.shifted_bump(
                     object,
                     shifted,
@@ -609,7 +604,7 @@ impl LitShader {
         for (k, shift) in shifts.into_iter().enumerate() {
             shifted_fragments(fragments, group, |uv| uv + shift, &mut shifted.fragments);
             let work = (&mut scratch.patterns, &mut scratch.height_lookups);
-            let base = (&scratch.frames[..], fragments, group);
+            let base = (&scratch.frames, fragments, group);
             self.shifted_bump(object, shifted, base, work);
             std::mem::swap(&mut shifted.around[k], &mut shifted.heights);
         }
@@ -626,7 +621,7 @@ impl LitShader {
         &self,
         object: &FrameObject,
         shifted: &mut Shifted,
-        base: (&[Frame], &[Fragment], &[u32]),
+        base: (&Frames, &[Fragment], &[u32]),
         (patterns, height_lookups): (&mut PatternBatch, &mut HeightLookups),
     ) -> usize {
         let surface = &object.prepared.surface;
@@ -641,7 +636,7 @@ impl LitShader {
                 let (frames, originals, group) = base;
                 shifted.frames.extend((0..n).map(|k| {
                     let step = fragments[k].uv - originals[group[k] as usize].uv;
-                    let frame = frames[k];
+                    let frame = frames.at(k);
                     Frame {
                         p: frame.p + frame.pu * step.x + frame.pv * step.y,
                         ..frame
@@ -709,13 +704,13 @@ impl LitShader {
             BumpSource::Image(image) => {
                 let surface = &object.prepared.surface;
                 let mapping = mapping_on(&image.mapping, surface, image.wrap_s);
-                let points = self.surface_points(fragments, group, output.frames);
+                let point = self.surface_point(fragments, group, output.frames);
                 let lookups = &mut *output.height_lookups;
                 // Every entry is written below: resized, not cleared.
                 lookups.st.resize(group.len(), Vec2::ZERO);
                 lookups.footprints.resize(group.len(), Footprint::POINT);
                 lookups.jacobians.resize(group.len(), Mat2::ZERO);
-                mapping.map_each(points, |k, mapped| {
+                mapping.map_each(group.len(), point, |k, mapped| {
                     let fragment = &fragments[group[k] as usize];
                     lookups.st[k] = mapped.st;
                     lookups.footprints[k] = mapped.footprint(fragment.duv_dx, fragment.duv_dy);
@@ -738,41 +733,44 @@ impl LitShader {
                 0
             }
             BumpSource::NormalMap(map) => {
-                let points = self.surface_points(fragments, group, output.frames);
+                let point = self.surface_point(fragments, group, output.frames);
                 let each = output.heights.iter_mut().zip(output.gradients.iter_mut());
-                for ((height, gradient), point) in each.zip(points) {
+                for (k, (height, gradient)) in each.enumerate() {
                     *height = 0.0;
-                    *gradient = map.gradient(&point);
+                    *gradient = map.gradient(&point(k));
                 }
                 0
             }
         }
     }
 
-    /// What a mapping sees of each fragment of the group (`frames` in the group's order).
-    fn surface_points<'a>(
+    /// What a mapping sees of the k-th fragment of the group (`frames` in the group's order).
+    fn surface_point<'a>(
         &self,
         fragments: &'a [Fragment],
         group: &'a [u32],
-        frames: &'a [Frame],
-    ) -> impl Iterator<Item = SurfacePoint> + 'a {
+        frames: &'a Frames,
+    ) -> impl Fn(usize) -> SurfacePoint + 'a {
         let time = self.time as f32;
-        group
-            .iter()
-            .zip(frames)
-            .map(move |(&i, frame)| SurfacePoint {
+        let frames = frames.slices();
+        let group = &group[..frames.len];
+        #[inline(always)]
+        move |k| {
+            let frame = frames.at(k);
+            SurfacePoint {
                 p: frame.p,
                 pu: frame.pu,
                 pv: frame.pv,
-                uv: fragments[i as usize].uv,
+                uv: fragments[group[k] as usize].uv,
                 time,
-            })
+            }
+        }
     }
 }
 
 /// Where one bump evaluation reads its frames and writes its results.
 struct BumpOutput<'a> {
-    frames: &'a [Frame],
+    frames: &'a Frames,
     patterns: &'a mut PatternBatch,
     height_lookups: &'a mut HeightLookups,
     heights: &'a mut Vec<f32>,
@@ -785,11 +783,13 @@ fn to_texture_space(
     model: &ModelSurface,
     fragments: &mut [Fragment],
     group: &[u32],
-    frames: &mut [Frame],
+    frames: &mut Frames,
 ) {
-    for (&i, frame) in group.iter().zip(frames.iter_mut()) {
+    for (k, &i) in group.iter().enumerate() {
         let fragment = &mut fragments[i as usize];
-        let texture = model.to_texture_space(fragment.uv, frame);
+        let mut frame = frames.at(k);
+        let texture = model.to_texture_space(fragment.uv, &mut frame);
+        frames.set(k, frame);
         fragment.uv = texture.uv;
         fragment.duv_dx = texture.derivative(fragment.duv_dx);
         fragment.duv_dy = texture.derivative(fragment.duv_dy);
@@ -859,6 +859,13 @@ fn consecutive(group: &[u32]) -> Option<Range<usize>> {
     (last - first + 1 == group.len()).then_some(first..last + 1)
 }
 
+/// `origin + p` for every point `p`, appended to `points`.
+fn origin_plus(origin: Vec3, p: &Vectors, points: &mut Vec<Vec3>) {
+    let [x, y, z] = p.coordinates();
+    let each = x.iter().zip(y).zip(z);
+    points.extend(each.map(|((&x, &y), &z)| origin + Vec3::new(x, y, z)));
+}
+
 fn reset<T: Copy>(values: &mut Vec<T>, len: usize, value: T) {
     values.clear();
     values.resize(len, value);
@@ -870,12 +877,12 @@ fn interpolate_frames(
     normals: &VertexNormals,
     fragments: &[Fragment],
     group: &[u32],
-    frames: &mut [Frame],
+    frames: &mut Frames,
 ) {
-    for (frame, &i) in frames.iter_mut().zip(group) {
+    for (k, &i) in group.iter().enumerate() {
         if let Some(at) = normals.at(fragments[i as usize].uv) {
-            frame.p = at.p;
-            frame.n = at.n;
+            frames.p.set(k, at.p);
+            frames.n.set(k, at.n);
         }
     }
 }

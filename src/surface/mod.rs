@@ -9,6 +9,7 @@
 mod angles;
 mod basis;
 mod cone;
+mod frames;
 mod hull;
 mod model;
 mod model_bvh;
@@ -25,6 +26,7 @@ mod wave;
 pub use angles::{atan2, sin_cos};
 pub use basis::AxisBasis;
 pub use cone::Cone;
+pub use frames::{FrameSlices, Frames, Vectors};
 pub use hull::push_out_to_hull;
 pub use model::{Corner, ModelData, ModelSurface, TexturePoint};
 pub use model_bvh::ModelHit;
@@ -104,7 +106,7 @@ impl Surface {
     /// The exact frames at `uv(0) … uv(count − 1)`, appended to `out`: one dispatch per batch,
     /// so each surface's frame is inlined into its own loop (and the sphere's is vectorised).
     /// Indexed rather than an iterator: plain index loops inline the same way in every build.
-    pub fn frames(&self, count: usize, uv: impl Fn(usize) -> Vec2, out: &mut Vec<Frame>) {
+    pub fn frames(&self, count: usize, uv: impl Fn(usize) -> Vec2, out: &mut Frames) {
         match self {
             Surface::Plane(s) => flat_frames(count, uv, s.frame(0.0, 0.0), out),
             Surface::Sphere(s) => s.frames(count, uv, out),
@@ -247,7 +249,7 @@ fn frames_each(
     count: usize,
     uv: impl Fn(usize) -> Vec2,
     frame: impl Fn(f32, f32) -> Frame,
-    out: &mut Vec<Frame>,
+    out: &mut Frames,
 ) {
     out.extend((0..count).map(|k| {
         let uv = uv(k);
@@ -257,16 +259,19 @@ fn frames_each(
 
 /// `frames_each` for a flat surface (`is_flat`), whose point is P = u·Pu + v·Pv and whose
 /// tangents and normal are those of `at_origin` everywhere: the frames are filled with
-/// `at_origin`, then only their points are written. (Built one whole frame at a time, the loop
-/// reloaded the surface and the fragments for every frame, as its writes might have changed
-/// them for all the compiler knew.)
-fn flat_frames(count: usize, uv: impl Fn(usize) -> Vec2, at_origin: Frame, out: &mut Vec<Frame>) {
+/// `at_origin`, then only their points are written.
+fn flat_frames(count: usize, uv: impl Fn(usize) -> Vec2, at_origin: Frame, out: &mut Frames) {
     let (pu, pv) = (at_origin.pu, at_origin.pv);
     let start = out.len();
     out.resize(start + count, at_origin);
-    for (k, frame) in out[start..].iter_mut().enumerate() {
+    let [x, y, z] = out.p.coordinates_mut();
+    let points = x[start..]
+        .iter_mut()
+        .zip(&mut y[start..])
+        .zip(&mut z[start..]);
+    for (k, ((x, y), z)) in points.enumerate() {
         let uv = uv(k);
-        frame.p = pu * uv.x + pv * uv.y;
+        (*x, *y, *z) = (pu * uv.x + pv * uv.y).into();
     }
 }
 
@@ -342,14 +347,14 @@ pub(crate) mod tests {
         for surface in surfaces {
             assert!(surface.is_flat());
             let earlier = surface.frame(1.0, 2.0);
-            let mut batch = vec![earlier];
+            let mut batch: super::Frames = [earlier].into_iter().collect();
             surface.frames(uvs.len(), |k| uvs[k], &mut batch);
             assert_eq!(batch.len(), uvs.len() + 1);
-            assert_eq!(batch[0], earlier);
+            assert_eq!(batch.at(0), earlier);
             let bits =
                 |f: &super::Frame| [f.p, f.pu, f.pv, f.n].map(|v| v.to_array().map(f32::to_bits));
-            for (uv, got) in uvs.iter().zip(&batch[1..]) {
-                assert_eq!(bits(got), bits(&surface.frame(uv.x, uv.y)), "at {uv}");
+            for (uv, got) in uvs.iter().zip(batch.iter().skip(1)) {
+                assert_eq!(bits(&got), bits(&surface.frame(uv.x, uv.y)), "at {uv}");
             }
         }
     }

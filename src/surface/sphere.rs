@@ -1,6 +1,6 @@
 //! The sphere in the seed's angle units: P(u,v), its partial derivatives and normal.
 
-use super::{Domain, Frame};
+use super::{Domain, Frame, Frames};
 use glam::{DVec3, Vec2, Vec3};
 use std::f32::consts::PI;
 
@@ -31,25 +31,43 @@ impl Sphere {
         self.frame_from_angles(sin_phi, cos_phi, sin_theta, cos_theta)
     }
 
-    /// `frame` at `uv(0) … uv(count − 1)`, appended to `out`. The four sines and cosines of a
-    /// chunk are computed first in a loop of plain arrays, which the compiler turns into SIMD
-    /// (four fragments per instruction): the same polynomials, so the same frames to the bit.
-    pub fn frames(&self, count: usize, uv: impl Fn(usize) -> Vec2, out: &mut Vec<Frame>) {
+    /// `frame` at `uv(0) … uv(count − 1)`, appended to `out`. A chunk's sines, cosines and
+    /// frames are computed in loops of plain arrays, which the compiler turns into SIMD: the
+    /// same polynomials and products, so the same frames to the bit.
+    pub fn frames(&self, count: usize, uv: impl Fn(usize) -> Vec2, out: &mut Frames) {
         out.reserve(count);
-        for start in (0..count).step_by(CHUNK) {
-            let len = CHUNK.min(count - start);
-            let (mut u, mut v) = ([0.0f32; CHUNK], [0.0f32; CHUNK]);
+        // Made once, not per chunk: zeroed per chunk, they cost more than the frames.
+        let (mut u, mut v) = ([0.0f32; CHUNK], [0.0f32; CHUNK]);
+        let mut angles = [[0.0f32; CHUNK]; 4];
+        let mut coordinates = [[0.0f32; CHUNK]; 12];
+        for first in (0..count).step_by(CHUNK) {
+            let len = CHUNK.min(count - first);
             for k in 0..len {
-                (u[k], v[k]) = uv(start + k).into();
+                (u[k], v[k]) = uv(first + k).into();
             }
-            let mut angles = [[0.0f32; CHUNK]; 4];
             chunk_angles(&u, &v, &mut angles);
-            let [sin_phi, cos_phi, sin_theta, cos_theta] = &angles;
-            out.extend((0..len).map(
-                #[inline(always)]
-                |k| self.frame_from_angles(sin_phi[k], cos_phi[k], sin_theta[k], cos_theta[k]),
-            ));
+            self.chunk_frames(&angles, &mut coordinates);
+            out.extend_from_lanes(&coordinates, len);
         }
+    }
+
+    /// A chunk's frames from its angles, as p, Pu, Pv and n, each as x, y and z lanes.
+    fn chunk_frames(&self, angles: &[[f32; CHUNK]; 4], out: &mut [[f32; CHUNK]; 12]) {
+        crate::simd::widest(
+            #[inline(always)]
+            || {
+                let [sin_phi, cos_phi, sin_theta, cos_theta] = angles;
+                for k in 0..CHUNK {
+                    let frame =
+                        self.frame_from_angles(sin_phi[k], cos_phi[k], sin_theta[k], cos_theta[k]);
+                    let [px, py, pz, pux, puy, puz, pvx, pvy, pvz, nx, ny, nz] = out;
+                    (px[k], py[k], pz[k]) = frame.p.into();
+                    (pux[k], puy[k], puz[k]) = frame.pu.into();
+                    (pvx[k], pvy[k], pvz[k]) = frame.pv.into();
+                    (nx[k], ny[k], nz[k]) = frame.n.into();
+                }
+            },
+        );
     }
 
     #[inline(always)]
@@ -116,12 +134,12 @@ mod tests {
             .map(|i| Vec2::new(i as f32 * 4.9 - 10.0, i as f32 * 2.5 - 5.0))
             .collect();
         uvs.extend([0.0, 180.0, 360.0, 720.0, -720.0, 1e4].map(|u| Vec2::new(u, u / 2.0)));
-        let mut batch = Vec::new();
+        let mut batch = Frames::default();
         s.frames(uvs.len(), |k| uvs[k], &mut batch);
         assert_eq!(batch.len(), uvs.len());
         let bits = |f: &Frame| [f.p, f.pu, f.pv, f.n].map(|v| v.to_array().map(f32::to_bits));
-        for (uv, got) in uvs.iter().zip(&batch) {
-            assert_eq!(bits(got), bits(&s.frame(uv.x, uv.y)), "at {uv}");
+        for (uv, got) in uvs.iter().zip(batch.iter()) {
+            assert_eq!(bits(&got), bits(&s.frame(uv.x, uv.y)), "at {uv}");
         }
     }
 

@@ -64,30 +64,33 @@ pub enum Mapping {
 }
 
 impl Mapping {
-    /// Maps a batch of points, calling `each(k, mapped)` for the k-th: one dispatch per batch,
-    /// so each mapping is inlined into its own loop.
+    /// Maps a batch of `count` points, `point(k)` the k-th, calling `each(k, mapped)` for it:
+    /// one dispatch per batch, so each mapping is inlined into its own loop. Indexed rather
+    /// than an iterator: plain index loops inline the same way in every build.
     #[inline]
     pub fn map_each(
         &self,
-        points: impl Iterator<Item = SurfacePoint>,
+        count: usize,
+        point: impl Fn(usize) -> SurfacePoint,
         mut each: impl FnMut(usize, Mapped),
     ) {
         fn with<M: TextureMapping>(
             m: &M,
-            points: impl Iterator<Item = SurfacePoint>,
+            count: usize,
+            point: impl Fn(usize) -> SurfacePoint,
             each: &mut impl FnMut(usize, Mapped),
         ) {
-            for (k, point) in points.enumerate() {
-                each(k, m.map(&point));
+            for k in 0..count {
+                each(k, m.map(&point(k)));
             }
         }
         match self {
-            Mapping::Planar(m) => with(m, points, &mut each),
-            Mapping::Triangle(m) => with(m, points, &mut each),
-            Mapping::Spherical(m) => with(m, points, &mut each),
-            Mapping::Cylindrical(m) => with(m, points, &mut each),
-            Mapping::SurfaceUv(m) => with(m, points, &mut each),
-            Mapping::Scroll(m) => with(m, points, &mut each),
+            Mapping::Planar(m) => with(m, count, point, &mut each),
+            Mapping::Triangle(m) => with(m, count, point, &mut each),
+            Mapping::Spherical(m) => with(m, count, point, &mut each),
+            Mapping::Cylindrical(m) => with(m, count, point, &mut each),
+            Mapping::SurfaceUv(m) => with(m, count, point, &mut each),
+            Mapping::Scroll(m) => with(m, count, point, &mut each),
         }
     }
 }
