@@ -10,9 +10,9 @@ use std::ops::Range;
 /// Vectors of a batch, one array per coordinate, all the same length.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Vectors {
-    pub x: Vec<f32>,
-    pub y: Vec<f32>,
-    pub z: Vec<f32>,
+    x: Vec<f32>,
+    y: Vec<f32>,
+    z: Vec<f32>,
 }
 
 impl Vectors {
@@ -151,8 +151,8 @@ impl Frames {
         (!self.is_empty()).then(|| self.at(0))
     }
 
-    /// Every frame, in order (for loops that do not zip it with a random-access iterator:
-    /// those index `slices` instead).
+    /// Every frame, in order. Zipped with a slice's iterator, each frame is read through an
+    /// out-of-line call: hot loops index `slices` instead.
     pub fn iter(&self) -> impl ExactSizeIterator<Item = Frame> + Clone + '_ {
         let slices = self.slices();
         (0..slices.len).map(
