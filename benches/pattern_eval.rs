@@ -159,47 +159,68 @@ fn fused_dimples(u: &[f32], v: &[f32], inputs: &Inputs) {
     let mut scratch = pattern.scratch();
     let mut samples = vec![BumpSample::default(); BATCH];
     let mut fused = samples.clone();
-    let [interpreted, by_hand] = measure(
-        || {
-            pattern.eval_bump(inputs, &[], &mut scratch, &mut samples);
-            black_box(&samples);
-        },
-        || {
-            dimples_fused(u, v, &mut fused);
-            black_box(&fused);
-        },
-    );
     println!();
     println!(
         "{:<9} {:<9} {:>26} {:>26} {:>9}",
-        "pattern", "mode", "interpreted Mfrag/s", "fused f32 Mfrag/s", "ratio"
+        "pattern", "lanes", "interpreted Mfrag/s", "fused f32 Mfrag/s", "ratio"
     );
-    row("dimples", "gradient", interpreted, by_hand);
-    let flat = |s: &[BumpSample]| s.iter().flat_map(|s| [s.height, s.du, s.dv]).collect();
-    assert_same("dimples fused", flat(&samples), flat(&fused));
+    let fused_in: [(&str, FusedDimples); 2] = [
+        ("8 (AVX2)", dimples_fused_avx2),
+        ("4 (SSE4.1)", dimples_fused_sse41),
+    ];
+    for (lanes, fused_dimples) in fused_in {
+        let [interpreted, by_hand] = measure(
+            || {
+                pattern.eval_bump(inputs, &[], &mut scratch, &mut samples);
+                black_box(&samples);
+            },
+            || {
+                fused_dimples(u, v, &mut fused);
+                black_box(&fused);
+            },
+        );
+        row("dimples", lanes, interpreted, by_hand);
+        let flat = |s: &[BumpSample]| s.iter().flat_map(|s| [s.height, s.du, s.dv]).collect();
+        assert_same("dimples fused", flat(&samples), flat(&fused));
+    }
 }
 
-/// `dimples.pat` at period 30, depth 1, with its gradient, as one loop over the fragments in
-/// `f32`: the program's every step in registers, its gradient in closed form (cu/s, cv/s, where
-/// the interpreter carries dual numbers through each step), compiled for AVX2 where the CPU
-/// has it. Eight fragments at a time in arrays, so the loop vectorises (a loop over
-/// `BumpSample`s stored one by one did not).
-fn dimples_fused(u: &[f32], v: &[f32], out: &mut [BumpSample]) {
+/// A fused dimples: fills the samples of fragments (u, v).
+type FusedDimples = fn(&[f32], &[f32], &mut [BumpSample]);
+
+/// `dimples_fused_lanes` compiled for AVX2 (eight lanes an instruction), where the CPU has it.
+fn dimples_fused_avx2(u: &[f32], v: &[f32], out: &mut [BumpSample]) {
     #[cfg(target_arch = "x86_64")]
     if std::is_x86_feature_detected!("avx2") {
+        #[target_feature(enable = "avx2")]
+        fn avx2(u: &[f32], v: &[f32], out: &mut [BumpSample]) {
+            dimples_fused_lanes(u, v, out);
+        }
         // SAFETY: the CPU has just been seen to support AVX2.
-        unsafe { dimples_fused_avx2(u, v, out) };
-        return;
+        return unsafe { avx2(u, v, out) };
     }
     dimples_fused_lanes(u, v, out);
 }
 
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-fn dimples_fused_avx2(u: &[f32], v: &[f32], out: &mut [BumpSample]) {
+/// `dimples_fused_lanes` compiled for SSE4.1 (four lanes an instruction: the width of a JIT
+/// that emits 128-bit vectors), where the CPU has it.
+fn dimples_fused_sse41(u: &[f32], v: &[f32], out: &mut [BumpSample]) {
+    #[cfg(target_arch = "x86_64")]
+    if std::is_x86_feature_detected!("sse4.1") {
+        #[target_feature(enable = "sse4.1")]
+        fn sse41(u: &[f32], v: &[f32], out: &mut [BumpSample]) {
+            dimples_fused_lanes(u, v, out);
+        }
+        // SAFETY: the CPU has just been seen to support SSE4.1.
+        return unsafe { sse41(u, v, out) };
+    }
     dimples_fused_lanes(u, v, out);
 }
 
+/// `dimples.pat` at period 30, depth 1, with its gradient, as one loop over the fragments in
+/// `f32`: the program's every step in registers, its gradient in closed form (cu/s, cv/s, where
+/// the interpreter carries dual numbers through each step). Eight fragments at a time in
+/// arrays, so the loop vectorises (a loop over `BumpSample`s stored one by one did not).
 #[inline(always)]
 fn dimples_fused_lanes(u: &[f32], v: &[f32], out: &mut [BumpSample]) {
     const LANES: usize = 8;

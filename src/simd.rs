@@ -22,3 +22,42 @@ pub fn widest<R>(f: impl FnOnce() -> R) -> R {
 fn avx2<R>(f: impl FnOnce() -> R) -> R {
     f()
 }
+
+/// `widest`, with a middle tier for CPUs that have SSE4.1 but not AVX2: for loops that round
+/// (`floor`, `ceil`), which SSE4.1 does in one instruction and baseline x86-64 only by a call to
+/// the library per value.
+#[inline(always)]
+pub fn widest_rounding<R>(f: impl FnOnce() -> R) -> R {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if std::is_x86_feature_detected!("avx2") {
+            // SAFETY: the CPU has just been seen to support AVX2.
+            return unsafe { avx2(f) };
+        }
+        if std::is_x86_feature_detected!("sse4.1") {
+            // SAFETY: the CPU has just been seen to support SSE4.1.
+            return unsafe { sse41(f) };
+        }
+    }
+    f()
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "sse4.1")]
+#[inline]
+fn sse41<R>(f: impl FnOnce() -> R) -> R {
+    f()
+}
+
+/// Runs `f` as `widest_rounding`'s middle tier does where the CPU has SSE4.1 (else as the
+/// baseline does), so tests on an AVX2 machine cover that tier too.
+#[cfg(test)]
+#[inline(always)]
+pub fn sse41_tier<R>(f: impl FnOnce() -> R) -> R {
+    #[cfg(target_arch = "x86_64")]
+    if std::is_x86_feature_detected!("sse4.1") {
+        // SAFETY: the CPU has just been seen to support SSE4.1.
+        return unsafe { sse41(f) };
+    }
+    f()
+}

@@ -253,7 +253,7 @@ pub(crate) fn run_chunks<T: Lane>(
     mut store: impl FnMut(usize, &[T::Real]) -> usize,
 ) -> usize {
     let per_fragment = &program.instrs[program.uniform..];
-    crate::simd::widest(
+    crate::simd::widest_rounding(
         #[inline(always)]
         || {
             let mut non_finite = 0;
@@ -269,7 +269,7 @@ pub(crate) fn run_chunks<T: Lane>(
 }
 
 fn run_instrs<T: Lane>(instrs: &[Instr], slots: &mut [T::Real]) {
-    crate::simd::widest(
+    crate::simd::widest_rounding(
         #[inline(always)]
         || run_instrs_here::<T>(instrs, slots),
     );
@@ -412,22 +412,30 @@ mod tests {
     }
 
     /// Every shipped pattern, run through the dispatching entry (the AVX2 build where the CPU
-    /// has it) and through the portable build, gives the same bits in every slot.
+    /// has it), through the SSE4.1 build and through the portable build, gives the same bits in
+    /// every slot.
     #[test]
-    fn the_wide_build_computes_what_the_portable_one_does() {
+    fn the_wide_builds_compute_what_the_portable_one_does() {
         fn both_builds<T: Lane>(program: &Program, inputs: &Inputs) {
-            let mut scratch = [Scratch::new(), Scratch::new()];
-            let [a, b] = &mut scratch;
-            let (a, b) = (
-                a.slots::<T>(program.sources.len()),
-                b.slots::<T>(program.sources.len()),
-            );
-            for slots in [&mut *a, &mut *b] {
-                load_uniforms::<T>(program, |_| 1.5, inputs.t, slots);
-                load_inputs::<T>(program, inputs, 0, CHUNK, slots);
-            }
-            run_instrs::<T>(&program.instrs, a);
-            run_instrs_here::<T>(&program.instrs, b);
+            let sse41 = |slots: &mut [T::Real]| {
+                crate::simd::sse41_tier(
+                    #[inline(always)]
+                    || run_instrs_here::<T>(&program.instrs, slots),
+                )
+            };
+            let mut portable = Scratch::new();
+            let portable = portable.slots::<T>(program.sources.len());
+            load_uniforms::<T>(program, |_| 1.5, inputs.t, portable);
+            load_inputs::<T>(program, inputs, 0, CHUNK, portable);
+            let mut wide = portable.to_vec();
+            let mut middle = portable.to_vec();
+            run_instrs_here::<T>(&program.instrs, portable);
+            run_instrs::<T>(&program.instrs, &mut wide);
+            sse41(&mut middle);
+            assert_same_bits::<T>(&wide, portable);
+            assert_same_bits::<T>(&middle, portable);
+        }
+        fn assert_same_bits<T: Lane>(a: &[T::Real], b: &[T::Real]) {
             // The same bits, NaN for NaN (which NaN an operation returns from two is the
             // order the compiler picked for its operands, not a value).
             for (i, (&x, &y)) in a.iter().zip(b.iter()).enumerate() {

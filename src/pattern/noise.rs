@@ -54,7 +54,7 @@ const LAST_CELL: f64 = (1u64 << 62) as f64;
 /// Lattice cell and position inside it. Coordinates beyond ±2⁶² share cells; noise there is
 /// still finite.
 pub(super) fn split(x: f64) -> (i64, f64) {
-    let cell = super::ops::floor(x);
+    let cell = x.floor();
     (cell.clamp(-LAST_CELL, LAST_CELL) as i64, x - cell)
 }
 

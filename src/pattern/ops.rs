@@ -113,9 +113,9 @@ pub fn apply<T: Scalar>(op: Op, a: T, b: T, c: T, d: T) -> T {
         }
         Op::Abs => T::chain1(x.abs(), a, || sign(x)),
         Op::Sign => T::constant(sign(x)),
-        Op::Floor => T::constant(floor(x)),
+        Op::Floor => T::constant(x.floor()),
         Op::Ceil => T::constant(x.ceil()),
-        Op::Fract => T::chain1(x - floor(x), a, || one),
+        Op::Fract => T::chain1(x - x.floor(), a, || one),
         Op::Exp => {
             let r = x.exp();
             T::chain1(r, a, || r)
@@ -123,23 +123,6 @@ pub fn apply<T: Scalar>(op: Op, a: T, b: T, c: T, d: T) -> T {
         Op::Log => T::chain1(x.ln(), a, || one / x),
         _ => apply_binary(op, a, b, c, d),
     }
-}
-
-/// `x.floor()` without the library call it compiles to on baseline x86-64 (no SSE4.1
-/// `roundsd`): checks and dimples floor twice per fragment, where a call per lane shows.
-/// Branch-free (selects only, no float → integer conversion, which SSE2 has no packed `f64`
-/// form of), so the lane loops of `mod`, `floor` and `fract` vectorise. Exact for every value:
-/// adding and taking away `WHOLE` rounds |x| < `WHOLE` to a whole number, and from `WHOLE` on
-/// every value is whole already; −0, infinities and NaN come back as themselves.
-#[inline(always)]
-pub(crate) fn floor<R: Real>(x: R) -> R {
-    let rounded = ((x.abs() + R::WHOLE) - R::WHOLE).copysign(x);
-    let floored = if rounded > x {
-        rounded - R::one()
-    } else {
-        rounded
-    };
-    if x.abs() < R::WHOLE { floored } else { x }
 }
 
 fn sign<R: Real>(x: R) -> R {
@@ -178,7 +161,7 @@ fn apply_binary<T: Scalar>(op: Op, a: T, b: T, c: T, d: T) -> T {
         // q is finite wherever the value is (y = 0 or x/y out of range gives NaN), so the
         // arithmetic form applies.
         Op::Mod => {
-            let q = floor(x / y);
+            let q = (x / y).floor();
             T::arith2(x - y * q, a, b, one, -q)
         }
         Op::Min => pick(x <= y, a, b),
@@ -319,87 +302,6 @@ mod tests {
 
     fn c(x: f64) -> Dual<f64> {
         Dual::constant(x)
-    }
-
-    #[test]
-    fn fast_floor_matches_the_library() {
-        let special = [
-            0.0,
-            -0.0,
-            0.5,
-            -0.5,
-            1.5,
-            -1.5,
-            2.5,
-            -2.5,
-            1.0,
-            -1.0,
-            1e-300,
-            -1e-300,
-            0.49999999999999994,
-            -0.49999999999999994,
-            2.5e15,
-            -2.5e15,
-            4_503_599_627_370_495.0,
-            -4_503_599_627_370_495.0,
-            4_503_599_627_370_497.0,
-            9_007_199_254_740_993.0,
-            1e300,
-            -1e300,
-        ];
-        let nudged = (0..2000).map(|i| (i as f64 - 1000.0) * 0.37 + 1e-9 * i as f64);
-        assert_floor_matches_the_library(special.into_iter().chain(nudged));
-        for x in [
-            f64::INFINITY,
-            f64::NEG_INFINITY,
-            4_503_599_627_370_495.5,
-            -4_503_599_627_370_495.5,
-        ] {
-            assert_eq!(floor(x), x.floor(), "{x}");
-        }
-        assert!(floor(f64::NAN).is_nan());
-    }
-
-    /// The `f32` form, from its whole-number threshold 2^23 down to the smallest values.
-    #[test]
-    fn fast_floor_matches_the_library_in_single_precision() {
-        let whole = 8_388_608.0f32;
-        let special = [
-            0.0,
-            -0.0,
-            0.5,
-            -0.5,
-            2.5,
-            -2.5,
-            0.49999997,
-            -0.49999997,
-            1e-30,
-            -1e-30,
-            whole - 0.5,
-            -(whole - 0.5),
-            whole - 1.0,
-            whole + 1.0,
-            -(whole + 2.0),
-            3e38,
-            f32::INFINITY,
-            f32::NEG_INFINITY,
-        ];
-        let nudged = (0..2000).map(|i| (i as f32 - 1000.0) * 0.37 + 1e-4 * i as f32);
-        assert_floor_matches_the_library(special.into_iter().chain(nudged));
-        assert!(floor(f32::NAN).is_nan());
-    }
-
-    /// `floor` of each value is the library's, sign of zero included.
-    fn assert_floor_matches_the_library<R: Real + std::fmt::Display>(
-        values: impl Iterator<Item = R>,
-    ) {
-        for x in values {
-            let (got, want) = (floor(x), Float::floor(x));
-            assert!(
-                got == want && got.is_sign_negative() == want.is_sign_negative(),
-                "{x}"
-            );
-        }
     }
 
     #[test]

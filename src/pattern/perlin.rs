@@ -62,7 +62,7 @@ fn layer(lattice: [(usize, f64); 3], dz: usize) -> Graded<3> {
 /// `(int)` saturates where `as i64` does not, so the two agree for |x| < 2³¹ (and both give a
 /// finite value everywhere else).
 fn cell(x: f64) -> (usize, f64) {
-    let floor = super::ops::floor(x);
+    let floor = x.floor();
     ((floor as i64 & 255) as usize, x - floor)
 }
 

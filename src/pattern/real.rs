@@ -40,9 +40,6 @@ impl Precision {
 }
 
 pub trait Real: Float + Default + Debug + Send + Sync + 'static {
-    /// From this magnitude on every value is a whole number (2^mantissa bits).
-    const WHOLE: Self;
-
     /// The nearest value to `x`.
     fn of(x: f64) -> Self;
 
@@ -67,8 +64,6 @@ pub struct LaneStorage {
 }
 
 impl Real for f64 {
-    const WHOLE: f64 = 4_503_599_627_370_496.0; // 2^52
-
     #[inline(always)]
     fn of(x: f64) -> f64 {
         x
@@ -95,8 +90,6 @@ impl Real for f64 {
 }
 
 impl Real for f32 {
-    const WHOLE: f32 = 8_388_608.0; // 2^23
-
     #[inline(always)]
     fn of(x: f64) -> f32 {
         x as f32
