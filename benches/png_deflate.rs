@@ -1,9 +1,10 @@
 //! PNG encoders and deflate backends on the POV-Ray peer's 1920×1080 one-sample still: the
-//! png crate's settings (filter and deflate) on the still's rows, and the deflate backends
-//! alone on the same rows Up-filtered: fdeflate (what `Compression::Fast` uses), miniz_oxide
-//! and zlib-rs (flate2's two Rust backends; this bench builds flate2 with zlib-rs, so the png
-//! crate's levels run on zlib-rs here and on miniz_oxide in the program). One thread, medians
-//! of BUMPWORK_BENCH_RUNS (7) runs, and the bytes each writes.
+//! png crate's settings (filter and deflate, each one-filter choice with fdeflate too) on the
+//! still's rows, and the deflate backends alone on the same rows Up-filtered: fdeflate (what
+//! `Compression::Fast` uses), miniz_oxide and zlib-rs (flate2's two Rust backends; this bench
+//! builds flate2 with zlib-rs, so the png crate's levels run on zlib-rs here and on
+//! miniz_oxide in the program). One thread, medians of BUMPWORK_BENCH_RUNS (7) runs, and the
+//! bytes each writes.
 //!
 //! Run: `cargo bench --bench png_deflate`.
 
@@ -74,7 +75,7 @@ fn main() {
         runs()
     );
     use png::{DeflateCompression as Deflate, Filter};
-    let settings: [(&str, Filter, Deflate); 6] = [
+    let settings: [(&str, Filter, Deflate); 9] = [
         ("no compression", Filter::NoFilter, Deflate::NoCompression),
         (
             "Up + fdeflate (Fastest)",
@@ -84,6 +85,13 @@ fn main() {
         (
             "adaptive + fdeflate (Fast, ours)",
             Filter::Adaptive,
+            Deflate::FdeflateUltraFast,
+        ),
+        ("Sub + fdeflate", Filter::Sub, Deflate::FdeflateUltraFast),
+        ("Avg + fdeflate", Filter::Avg, Deflate::FdeflateUltraFast),
+        (
+            "Paeth + fdeflate",
+            Filter::Paeth,
             Deflate::FdeflateUltraFast,
         ),
         ("Up + zlib-rs level 1", Filter::Up, Deflate::Level(1)),
