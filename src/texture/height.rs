@@ -11,7 +11,7 @@ use super::load::{Limits, load_image};
 use super::mip::MipChain;
 use super::sampler::Footprint;
 use super::texel_grid::TexelGrid;
-use super::wrap::{Wrap, floor};
+use super::wrap::Wrap;
 
 /// Rec. 709 luma weights, applied to the stored values.
 const LUMA: Vec3 = Vec3::new(0.2126, 0.7152, 0.0722);
@@ -107,7 +107,7 @@ impl HeightMap {
         footprint: Footprint,
     ) -> HeightSample {
         let lod = footprint.level_of_detail(&self.chain);
-        let fine = floor(lod);
+        let fine = lod.floor();
         let blend = lod - fine;
         let level = fine as usize;
         let near = bicubic(self.chain.level(level), st, wrap_s, wrap_t);
@@ -172,7 +172,7 @@ pub(super) fn weigh_rows(
 #[inline(always)]
 pub(super) fn first_tap(wrap: Wrap, s: f32, n: u32) -> (i32, f32) {
     let x = wrap.reduce(s) * n as f32 - 0.5;
-    let x0 = floor(x);
+    let x0 = x.floor();
     (x0 as i32 - 1, x - x0)
 }
 

@@ -7,7 +7,7 @@ use glam::{Vec2, Vec4};
 
 use super::height::{HeightMap, HeightSample, first_tap, neighbourhood, weigh_rows};
 use super::sampler::Footprint;
-use super::wrap::{Wrap, floor};
+use super::wrap::Wrap;
 
 /// Points whose levels and taps are computed together.
 const CHUNK: usize = 64;
@@ -23,7 +23,7 @@ impl HeightMap {
     ) {
         assert_eq!(st.len(), out.len(), "one output per point");
         assert_eq!(st.len(), footprints.len(), "one footprint per point");
-        crate::simd::widest(
+        crate::simd::widest_rounding(
             #[inline(always)]
             || {
                 let chunks = st.chunks(CHUNK).zip(footprints.chunks(CHUNK));
@@ -48,7 +48,7 @@ impl HeightMap {
         let mut blends = [0.0f32; CHUNK];
         for ((level, blend), footprint) in levels.iter_mut().zip(&mut blends).zip(footprints) {
             let lod = footprint.level_of_detail(&self.chain);
-            let fine = floor(lod);
+            let fine = lod.floor();
             *blend = lod - fine;
             *level = fine as usize;
         }

@@ -8,7 +8,7 @@ use glam::Vec2;
 use super::mip::{Averageable, MipChain};
 use super::sampler::{Filter, Footprint, Sampler, lerp};
 use super::texel_grid::TexelGrid;
-use super::wrap::{Wrap, floor};
+use super::wrap::Wrap;
 
 /// Points whose taps are computed together.
 const CHUNK: usize = 64;
@@ -39,7 +39,7 @@ impl Sampler {
     ) {
         assert_eq!(st.len(), out.len(), "one output per point");
         match self.filter {
-            Filter::Bilinear if fits_taps(chain.base()) => crate::simd::widest(
+            Filter::Bilinear if fits_taps(chain.base()) => crate::simd::widest_rounding(
                 #[inline(always)]
                 || {
                     for (st, out) in st.chunks(CHUNK).zip(out.chunks_mut(CHUNK)) {
@@ -59,7 +59,7 @@ impl Sampler {
             }
             Filter::Trilinear => {
                 assert_eq!(st.len(), footprints.len(), "one footprint per point");
-                crate::simd::widest(
+                crate::simd::widest_rounding(
                     #[inline(always)]
                     || {
                         let chunks = st.chunks(CHUNK).zip(footprints.chunks(CHUNK));
@@ -163,7 +163,7 @@ impl AxisTaps {
             .zip(&mut self.weight);
         for (((first, second), weight), &s) in taps.zip(coords) {
             let x = reduce(s) * texels - 0.5;
-            let x0 = floor(x);
+            let x0 = x.floor();
             let i0 = whole_to_i32(x0);
             *first = index(i0, n) as u32;
             *second = index(i0 + 1, n) as u32;

@@ -4,7 +4,7 @@ use glam::Vec2;
 
 use super::mip::{Averageable, MipChain};
 use super::texel_grid::TexelGrid;
-use super::wrap::{Wrap, floor};
+use super::wrap::Wrap;
 
 /// How texels are combined into one value.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
@@ -64,7 +64,7 @@ impl Sampler {
         lerp(top, bottom, fy)
     }
 
-    #[inline]
+    #[inline(always)]
     pub fn trilinear<T: Averageable>(
         &self,
         chain: &MipChain<T>,
@@ -72,7 +72,7 @@ impl Sampler {
         footprint: Footprint,
     ) -> T {
         let lod = footprint.level_of_detail(chain);
-        let fine = floor(lod);
+        let fine = lod.floor();
         let blend = lod - fine;
         let fine = fine as usize;
         let near = self.bilinear(chain.level(fine), st);
@@ -87,7 +87,7 @@ impl Sampler {
 #[inline(always)]
 pub(crate) fn linear_taps(wrap: Wrap, s: f32, n: u32) -> (u32, u32, f32) {
     let x = wrap.reduce(s) * n as f32 - 0.5;
-    let x0 = floor(x);
+    let x0 = x.floor();
     let i0 = x0 as i32;
     (wrap.index(i0, n), wrap.index(i0 + 1, n), x - x0)
 }
