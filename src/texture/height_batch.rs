@@ -163,27 +163,15 @@ mod tests {
     use super::*;
     use crate::texture::TexelGrid;
 
-    /// Points over several periods, both signs, with footprints from magnified to past the
-    /// coarsest level (and a NaN one), through every pair of wraps: the batch gives
-    /// `sample_gradient`'s bits.
+    /// Through every pair of wraps, the batch gives `sample_gradient`'s bits at
+    /// `points_and_footprints`.
     #[test]
     fn the_batch_samples_as_one_point_at_a_time() {
         let map = HeightMap::from_heights(TexelGrid::from_fn(37, 20, |x, y| {
             ((x * 13 + y * 29) % 11) as f32 / 10.0
         }));
         let count = 3 * CHUNK + 17;
-        let st: Vec<Vec2> = (0..count)
-            .map(|k| Vec2::new(k as f32 * 0.0137 - 2.3, 3.1 - k as f32 * 0.0211))
-            .collect();
-        let footprints: Vec<Footprint> = (0..count)
-            .map(|k| match k % 7 {
-                6 => Footprint::new(f32::NAN, 0.0, 0.0, 0.0),
-                step => {
-                    let d = 0.004 * 2f32.powf(step as f32 * 1.3 + (k % 3) as f32 * 0.4);
-                    Footprint::new(d, 0.3 * d, -0.2 * d, 0.9 * d)
-                }
-            })
-            .collect();
+        let (st, footprints) = super::super::batch_test_points::points_and_footprints(count);
         let wraps = [Wrap::Repeat, Wrap::Clamp, Wrap::Mirror];
         for pair in wraps.into_iter().flat_map(|a| wraps.map(|b| (a, b))) {
             let mut batch = vec![HeightSample::default(); count];

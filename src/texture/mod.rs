@@ -14,6 +14,8 @@
 //!    linear premultiplied [`Texel`]; [`HeightMap::sample_gradient`] gives the height
 //!    and ∂h/∂s, ∂h/∂t, and [`HeightSample::surface_gradient`] Blinn's (B_u, B_v).
 
+#[cfg(test)]
+mod batch_test_points;
 mod colour;
 mod encoding;
 mod error;

@@ -206,9 +206,8 @@ fn mirror_near(i: i32, n: i32) -> i32 {
 mod tests {
     use super::*;
 
-    /// Points over several periods, both signs, with footprints from magnified to past the
-    /// coarsest level (and a NaN one), through every filter and pair of wraps: the batch (its
-    /// taps and floors in the widest SIMD the CPU has) gives one sample's bits.
+    /// Through every filter and pair of wraps, the batch (its taps and floors in the widest SIMD
+    /// the CPU has) gives one sample's bits at `points_and_footprints`.
     #[test]
     fn the_batch_samples_as_one_point_at_a_time() {
         use glam::Vec4;
@@ -217,18 +216,7 @@ mod tests {
             Vec4::new(c(13), c(7), c(3), 1.0 - c(5))
         }));
         let count = 3 * CHUNK + 17;
-        let st: Vec<Vec2> = (0..count)
-            .map(|k| Vec2::new(k as f32 * 0.0137 - 2.3, 3.1 - k as f32 * 0.0211))
-            .collect();
-        let footprints: Vec<Footprint> = (0..count)
-            .map(|k| match k % 7 {
-                6 => Footprint::new(f32::NAN, 0.0, 0.0, 0.0),
-                step => {
-                    let d = 0.004 * 2f32.powf(step as f32 * 1.3 + (k % 3) as f32 * 0.4);
-                    Footprint::new(d, 0.3 * d, -0.2 * d, 0.9 * d)
-                }
-            })
-            .collect();
+        let (st, footprints) = super::super::batch_test_points::points_and_footprints(count);
         let wraps = [Wrap::Repeat, Wrap::Clamp, Wrap::Mirror];
         let filters = [Filter::Nearest, Filter::Bilinear, Filter::Trilinear];
         for (filter, (wrap_s, wrap_t)) in filters.into_iter().flat_map(|f| {
