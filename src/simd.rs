@@ -29,17 +29,10 @@ fn avx2<R>(f: impl FnOnce() -> R) -> R {
 #[inline(always)]
 pub fn widest_rounding<R>(f: impl FnOnce() -> R) -> R {
     #[cfg(target_arch = "x86_64")]
-    {
-        if std::is_x86_feature_detected!("avx2") {
-            // SAFETY: the CPU has just been seen to support AVX2.
-            return unsafe { avx2(f) };
-        }
-        if std::is_x86_feature_detected!("sse4.1") {
-            // SAFETY: the CPU has just been seen to support SSE4.1.
-            return unsafe { sse41(f) };
-        }
+    if !std::is_x86_feature_detected!("avx2") {
+        return sse41_tier(f);
     }
-    f()
+    widest(f)
 }
 
 #[cfg(target_arch = "x86_64")]
@@ -49,11 +42,11 @@ fn sse41<R>(f: impl FnOnce() -> R) -> R {
     f()
 }
 
-/// Runs `f` as `widest_rounding`'s middle tier does where the CPU has SSE4.1 (else as the
-/// baseline does), so tests on an AVX2 machine cover that tier too.
-#[cfg(test)]
+/// Runs `f` compiled for SSE4.1 where the CPU has it, else as the baseline: `widest_rounding`'s
+/// tiers below AVX2 (public to the crate so tests on an AVX2 machine cover them too).
+#[cfg_attr(not(target_arch = "x86_64"), allow(dead_code))]
 #[inline(always)]
-pub fn sse41_tier<R>(f: impl FnOnce() -> R) -> R {
+pub(crate) fn sse41_tier<R>(f: impl FnOnce() -> R) -> R {
     #[cfg(target_arch = "x86_64")]
     if std::is_x86_feature_detected!("sse4.1") {
         // SAFETY: the CPU has just been seen to support SSE4.1.
