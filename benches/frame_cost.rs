@@ -2,7 +2,8 @@
 //! peer's textured sphere, or the POV-Ray peer's scene at one sample per pixel (the still's
 //! shader and quality, no file written), or that scene at 16 samples as the POV-Ray peer renders
 //! it, adaptive at CONTRAST if given. Prints the fragments shaded per frame; run it with two
-//! frame counts and divide the difference in instructions by the difference in fragments.
+//! frame counts and divide the difference in instructions by the difference in fragments. It
+//! prints each frame's wall time too (median and range), for comparing two builds.
 //! `still` writes the POV-Ray peer's PNG still FRAMES times as `peer_povray` does (render, 8-bit
 //! conversion, PNG encoding, sync; 1 sample per pixel unless SAMPLES, adaptive at CONTRAST if
 //! given) and prints the wall time's median and range, for comparing two builds run one after
@@ -20,6 +21,7 @@ use bench_support::{
     PeerStill, pov_peer_files, pov_peer_settings, textured_sphere_scene, time_png_stills,
     write_pov_peer_scene,
 };
+use bumpwork::measure::Timing;
 use bumpwork::quality::Quality;
 use bumpwork::raster::{FragmentShader, Framebuffer, PreparedScene, RenderTarget, Viewport};
 use bumpwork::scene::Camera;
@@ -37,10 +39,14 @@ fn frames(prepared: &PreparedScene, camera: &Camera, shader: &impl FragmentShade
     let target = RenderTarget::new(camera, VIEWPORT);
     let mut framebuffer = Framebuffer::new(0, 0, Vec3::ZERO);
     let mut fragments = 0;
+    let mut times = Vec::with_capacity(n);
     for _ in 0..n {
+        let start = std::time::Instant::now();
         fragments = render_into(prepared, &target, shader, &mut framebuffer).fragments;
+        times.push(start.elapsed());
     }
-    println!("{n} frames of {fragments} fragments");
+    let per_frame = Timing::from_samples(times).summary_ms();
+    println!("{n} frames of {fragments} fragments: {per_frame} a frame");
 }
 
 /// `n` 1080p PNG stills of the POV-Ray peer's scene at `samples` per pixel (adaptive at
