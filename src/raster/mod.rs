@@ -13,6 +13,7 @@ mod fragment;
 mod framebuffer;
 mod pipeline;
 mod refine;
+mod row_cover;
 mod row_runs;
 mod sample_rays;
 mod scan;

@@ -4,9 +4,10 @@
 use super::bin::TILE_SIZE;
 use super::fragment::{Fragment, FragmentShader, FrameObject};
 use super::framebuffer::{Blend, encode_srgb8, linear_to_srgb8};
+use super::row_cover::{COVER_LANES, CoverPath, RowNearest, padded_len};
 use super::row_runs::{PixelKind, RowRuns};
 use super::sample_rays::SampleRays;
-use super::scan::{PixelRect, RowSpan, triangle_rows};
+use super::scan::{PixelRect, triangle_rows};
 use super::setup::{AttributePlane, SampleShift, ScreenTriangle};
 use super::wanted_spans::WantedSpans;
 use glam::{Vec2, Vec3};
@@ -33,8 +34,9 @@ pub struct TileBuffers {
 impl Default for TileBuffers {
     fn default() -> Self {
         TileBuffers {
-            inv_w: vec![0.0; TILE_PIXELS],
-            triangle: vec![0; TILE_PIXELS],
+            // Padded: a row's last lane of depth tests may reach past the tile's last slot.
+            inv_w: vec![0.0; TILE_PIXELS + COVER_LANES],
+            triangle: vec![0; TILE_PIXELS + COVER_LANES],
             fragments: Vec::with_capacity(TILE_PIXELS),
             visible_runs: Vec::with_capacity(TILE_PIXELS),
             colors: Vec::with_capacity(TILE_PIXELS),
@@ -237,6 +239,7 @@ impl TileBuffers {
                 bounds
             }
         };
+        let path = CoverPath::detect();
         // AVX2 compares four of the i64 edge functions at once; SSE2 has no 64-bit compare.
         crate::simd::widest(
             #[inline(always)]
@@ -263,12 +266,13 @@ impl TileBuffers {
                             };
                             let first =
                                 ((row.y - rect.y0) * TILE_SIZE + (row.x0 - rect.x0)) as usize;
-                            let slots = first..=first + (row.x1 - row.x0) as usize;
+                            let pixels = (row.x1 - row.x0 + 1) as usize;
+                            let slots = first..first + padded_len(pixels);
                             let nearest = RowNearest {
                                 inv_w: &mut self.inv_w[slots.clone()],
                                 triangle: &mut self.triangle[slots],
                             };
-                            nearest.cover(t, &row, index, shift);
+                            nearest.cover(t, &row, index, sample_origin(t.origin, shift), path);
                         },
                     );
                 }
@@ -328,34 +332,6 @@ impl TileBuffers {
         );
         out.shaded_runs(&self.visible_runs, &self.fragments, &self.colors);
         (self.fragments.len(), flattened)
-    }
-}
-
-/// One row's slots of the tile's visibility buffers.
-struct RowNearest<'a> {
-    inv_w: &'a mut [f32],
-    triangle: &'a mut [u32],
-}
-
-impl RowNearest<'_> {
-    /// Makes `index` the nearest triangle wherever it covers the row and is strictly nearer
-    /// (so the first of two equal depths stays: deterministic). Branch-free, so it vectorises:
-    /// rows of small triangles are a few pixels, and a per-pixel branch mispredicted at edges.
-    #[inline(always)]
-    fn cover(self, t: &ScreenTriangle, row: &RowSpan, index: u32, shift: &SampleShift) {
-        let origin = sample_origin(t.origin, shift);
-        let offset_y = (row.y as f32 + 0.5) - origin.y;
-        let mut edges = row.edges;
-        let slots = self.inv_w.iter_mut().zip(self.triangle);
-        for (x, (nearest_inv_w, nearest)) in (row.x0 as i32..).zip(slots) {
-            // As `pixel_offset` and `AttributePlane::at`, term by term: the same bits.
-            let offset_x = (x as f32 + 0.5) - origin.x;
-            let inv_w = t.inv_w.at_origin + t.inv_w.dx * offset_x + t.inv_w.dy * offset_y;
-            let nearer = edges.inside() & (inv_w > *nearest_inv_w);
-            *nearest_inv_w = if nearer { inv_w } else { *nearest_inv_w };
-            *nearest = if nearer { index } else { *nearest };
-            edges.advance();
-        }
     }
 }
 
