@@ -314,8 +314,13 @@ impl TileBuffers {
                         for (index, run) in same_triangle(run_slots) {
                             let make = FragmentMaker::new(&triangles[index as usize], frame, y);
                             let x0 = first + run.start as u32;
-                            let xs = x0..x0 + run.len() as u32;
-                            self.fragments.extend(xs.map(move |x| make.at(x)));
+                            // A loop here, not `extend` with a closure: the compiler left
+                            // extend's loop out of line, and it reloaded the maker from the
+                            // stack (wider loads than the stores that had just put it there,
+                            // which stall) at every run.
+                            for x in x0..x0 + run.len() as u32 {
+                                self.fragments.push(make.at(x));
+                            }
                         }
                         self.visible_runs.push(pixels);
                     }
