@@ -198,10 +198,9 @@ fn blinn_normal_lanes(frames: &Frames, heights: &[f32], gradients: &[Vec2], out:
     for (chunk, ((heights, gradients), out)) in chunks.enumerate() {
         let range = chunk * LANES..chunk * LANES + out.len();
         let [mut normal, mut pu, mut pv] = [(); 3].map(|_| Lanes::splat(Vec3::ZERO));
-        let (along_u, along_v) = frames.tangents();
-        normal.load(frames.normals(), range.clone());
-        pu.load(along_u, range.clone());
-        pv.load(along_v, range);
+        normal.load(&frames.n, range.clone());
+        pu.load(&frames.pu, range.clone());
+        pv.load(&frames.pv, range);
         let bump = BumpLanes::new(heights, gradients);
         let normals = Lanes::from_fn(|k| {
             let frame = Frame {

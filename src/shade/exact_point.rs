@@ -158,7 +158,7 @@ pub(super) fn true_hit_derivatives(
     rays: &SampleRays,
     fragments: &mut [Fragment],
     group: &[u32],
-    frames: &mut Frames,
+    frames: &Frames,
     moved: &[bool],
     scratch: &mut DerivativeScratch,
 ) {
@@ -166,7 +166,6 @@ pub(super) fn true_hit_derivatives(
     if !group.iter().any(|&i| moved[i as usize]) {
         return;
     }
-    frames.expand();
     let (dx, dy) = (
         rays.per_pixel_x * rays.footprint,
         rays.per_pixel_y * rays.footprint,

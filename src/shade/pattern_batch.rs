@@ -86,7 +86,7 @@ impl InputLanes {
         }
         if lanes == 9 {
             let inverse = jacobian.inverse();
-            let tangents = at.frames.tangents();
+            let tangents = (&at.frames.pu, &at.frames.pv);
             write_combined([x_u, y_u, z_u], n, tangents, inverse.x_axis);
             write_combined([x_v, y_v, z_v], n, tangents, inverse.y_axis);
         }

@@ -79,14 +79,6 @@ impl LitShader {
 
 /// Zeroes `reach` where the light is behind the seen side of the geometric surface (facing
 /// unit `normals` at camera-relative `points`), or the side cannot be told (a NaN normal).
-/// The normal every frame shares, if the frames share one (`Frames::start_shared`).
-fn shared_normal(frames: &Frames) -> Option<Vec3> {
-    frames
-        .first()
-        .filter(|_| frames.is_shared())
-        .map(|frame| frame.n)
-}
-
 fn stop_at_terminator(light: &RelativeLight, points: &[Vec3], normals: &[Vec3], reach: &mut [f32]) {
     // One loop per kind of light, compiled for the widest SIMD: with the light's kind matched
     // inside it, the loop stayed scalar.
@@ -291,18 +283,14 @@ impl LitShader {
         let material = &object.prepared.material;
         scratch.frames.clear();
         let uv = |k: usize| fragments[group[k] as usize].uv;
-        if self.frame_is_constant(surface) && !self.reads_each_frame(material) {
-            surface.frames_sharing(group.len(), uv, &mut scratch.frames);
-        } else {
-            surface.frames(group.len(), uv, &mut scratch.frames);
-        }
+        surface.frames(group.len(), uv, &mut scratch.frames);
         if let Surface::Model(model) = surface {
             to_texture_space(model, fragments, group, &mut scratch.frames);
         }
         // Fragments moved to their true hits take their derivatives from these frames, the
         // true surface's (before any interpolated normals replace them).
         if self.surface_point == SurfacePointSource::Exact && self.reads_derivatives(object) {
-            let (frames, exact) = (&mut scratch.frames, &mut scratch.exact);
+            let (frames, exact) = (&scratch.frames, &mut scratch.exact);
             let moved = &exact.moved;
             let derivatives = &mut exact.derivatives;
             true_hit_derivatives(surface, rays, fragments, group, frames, moved, derivatives);
@@ -335,23 +323,14 @@ impl LitShader {
         if self.mode == ShaderMode::Shaded && material.bump.is_none() {
             // The frames' own normals, read straight into the lighting's lanes.
             let (frames, points) = (&scratch.frames, &scratch.points);
-            let lighting = self.lighting(material, group, &scratch.colors, &scratch.reach);
-            let facing = |(&p, n): (&Vec3, Vec3)| (p, n * facing_sign(p, n));
-            match shared_normal(frames) {
-                Some(n) => {
-                    let surface = |range: Range<usize>| {
-                        points[range].iter().zip(std::iter::repeat(n)).map(facing)
-                    };
-                    lighting.light(surface, &mut scratch.lit, out);
-                }
-                None => {
-                    let surface = |range: Range<usize>| {
-                        let points = points[range.clone()].iter();
-                        points.zip(frames.normals().range(range)).map(facing)
-                    };
-                    lighting.light(surface, &mut scratch.lit, out);
-                }
-            }
+            let surface = |range: Range<usize>| {
+                let points = points[range.clone()].iter();
+                points
+                    .zip(frames.n.range(range))
+                    .map(|(&p, n)| (p, n * facing_sign(p, n)))
+            };
+            self.lighting(material, group, &scratch.colors, &scratch.reach)
+                .light(surface, &mut scratch.lit, out);
             return flattened;
         }
         self.lighting_inputs(object, fragments, group, constant_normal, scratch);
@@ -410,9 +389,7 @@ impl LitShader {
         match constant_normal {
             Some(n) => normals.extend(points.iter().map(|&p| facing(p, n))),
             None => {
-                let frames = points
-                    .iter()
-                    .zip(scratch.frames.normals().range(0..points.len()));
+                let frames = points.iter().zip(scratch.frames.n.range(0..points.len()));
                 normals.extend(frames.map(|(&p, n)| facing(p, n)));
             }
         }
@@ -467,21 +444,13 @@ impl LitShader {
             NormalForm::Seed => false,
         };
         if batched || !bumped {
-            let facing = |(&p, normal): (&Vec3, &mut Vec3), n: Vec3| {
+            let geometric = scratch.frames.n.range(0..group.len());
+            for ((&p, normal), n) in points.iter().zip(normals.iter_mut()).zip(geometric) {
                 let shown = if batched { *normal } else { n };
                 *normal = shown * facing_sign(p, n);
-            };
-            let each = points.iter().zip(normals.iter_mut());
-            match shared_normal(&scratch.frames) {
-                Some(n) => each.for_each(|at| facing(at, n)),
-                None => {
-                    let geometric = scratch.frames.normals().range(0..group.len());
-                    each.zip(geometric).for_each(|(at, n)| facing(at, n));
-                }
             }
             return;
         }
-        scratch.frames.expand();
         let frames = group.iter().zip(scratch.frames.iter());
         let outputs = points.iter().zip(normals);
         for (k, ((&i, frame), (&p, normal))) in frames.zip(outputs).enumerate() {
@@ -491,24 +460,6 @@ impl LitShader {
             let n = bumped_normal(surface, uv, &frame, b, bu, bv, form);
             *normal = n * facing_sign(p, frame.n);
         }
-    }
-
-    /// Whether shading `material` reads Pu, Pv or the normal frame by frame, even on a flat
-    /// surface: image textures and height and normal maps (through `surface_point`), point
-    /// patterns' partials in a bump, and the seed's normals. The rest read the one shared frame.
-    fn reads_each_frame(&self, material: &Material) -> bool {
-        let texture = match &material.texture {
-            None | Some(Texturing::Pattern(_)) => false,
-            Some(Texturing::Image(_)) => true,
-        };
-        let bump = match material.bump.as_ref().map(|bump| &bump.source) {
-            None => false,
-            Some(BumpSource::Pattern(binding)) => {
-                binding.pattern.uses_point() || self.normal_form == NormalForm::Seed
-            }
-            Some(BumpSource::Image(_) | BumpSource::NormalMap(_)) => true,
-        };
-        texture || bump
     }
 
     /// Whether every fragment of `surface` has the same frame but for its point: a flat
@@ -931,7 +882,7 @@ fn interpolate_frames(
     for (k, &i) in group.iter().enumerate() {
         if let Some(at) = normals.at(fragments[i as usize].uv) {
             frames.p.set(k, at.p);
-            frames.normals_mut().set(k, at.n);
+            frames.n.set(k, at.n);
         }
     }
 }

@@ -88,21 +88,12 @@ impl Vectors {
 }
 
 /// The frames of a batch of fragments, by position in the batch.
-///
-/// A flat surface's frames may share one Pu, Pv and normal (`start_shared`): then only the
-/// points are held one per frame. Writing the three shared vectors for every fragment, and
-/// reading them back, was a large share of a plane's shading, and most of its stages read the
-/// one normal anyway. Whatever reads Pu, Pv or n frame by frame (`slices`, `iter`, `normals`,
-/// `tangents`) must `expand` shared frames first; it panics on ones left shared, so a stage
-/// that forgets cannot read wrong frames.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Frames {
     pub p: Vectors,
-    pu: Vectors,
-    pv: Vectors,
-    n: Vectors,
-    /// Pu, Pv and n hold one vector each, every frame's.
-    shared: bool,
+    pub pu: Vectors,
+    pub pv: Vectors,
+    pub n: Vectors,
 }
 
 impl Frames {
@@ -116,61 +107,14 @@ impl Frames {
 
     pub fn clear(&mut self) {
         self.vectors_mut().into_iter().for_each(Vectors::clear);
-        self.shared = false;
     }
 
     pub fn reserve(&mut self, more: usize) {
         self.vectors_mut().into_iter().for_each(|v| v.reserve(more));
     }
 
-    /// Makes empty frames `len` frames that share `frame`'s Pu, Pv and n, their points all
-    /// `frame.p` for the caller to overwrite.
-    pub fn start_shared(&mut self, len: usize, frame: Frame) {
-        assert!(self.is_empty(), "shared frames start from none");
-        self.p.resize(len, frame.p);
-        self.pu.push(frame.pu);
-        self.pv.push(frame.pv);
-        self.n.push(frame.n);
-        self.shared = len > 0;
-    }
-
-    /// Whether Pu, Pv and n are one vector shared by every frame.
-    pub fn is_shared(&self) -> bool {
-        self.shared
-    }
-
-    /// Holds Pu, Pv and n one per frame, as unshared frames do.
-    pub fn expand(&mut self) {
-        if self.shared {
-            let (len, first) = (self.len(), self.at(0));
-            self.pu.resize(len, first.pu);
-            self.pv.resize(len, first.pv);
-            self.n.resize(len, first.n);
-            self.shared = false;
-        }
-    }
-
-    /// Each frame's normal (the frames must not be shared: see `expand`).
-    pub fn normals(&self) -> &Vectors {
-        self.assert_unshared();
-        &self.n
-    }
-
-    /// Each frame's normal, to write.
-    pub fn normals_mut(&mut self) -> &mut Vectors {
-        self.expand();
-        &mut self.n
-    }
-
-    /// Each frame's Pu and Pv (the frames must not be shared: see `expand`).
-    pub fn tangents(&self) -> (&Vectors, &Vectors) {
-        self.assert_unshared();
-        (&self.pu, &self.pv)
-    }
-
     /// Grows (or shrinks) to `len` frames, new ones `frame`.
     pub fn resize(&mut self, len: usize, frame: Frame) {
-        self.expand();
         self.p.resize(len, frame.p);
         self.pu.resize(len, frame.pu);
         self.pv.resize(len, frame.pv);
@@ -179,7 +123,6 @@ impl Frames {
 
     #[inline(always)]
     pub fn push(&mut self, frame: Frame) {
-        self.expand();
         self.p.push(frame.p);
         self.pu.push(frame.pu);
         self.pv.push(frame.pv);
@@ -188,18 +131,16 @@ impl Frames {
 
     #[inline(always)]
     pub fn at(&self, k: usize) -> Frame {
-        let shared = if self.shared { 0 } else { k };
         Frame {
             p: self.p.at(k),
-            pu: self.pu.at(shared),
-            pv: self.pv.at(shared),
-            n: self.n.at(shared),
+            pu: self.pu.at(k),
+            pv: self.pv.at(k),
+            n: self.n.at(k),
         }
     }
 
     #[inline(always)]
     pub fn set(&mut self, k: usize, frame: Frame) {
-        self.expand();
         self.p.set(k, frame.p);
         self.pu.set(k, frame.pu);
         self.pv.set(k, frame.pv);
@@ -221,11 +162,9 @@ impl Frames {
     }
 
     /// The coordinate arrays, each cut to the batch's length: indexed below that length in the
-    /// function that cut them, their bounds checks (and unread loads) compile away. The frames
-    /// must not be shared (see `expand`).
+    /// function that cut them, their bounds checks (and unread loads) compile away.
     #[inline(always)]
     pub fn slices(&self) -> FrameSlices<'_> {
-        self.assert_unshared();
         FrameSlices {
             p: self.p.coordinates(),
             pu: self.pu.coordinates(),
@@ -235,14 +174,6 @@ impl Frames {
         }
     }
 
-    #[inline(always)]
-    fn assert_unshared(&self) {
-        assert!(
-            !self.shared,
-            "frames read one by one while shared: expand them first"
-        );
-    }
-
     /// Appends the first `len` frames of a chunk given as lanes of coordinates: p, Pu, Pv and
     /// n, each as x, y and z.
     pub fn extend_from_lanes<const LANES: usize>(
@@ -250,7 +181,6 @@ impl Frames {
         lanes: &[[f32; LANES]; 12],
         len: usize,
     ) {
-        self.expand();
         let arrays = self
             .vectors_mut()
             .into_iter()
@@ -330,7 +260,7 @@ mod tests {
         let expected = [0.0, 1.0, 9.0, 3.0, 4.0, -1.0, -1.0].map(frame);
         assert!(frames.iter().eq(expected));
         assert_eq!(frames.first(), Some(frame(0.0)));
-        let normals: Vec<Vec3> = frames.normals().range(1..3).collect();
+        let normals: Vec<Vec3> = frames.n.range(1..3).collect();
         let mut lanes = [[0.0f32; 4]; 12];
         for (c, lane) in lanes.iter_mut().enumerate() {
             *lane = [c as f32, 10.0 + c as f32, 20.0 + c as f32, -1.0];
@@ -347,47 +277,6 @@ mod tests {
         assert_eq!(normals, [frame(1.0).n, frame(9.0).n]);
         frames.clear();
         assert!(frames.is_empty() && frames.first().is_none());
-        assert!(frames.tangents().0.is_empty() && frames.normals().is_empty());
-    }
-
-    #[test]
-    fn shared_frames_read_as_their_expansion() {
-        let mut shared = Frames::default();
-        shared.start_shared(4, frame(2.0));
-        shared.p.set(3, Vec3::new(7.0, 8.0, 9.0));
-        assert!(shared.is_shared());
-        let mut expected: Frames = (0..4).map(|_| frame(2.0)).collect();
-        expected.p.set(3, Vec3::new(7.0, 8.0, 9.0));
-        for k in 0..4 {
-            assert_eq!(shared.at(k), expected.at(k));
-        }
-        assert_eq!(shared.first(), expected.first());
-        shared.expand();
-        assert!(!shared.is_shared());
-        assert_eq!(shared, expected);
-        assert!(shared.iter().eq(expected.iter()));
-    }
-
-    #[test]
-    fn writing_one_frame_expands_shared_frames() {
-        let mut frames = Frames::default();
-        frames.start_shared(3, frame(1.0));
-        frames.set(1, frame(5.0));
-        assert!(frames.iter().eq([frame(1.0), frame(5.0), frame(1.0)]));
-        frames.clear();
-        frames.start_shared(2, frame(1.0));
-        frames.normals_mut().set(0, Vec3::Z);
-        assert_eq!(
-            frames.normals().range(0..2).collect::<Vec<_>>(),
-            [Vec3::Z, frame(1.0).n]
-        );
-    }
-
-    #[test]
-    #[should_panic(expected = "expand them first")]
-    fn shared_frames_refuse_to_be_read_one_by_one() {
-        let mut frames = Frames::default();
-        frames.start_shared(2, frame(1.0));
-        let _ = frames.slices();
+        assert!(frames.pu.is_empty() && frames.n.is_empty());
     }
 }

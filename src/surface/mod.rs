@@ -118,21 +118,6 @@ impl Surface {
         }
     }
 
-    /// `frames`, but a flat surface's frames into empty `out` share one Pu, Pv and normal
-    /// (`Frames::start_shared`), for batches that read them one by one only after `expand`.
-    pub fn frames_sharing(&self, count: usize, uv: impl Fn(usize) -> Vec2, out: &mut Frames) {
-        let at_origin = match self {
-            Surface::Plane(s) => s.frame(0.0, 0.0),
-            Surface::Triangle(s) => s.frame(0.0, 0.0),
-            _ => return self.frames(count, uv, out),
-        };
-        if !out.is_empty() {
-            return flat_frames(count, uv, at_origin, out);
-        }
-        out.start_shared(count, at_origin);
-        flat_points(count, uv, at_origin, out);
-    }
-
     /// Whether Pu, Pv and n are the same at every (u,v) (only the point varies).
     pub fn is_flat(&self) -> bool {
         matches!(self, Surface::Plane(_) | Surface::Triangle(_))
@@ -276,16 +261,10 @@ fn frames_each(
 /// tangents and normal are those of `at_origin` everywhere: the frames are filled with
 /// `at_origin`, then only their points are written.
 fn flat_frames(count: usize, uv: impl Fn(usize) -> Vec2, at_origin: Frame, out: &mut Frames) {
-    out.resize(out.len() + count, at_origin);
-    flat_points(count, uv, at_origin, out);
-}
-
-/// Writes the points of the flat surface whose frame at (0,0) is `at_origin` at `uv(0)` …
-/// `uv(count − 1)` over the last `count` frames of `out`.
-fn flat_points(count: usize, uv: impl Fn(usize) -> Vec2, at_origin: Frame, out: &mut Frames) {
     let (pu, pv) = (at_origin.pu, at_origin.pv);
+    let start = out.len();
+    out.resize(start + count, at_origin);
     let [x, y, z] = out.p.coordinates_mut();
-    let start = x.len() - count;
     let points = x[start..]
         .iter_mut()
         .zip(&mut y[start..])
@@ -298,33 +277,6 @@ fn flat_points(count: usize, uv: impl Fn(usize) -> Vec2, at_origin: Frame, out: 
 
 #[cfg(test)]
 pub(crate) mod tests {
-    #[test]
-    fn shared_frames_are_the_frames_of_every_surface() {
-        use super::{Frames, Plane, Sphere, Surface};
-        use glam::{DVec3, Vec2, Vec3};
-        let surfaces = [
-            Surface::Plane(Plane::new(DVec3::ZERO, Vec3::Y, Vec3::X, Vec2::ONE)),
-            Surface::Sphere(Sphere {
-                center: DVec3::ZERO,
-                radius: 2.0,
-            }),
-        ];
-        let uv = |k: usize| Vec2::new(k as f32 * 7.5 - 20.0, k as f32 * 3.0 - 9.0);
-        for surface in surfaces {
-            let (mut each, mut shared) = (Frames::default(), Frames::default());
-            surface.frames(9, uv, &mut each);
-            surface.frames_sharing(9, uv, &mut shared);
-            assert_eq!(shared.is_shared(), surface.is_flat());
-            for k in 0..9 {
-                assert_eq!(shared.at(k), each.at(k), "{surface:?} frame {k}");
-            }
-            // Appended to frames already there, they are held one by one.
-            surface.frames_sharing(2, uv, &mut shared);
-            assert!(!shared.is_shared() && shared.len() == 11);
-            assert_eq!(shared.at(10), each.at(1));
-        }
-    }
-
     #[test]
     fn triangle_counts_match_the_tessellated_meshes() {
         use super::{
