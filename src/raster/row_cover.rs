@@ -238,15 +238,20 @@ mod tests {
 
     /// What `cover` must do, pixel by pixel in i64 without any stepping.
     fn reference(t: &ScreenTriangle, row: &RowSpan, index: u32, origin: Vec2, slots: RowNearest) {
-        let offset_y = (row.y as f32 + 0.5) - origin.y;
         for k in 0..=(row.x1 - row.x0) as usize {
             let inside = (0..3).all(|i| row.edges.at[i] + row.edges.steps[i] * k as i64 >= 0);
-            let offset_x = ((row.x0 as usize + k) as f32 + 0.5) - origin.x;
-            let depth = t.inv_w.at_origin + t.inv_w.dx * offset_x + t.inv_w.dy * offset_y;
+            let depth = depth_at(t, row, origin, k);
             if inside && depth > slots.inv_w[k] {
                 (slots.inv_w[k], slots.triangle[k]) = (depth, index);
             }
         }
+    }
+
+    /// The triangle's 1/w at the row's k-th pixel, as `AttributePlane::at` gives it.
+    fn depth_at(t: &ScreenTriangle, row: &RowSpan, origin: Vec2, k: usize) -> f32 {
+        let offset_x = ((row.x0 as usize + k) as f32 + 0.5) - origin.x;
+        let offset_y = (row.y as f32 + 0.5) - origin.y;
+        t.inv_w.at_origin + t.inv_w.dx * offset_x + t.inv_w.dy * offset_y
     }
 
     #[test]
@@ -278,11 +283,7 @@ mod tests {
             };
             let origin = Vec2::new(x0 as f32 - 0.75, row.y as f32 - 0.25);
             // Nothing drawn, something drawn, or a tie with this triangle (which it loses).
-            let offset_y = (row.y as f32 + 0.5) - origin.y;
-            let own_depth = |k: usize| {
-                let offset_x = ((x0 as usize + k) as f32 + 0.5) - origin.x;
-                t.inv_w.at_origin + t.inv_w.dx * offset_x + t.inv_w.dy * offset_y
-            };
+            let own_depth = |k: usize| depth_at(&t, &row, origin, k);
             let depths: Vec<f32> = (0..padded)
                 .map(|k| [0.0, unit(&mut numbers), own_depth(k)][numbers.below(3) as usize])
                 .collect();
