@@ -5,7 +5,7 @@ use super::clip::{ClipVertex, clip_triangle, needs_no_clipping};
 use super::fragment::{FragmentShader, FrameObject};
 use super::framebuffer::{Blend, Framebuffer};
 use super::refine::Refinement;
-use super::setup::{ScreenTriangle, ShiftSpan, TrianglePlanes, Viewport};
+use super::setup::{PlacedTriangle, ScreenTriangle, ShiftSpan, TrianglePlanes, Viewport};
 use super::strips::{Pass, STRIP_ROWS, SetUp, StripBuffers, StripJob};
 use super::tile::TileBuffers;
 use super::top_first::map_top_first;
@@ -389,10 +389,18 @@ fn object_triangle_pieces(
         threads => threads * SETUP_PIECES_PER_THREAD,
     };
     mesh.indices
-        .par_iter()
-        .with_min_len(mesh.indices.len().div_ceil(pieces).max(1))
-        .fold(Vec::new, |mut out, triangle| {
-            setup.push(triangle, &mut out);
+        .par_chunks(mesh.indices.len().div_ceil(pieces).max(1))
+        .map(|piece| {
+            let mut out = Vec::with_capacity(piece.len());
+            // Snapping rounds: a library call per value in baseline x86-64.
+            crate::simd::widest_rounding(
+                #[inline(always)]
+                || {
+                    piece
+                        .iter()
+                        .for_each(|triangle| setup.push(triangle, &mut out))
+                },
+            );
             out
         })
         .collect()
@@ -413,6 +421,7 @@ struct ObjectSetup<'a> {
 
 impl ObjectSetup<'_> {
     /// Culls, clips and sets up the mesh triangle `corners`, pushing what is left onto `out`.
+    #[inline(always)]
     fn push(&self, corners: &[u32; 3], out: &mut Vec<ScreenTriangle>) {
         let mesh = &self.object.prepared.mesh;
         if self.cull_back_faces {
@@ -429,16 +438,20 @@ impl ObjectSetup<'_> {
             position: self.clip_positions[i as usize],
             uv: mesh.uvs[i as usize],
         });
-        let Some(planes) = TrianglePlanes::new(&vertices, self.viewport, self.interpolation) else {
-            return;
-        };
-        let screen = |v: [ClipVertex; 3]| {
-            ScreenTriangle::new(v, self.viewport, &planes, self.index, &self.span)
-        };
+        let planes = || TrianglePlanes::new(&vertices, self.viewport, self.interpolation);
         if needs_no_clipping(&vertices, self.guard) {
-            out.extend(screen(vertices));
-        } else if let Some(polygon) = clip_triangle(vertices, self.guard) {
+            // Placed first: many of a fine mesh's triangles reach no pixel centre, and their
+            // planes would go unused.
+            if let Some(placed) = PlacedTriangle::new(&vertices, self.viewport, &self.span)
+                && let Some(planes) = planes()
+            {
+                out.push(placed.with(&planes, self.index));
+            }
+        } else if let (Some(polygon), Some(planes)) =
+            (clip_triangle(vertices, self.guard), planes())
+        {
             let v = polygon.as_slice();
+            let screen = |v| ScreenTriangle::new(v, self.viewport, &planes, self.index, &self.span);
             out.extend((1..v.len() - 1).filter_map(|k| screen([v[0], v[k], v[k + 1]])));
         }
     }

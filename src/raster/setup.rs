@@ -212,9 +212,8 @@ fn inverse_rows(h: [DVec3; 3]) -> Option<[DVec3; 3]> {
 
 impl ScreenTriangle {
     /// Snaps a (clipped) triangle to fixed point and sets up its edge functions; its attributes
-    /// come from the planes of the scene triangle it belongs to. Its bounds hold the pixels
-    /// whose sample point may fall in its box under a shift of `span`. `None` for triangles
-    /// with zero snapped area or no such pixel in the viewport.
+    /// come from the planes of the scene triangle it belongs to. `None` for triangles with zero
+    /// snapped area or no pixel in the viewport (see `PlacedTriangle::new`).
     pub fn new(
         vertices: [ClipVertex; 3],
         viewport: Viewport,
@@ -222,6 +221,29 @@ impl ScreenTriangle {
         object: u32,
         span: &ShiftSpan,
     ) -> Option<ScreenTriangle> {
+        PlacedTriangle::new(&vertices, viewport, span).map(|placed| placed.with(planes, object))
+    }
+}
+
+/// A (clipped) triangle snapped to fixed point with the pixels it may cover: a screen triangle
+/// but for its attribute planes, which cost more to work out and are needed only by triangles
+/// that reach a pixel.
+pub struct PlacedTriangle {
+    /// In counter-clockwise order on screen (y down).
+    snapped: [(i64, i64); 3],
+    bounds: PixelRect,
+    origin: Vec2,
+}
+
+impl PlacedTriangle {
+    /// Its bounds hold the pixels whose sample point may fall in its box under a shift of
+    /// `span`. `None` for triangles with zero snapped area or no such pixel in the viewport.
+    #[inline(always)]
+    pub fn new(
+        vertices: &[ClipVertex; 3],
+        viewport: Viewport,
+        span: &ShiftSpan,
+    ) -> Option<PlacedTriangle> {
         let mut snapped = [(0i64, 0i64); 3];
         for (i, v) in vertices.iter().enumerate() {
             let w = v.position.w as f64;
@@ -241,7 +263,22 @@ impl ScreenTriangle {
         }
         let bounds = pixel_bounds(&snapped, viewport, span)?;
         let origin = attribute_origin(&snapped, viewport);
-        Some(ScreenTriangle {
+        Some(PlacedTriangle {
+            snapped,
+            bounds,
+            origin,
+        })
+    }
+
+    /// The screen triangle, its attributes from `planes` (of the scene triangle it belongs to).
+    #[inline(always)]
+    pub fn with(self, planes: &TrianglePlanes, object: u32) -> ScreenTriangle {
+        let PlacedTriangle {
+            snapped,
+            bounds,
+            origin,
+        } = self;
+        ScreenTriangle {
             bounds,
             edges: [0, 1, 2].map(|i| edge(snapped[(i + 1) % 3], snapped[(i + 2) % 3], &bounds)),
             origin,
@@ -249,7 +286,7 @@ impl ScreenTriangle {
             u_over_w: planes.at(planes.u, origin),
             v_over_w: planes.at(planes.v, origin),
             object,
-        })
+        }
     }
 }
 
