@@ -58,9 +58,18 @@ pub fn clip_triangle(triangle: [ClipVertex; 3], guard: f32) -> Option<ClippedPol
 /// Whether clipping would return the triangle unchanged (as nearly all triangles are): callers
 /// can then skip building a polygon.
 pub fn needs_no_clipping(triangle: &[ClipVertex; 3], guard: f32) -> bool {
+    triangle
+        .iter()
+        .all(|v| inside_clip_volume(v.position, guard))
+}
+
+/// Whether a clip-space point lies inside every clip plane: a triangle of three such points
+/// needs no clipping.
+#[inline(always)]
+pub fn inside_clip_volume(position: Vec4, guard: f32) -> bool {
     CLIP_PLANES
         .iter()
-        .all(|&plane| wholly_inside(triangle, plane, guard))
+        .all(|&plane| plane(position, guard) >= 0.0)
 }
 
 /// Signed distances of a clip-space point to the planes, non-negative inside; `guard` is the

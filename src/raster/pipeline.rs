@@ -1,11 +1,13 @@
 //! The frame pipeline: prepared scenes, per-frame objects, screen triangles and the render entry
 //! points.
 
-use super::clip::{ClipVertex, clip_triangle, needs_no_clipping};
+use super::clip::{ClipVertex, clip_triangle, inside_clip_volume};
 use super::fragment::{FragmentShader, FrameObject};
 use super::framebuffer::{Blend, Framebuffer};
 use super::refine::Refinement;
-use super::setup::{PlacedTriangle, ScreenTriangle, ShiftSpan, TrianglePlanes, Viewport};
+use super::setup::{
+    PlacedTriangle, ScreenTriangle, ShiftSpan, TrianglePlanes, Viewport, snap_vertex,
+};
 use super::strips::{Pass, STRIP_ROWS, SetUp, StripBuffers, StripJob};
 use super::tile::TileBuffers;
 use super::top_first::map_top_first;
@@ -365,18 +367,29 @@ fn object_triangle_pieces(
     span: &ShiftSpan,
 ) -> Vec<Vec<ScreenTriangle>> {
     let mesh = &object.prepared.mesh;
+    let (viewport, guard) = (target.viewport, target.viewport.guard_band());
+    let (clip_positions, vertices) = mesh
+        .positions
+        .par_iter()
+        .map(|&p| {
+            let position = view_projection * (object.origin + p).extend(1.0);
+            // Snapping rounds: a library call per value in baseline x86-64.
+            let vertex = crate::simd::widest_rounding(
+                #[inline(always)]
+                || SetupVertex::new(position, viewport, guard),
+            );
+            (position, vertex)
+        })
+        .unzip();
     let setup = ObjectSetup {
         object,
         index,
-        clip_positions: mesh
-            .positions
-            .par_iter()
-            .map(|&p| view_projection * (object.origin + p).extend(1.0))
-            .collect(),
+        clip_positions,
+        vertices,
         cull_back_faces: object.prepared.surface.encloses(target.camera.eye) == Some(true),
-        viewport: target.viewport,
+        viewport,
         interpolation: target.interpolation,
-        guard: target.viewport.guard_band(),
+        guard,
         span: *span,
     };
     // Each piece pushes straight into its own list, for the frame's pieces to be joined in order:
@@ -392,8 +405,7 @@ fn object_triangle_pieces(
         .par_chunks(mesh.indices.len().div_ceil(pieces).max(1))
         .map(|piece| {
             let mut out = Vec::with_capacity(piece.len());
-            // Snapping rounds: a library call per value in baseline x86-64.
-            crate::simd::widest_rounding(
+            crate::simd::widest(
                 #[inline(always)]
                 || {
                     piece
@@ -411,12 +423,33 @@ struct ObjectSetup<'a> {
     object: &'a FrameObject<'a>,
     index: u32,
     clip_positions: Vec<Vec4>,
+    /// By vertex, as `clip_positions`: a vertex is shared by several triangles.
+    vertices: Vec<SetupVertex>,
     cull_back_faces: bool,
     viewport: Viewport,
     interpolation: Interpolation,
     guard: f32,
     /// See `ScreenTriangle::new`.
     span: ShiftSpan,
+}
+
+/// What triangle setup reads of a vertex before clipping.
+#[derive(Clone, Copy)]
+struct SetupVertex {
+    /// Its position snapped to the screen, where it lies in front of the eye.
+    snapped: Option<(i64, i64)>,
+    /// Whether it lies inside every clip plane (a triangle of three such needs no clipping).
+    inside_clip_volume: bool,
+}
+
+impl SetupVertex {
+    #[inline(always)]
+    fn new(position: Vec4, viewport: Viewport, guard: f32) -> SetupVertex {
+        SetupVertex {
+            snapped: snap_vertex(position, viewport),
+            inside_clip_volume: inside_clip_volume(position, guard),
+        }
+    }
 }
 
 impl ObjectSetup<'_> {
@@ -439,10 +472,13 @@ impl ObjectSetup<'_> {
             uv: mesh.uvs[i as usize],
         });
         let planes = || TrianglePlanes::new(&vertices, self.viewport, self.interpolation);
-        if needs_no_clipping(&vertices, self.guard) {
+        let setup_vertices = corners.map(|i| self.vertices[i as usize]);
+        if setup_vertices.iter().all(|v| v.inside_clip_volume) {
             // Placed first: many of a fine mesh's triangles reach no pixel centre, and their
             // planes would go unused.
-            if let Some(placed) = PlacedTriangle::new(&vertices, self.viewport, &self.span)
+            if let [Some(a), Some(b), Some(c)] = setup_vertices.map(|v| v.snapped)
+                && let Some(placed) =
+                    PlacedTriangle::from_snapped([a, b, c], self.viewport, &self.span)
                 && let Some(planes) = planes()
             {
                 out.push(placed.with(&planes, self.index));

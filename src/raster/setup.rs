@@ -3,7 +3,7 @@
 use super::clip::ClipVertex;
 use super::pipeline::Interpolation;
 use super::scan::PixelRect;
-use glam::{DVec3, Vec2};
+use glam::{DVec3, Vec2, Vec4};
 
 /// Sub-pixel precision of snapped vertex positions: 1/256 of a pixel.
 pub const SUBPIXEL_BITS: u32 = 8;
@@ -245,15 +245,19 @@ impl PlacedTriangle {
         span: &ShiftSpan,
     ) -> Option<PlacedTriangle> {
         let mut snapped = [(0i64, 0i64); 3];
-        for (i, v) in vertices.iter().enumerate() {
-            let w = v.position.w as f64;
-            if !(w > 0.0 && w.is_finite()) {
-                return None;
-            }
-            let sx = (v.position.x as f64 / w * 0.5 + 0.5) * viewport.width as f64;
-            let sy = (0.5 - v.position.y as f64 / w * 0.5) * viewport.height as f64;
-            snapped[i] = (snap(sx), snap(sy));
+        for (snapped, v) in snapped.iter_mut().zip(vertices) {
+            *snapped = snap_vertex(v.position, viewport)?;
         }
+        PlacedTriangle::from_snapped(snapped, viewport, span)
+    }
+
+    /// `new`, from vertices already snapped (by `snap_vertex`).
+    #[inline(always)]
+    pub fn from_snapped(
+        mut snapped: [(i64, i64); 3],
+        viewport: Viewport,
+        span: &ShiftSpan,
+    ) -> Option<PlacedTriangle> {
         let area = edge_value(snapped[1], snapped[2], snapped[0]);
         if area == 0 {
             return None;
@@ -290,6 +294,20 @@ impl PlacedTriangle {
     }
 }
 
+/// A clip-space position snapped to fixed-point pixels; `None` unless it lies in front of the
+/// eye (w > 0 and finite).
+#[inline(always)]
+pub fn snap_vertex(position: Vec4, viewport: Viewport) -> Option<(i64, i64)> {
+    let w = position.w as f64;
+    if !(w > 0.0 && w.is_finite()) {
+        return None;
+    }
+    let sx = (position.x as f64 / w * 0.5 + 0.5) * viewport.width as f64;
+    let sy = (0.5 - position.y as f64 / w * 0.5) * viewport.height as f64;
+    Some((snap(sx), snap(sy)))
+}
+
+#[inline(always)]
 fn snap(pixels: f64) -> i64 {
     let limit = (GUARD_PIXELS as f64 * 2.0) * ONE as f64;
     (pixels * ONE as f64).round().clamp(-limit, limit) as i64
