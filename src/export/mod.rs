@@ -7,6 +7,7 @@ mod map_png;
 pub mod metadata;
 mod output_file;
 mod png_file;
+mod png_filter;
 mod pov_scene;
 mod ppm_file;
 mod still_file;

@@ -1,7 +1,10 @@
-//! PNG output with the `png` crate: 8-bit sRGB, text chunks before the image data, rows
-//! streamed in as they are rendered.
+//! PNG output: 8-bit sRGB, text chunks before the image data, rows streamed in as they are
+//! rendered. The png crate writes the chunks around the image data; the rows are filtered as
+//! its adaptive filter does (`png_filter`, in AVX2 where there) and deflated by fdeflate, as
+//! its fast compression does, into image-data chunks of `CHUNK_BYTES`.
 
 use super::output_file::OutputFile;
+use super::png_filter::{FilterPath, RowFilter};
 use super::writeback::WritebackFile;
 use crate::Error;
 use crate::raster::Framebuffer;
@@ -10,7 +13,7 @@ use std::io::Write;
 use std::path::Path;
 use std::sync::{Arc, Mutex, PoisonError};
 
-/// Compressed bytes per image-data chunk. The encoder's default, 4 KiB, makes a 1080p still a
+/// Compressed bytes per image-data chunk. The png crate's default, 4 KiB, makes a 1080p still a
 /// thousand small writes, and on ext4 each write into a new page cache folio zeroes the rest of
 /// it; a chunk as large as a whole still would be one write, copied into the page cache after
 /// its last row while the other core idles.
@@ -19,50 +22,7 @@ const CHUNK_BYTES: usize = 1 << 17;
 /// A PNG being written: rows go in top first; `finish` completes it and makes it appear.
 pub struct PngStill {
     file: OutputFile,
-    writer: png::StreamWriter<'static, CheckedWriter<WritebackFile>>,
-    failure: WriteFailure,
-}
-
-/// The first write that failed under the encoder, if any.
-type WriteFailure = Arc<Mutex<Option<String>>>;
-
-/// A writer that keeps its first failure. The encoder writes the last image-data chunk and the
-/// image's end when it is dropped, where a failed write is ignored: `finish` asks here.
-struct CheckedWriter<W> {
-    inner: W,
-    failure: WriteFailure,
-}
-
-impl<W: Write> CheckedWriter<W> {
-    fn keep<T>(&self, result: std::io::Result<T>) -> std::io::Result<T> {
-        if let Err(error) = &result {
-            let mut failure = self.failure.lock().unwrap_or_else(PoisonError::into_inner);
-            failure.get_or_insert_with(|| error.to_string());
-        }
-        result
-    }
-}
-
-impl<W: Write> Write for CheckedWriter<W> {
-    fn write(&mut self, data: &[u8]) -> std::io::Result<usize> {
-        let result = self.inner.write(data);
-        self.keep(result)
-    }
-
-    fn flush(&mut self) -> std::io::Result<()> {
-        let result = self.inner.flush();
-        self.keep(result)
-    }
-}
-
-/// Finishes the stream and reports a failed write, also one made as the encoder was dropped.
-fn finish_stream<W: Write>(
-    writer: png::StreamWriter<'static, CheckedWriter<W>>,
-    failure: &WriteFailure,
-) -> Result<(), String> {
-    writer.finish().map_err(|e| e.to_string())?;
-    let failure = failure.lock().unwrap_or_else(PoisonError::into_inner);
-    failure.clone().map_or(Ok(()), Err)
+    rows: ImageData<WritebackFile>,
 }
 
 impl PngStill {
@@ -74,42 +34,173 @@ impl PngStill {
     ) -> Result<PngStill, Error> {
         let (file, handle) = OutputFile::create(path)?;
         let fail = |e: png::EncodingError| Error::write(path, e);
-        let failure = WriteFailure::default();
-        let handle = CheckedWriter {
-            inner: WritebackFile::new(handle),
-            failure: failure.clone(),
-        };
-        let mut encoder = png::Encoder::new(handle, width, height);
+        let mut encoder = png::Encoder::new(WritebackFile::new(handle), width, height);
         encoder.set_color(png::ColorType::Rgb);
         encoder.set_depth(png::BitDepth::Eight);
         encoder.set_source_srgb(png::SrgbRenderingIntent::Perceptual);
-        encoder.set_compression(png::Compression::Fast);
         for (keyword, text) in texts {
             encoder
                 .add_itxt_chunk(keyword.to_string(), text.clone())
                 .map_err(fail)?;
         }
-        let writer = encoder
-            .write_header()
-            .and_then(|w| w.into_stream_writer_with_size(CHUNK_BYTES))
-            .map_err(fail)?;
-        Ok(PngStill {
-            file,
-            writer,
-            failure,
-        })
+        let writer = encoder.write_header().map_err(fail)?;
+        let rows = ImageData::new(writer, width, height).map_err(|e| Error::write(path, e))?;
+        Ok(PngStill { file, rows })
     }
 
     pub fn finish(self) -> Result<(), Error> {
         let path = self.file.destination().to_path_buf();
-        finish_stream(self.writer, &self.failure).map_err(|e| Error::write(&path, e))?;
+        self.rows.finish().map_err(|e| Error::write(&path, e))?;
         self.file.commit()
     }
 }
 
 impl RowSink for PngStill {
     fn write_rows(&mut self, rgb: &[u8]) -> Result<(), String> {
-        self.writer.write_all(rgb).map_err(|e| e.to_string())
+        self.rows.write(rgb)
+    }
+}
+
+/// The image data of a PNG after its header: rows in, filtered and deflated, out as chunks.
+struct ImageData<W: Write> {
+    filter: RowFilter,
+    deflate: fdeflate::Compressor<ImageDataChunks<W>>,
+    failure: WriteFailure,
+    /// The start of a row whose rest has not come yet.
+    partial: Vec<u8>,
+    row_len: usize,
+    rows_left: u32,
+    height: u32,
+}
+
+/// The first write that failed under the compressor, if any. fdeflate takes its writer for
+/// good and unwraps some of its writes, so the writer under it never fails: it keeps the
+/// failure here, drops what comes after, and the rows ask here.
+type WriteFailure = Arc<Mutex<Option<String>>>;
+
+fn failed(failure: &WriteFailure) -> Option<String> {
+    failure
+        .lock()
+        .unwrap_or_else(PoisonError::into_inner)
+        .clone()
+}
+
+impl<W: Write> ImageData<W> {
+    fn new(png: png::Writer<W>, width: u32, height: u32) -> Result<ImageData<W>, String> {
+        let failure = WriteFailure::default();
+        let chunks = ImageDataChunks {
+            png,
+            buffer: Vec::with_capacity(2 * CHUNK_BYTES),
+            failure: failure.clone(),
+        };
+        Ok(ImageData {
+            filter: RowFilter::new(width as usize, FilterPath::detect()),
+            deflate: fdeflate::Compressor::new(chunks).map_err(|e| e.to_string())?,
+            failure,
+            partial: Vec::new(),
+            row_len: 3 * width as usize,
+            rows_left: height,
+            height,
+        })
+    }
+
+    /// Takes rows of 8-bit RGB, top first; a write may end within a row.
+    fn write(&mut self, mut rgb: &[u8]) -> Result<(), String> {
+        if !self.partial.is_empty() {
+            let wanted = (self.row_len - self.partial.len()).min(rgb.len());
+            self.partial.extend_from_slice(&rgb[..wanted]);
+            rgb = &rgb[wanted..];
+            if self.partial.len() < self.row_len {
+                return Ok(());
+            }
+            let row = std::mem::take(&mut self.partial);
+            self.row(&row)?;
+            self.partial = row;
+            self.partial.clear();
+        }
+        let mut rows = rgb.chunks_exact(self.row_len.max(1));
+        for row in &mut rows {
+            self.row(row)?;
+        }
+        self.partial.extend_from_slice(rows.remainder());
+        Ok(())
+    }
+
+    fn row(&mut self, row: &[u8]) -> Result<(), String> {
+        if self.rows_left == 0 {
+            return Err(format!("more than the image's {} rows", self.height));
+        }
+        self.rows_left -= 1;
+        let filtered = self.filter.filter(row);
+        // The type byte on its own, as the png crate writes it: fdeflate's output depends on
+        // where its inputs are cut.
+        let (kind, bytes) = filtered.split_at(1);
+        for part in [kind, bytes] {
+            self.deflate.write_data(part).map_err(|e| e.to_string())?;
+        }
+        failed(&self.failure).map_or(Ok(()), Err)
+    }
+
+    /// Ends the image data and the file (its last chunk and the image's end).
+    fn finish(self) -> Result<(), String> {
+        if self.rows_left > 0 || !self.partial.is_empty() {
+            let whole = self.height - self.rows_left;
+            return Err(format!(
+                "{whole} of the image's {} rows were written",
+                self.height
+            ));
+        }
+        let chunks = self.deflate.finish().map_err(|e| e.to_string())?;
+        if let Some(failure) = failed(&self.failure) {
+            return Err(failure);
+        }
+        let ImageDataChunks {
+            mut png, buffer, ..
+        } = chunks;
+        if !buffer.is_empty() {
+            png.write_chunk(png::chunk::IDAT, &buffer)
+                .map_err(|e| e.to_string())?;
+        }
+        png.finish().map_err(|e| e.to_string())
+    }
+}
+
+/// Compressed image data cut into chunks of `CHUNK_BYTES` (the last one shorter).
+struct ImageDataChunks<W: Write> {
+    png: png::Writer<W>,
+    buffer: Vec<u8>,
+    failure: WriteFailure,
+}
+
+impl<W: Write> Write for ImageDataChunks<W> {
+    #[inline]
+    fn write(&mut self, data: &[u8]) -> std::io::Result<usize> {
+        self.buffer.extend_from_slice(data);
+        if self.buffer.len() >= CHUNK_BYTES {
+            self.write_whole_chunks();
+        }
+        Ok(data.len())
+    }
+
+    fn flush(&mut self) -> std::io::Result<()> {
+        Ok(())
+    }
+}
+
+impl<W: Write> ImageDataChunks<W> {
+    #[inline(never)]
+    fn write_whole_chunks(&mut self) {
+        let mut failure = self.failure.lock().unwrap_or_else(PoisonError::into_inner);
+        let whole = self.buffer.len() / CHUNK_BYTES * CHUNK_BYTES;
+        if failure.is_none() {
+            for chunk in self.buffer[..whole].chunks_exact(CHUNK_BYTES) {
+                if let Err(error) = self.png.write_chunk(png::chunk::IDAT, chunk) {
+                    *failure = Some(error.to_string());
+                    break;
+                }
+            }
+        }
+        self.buffer.drain(..whole);
     }
 }
 
@@ -177,60 +268,129 @@ mod tests {
         }
     }
 
-    const SIZE: (u32, u32) = (64, 48);
-
-    fn rows() -> Vec<u8> {
-        (0..SIZE.0 * SIZE.1 * 3)
-            .map(|i| (i * 7 % 251) as u8)
+    /// Noise (which deflates poorly, so the image data spans several chunks), a ramp and a
+    /// flat band: `width` × `height` RGB.
+    fn rows(width: u32, height: u32) -> Vec<u8> {
+        let mut state = 0x2545_f491u32;
+        (0..width * height * 3)
+            .map(|i| match i / (width * 3) % 3 {
+                0 => {
+                    state ^= state << 13;
+                    state ^= state >> 17;
+                    state ^= state << 5;
+                    state as u8
+                }
+                1 => (i * 7 % 251) as u8,
+                _ => 200,
+            })
             .collect()
     }
 
-    /// Streams `rows()` as `PngStill` does into a disk with `room` bytes: the result of
-    /// finishing, and the bytes that reached the disk.
-    fn stream(room: usize) -> (Result<(), String>, Vec<u8>) {
+    /// Streams `rgb` as `PngStill` does, in writes of `piece` bytes, into a disk with `room`
+    /// bytes: the result of finishing, and the bytes that reached the disk.
+    fn stream(
+        size: (u32, u32),
+        rgb: &[u8],
+        piece: usize,
+        room: usize,
+    ) -> (Result<(), String>, Vec<u8>) {
         let written = Arc::new(Mutex::new(Vec::new()));
-        let failure = WriteFailure::default();
-        let sink = CheckedWriter {
-            inner: FillsUp {
-                written: written.clone(),
-                room,
-            },
-            failure: failure.clone(),
+        let disk = FillsUp {
+            written: written.clone(),
+            room,
         };
-        let mut encoder = png::Encoder::new(sink, SIZE.0, SIZE.1);
+        let mut encoder = png::Encoder::new(disk, size.0, size.1);
         encoder.set_color(png::ColorType::Rgb);
-        encoder.set_compression(png::Compression::Fast);
         let result = encoder
             .write_header()
-            .and_then(|w| w.into_stream_writer_with_size(CHUNK_BYTES))
             .map_err(|e| e.to_string())
-            .and_then(|mut stream| {
-                stream.write_all(&rows()).map_err(|e| e.to_string())?;
-                finish_stream(stream, &failure)
+            .and_then(|png| ImageData::new(png, size.0, size.1))
+            .and_then(|mut rows| {
+                rgb.chunks(piece).try_for_each(|piece| rows.write(piece))?;
+                rows.finish()
             });
         let bytes = written.lock().unwrap().clone();
         (result, bytes)
     }
 
-    #[test]
-    fn a_streamed_png_holds_its_rows() {
-        let (result, bytes) = stream(usize::MAX);
-        assert_eq!(result, Ok(()));
-        let mut reader = png::Decoder::new(std::io::Cursor::new(bytes))
-            .read_info()
+    /// The same image as the png crate writes it with its adaptive filter and fast compression.
+    fn png_crate_file(size: (u32, u32), rgb: &[u8]) -> Vec<u8> {
+        let written = Arc::new(Mutex::new(Vec::new()));
+        let disk = FillsUp {
+            written: written.clone(),
+            room: usize::MAX,
+        };
+        let mut encoder = png::Encoder::new(disk, size.0, size.1);
+        encoder.set_color(png::ColorType::Rgb);
+        encoder.set_compression(png::Compression::Fast);
+        let mut stream = encoder
+            .write_header()
+            .and_then(|w| w.into_stream_writer_with_size(CHUNK_BYTES))
             .unwrap();
-        let mut decoded = vec![0; reader.output_buffer_size().unwrap()];
-        reader.next_frame(&mut decoded).unwrap();
-        assert!(decoded == rows());
+        stream.write_all(rgb).unwrap();
+        stream.finish().unwrap();
+        written.lock().unwrap().clone()
+    }
+
+    const SIZE: (u32, u32) = (300, 200);
+
+    #[test]
+    fn a_streamed_png_holds_its_rows_however_they_are_cut() {
+        let rgb = rows(SIZE.0, SIZE.1);
+        for piece in [rgb.len(), 900, 7, 1000] {
+            let (result, bytes) = stream(SIZE, &rgb, piece, usize::MAX);
+            assert_eq!(result, Ok(()));
+            let mut reader = png::Decoder::new(std::io::Cursor::new(bytes))
+                .read_info()
+                .unwrap();
+            let mut decoded = vec![0; reader.output_buffer_size().unwrap()];
+            reader.next_frame(&mut decoded).unwrap();
+            assert!(decoded == rgb, "in writes of {piece} bytes");
+        }
     }
 
     #[test]
-    fn a_write_failing_as_the_encoder_finishes_is_reported() {
-        let whole = stream(usize::MAX).1.len();
-        // The image's end (12 bytes), then the last image-data chunk: both are written only
-        // as the encoder is dropped.
-        for room in [whole - 1, whole - 12, whole - 20, 100] {
-            let (result, bytes) = stream(room);
+    fn the_file_is_the_one_the_png_crate_writes() {
+        for size in [SIZE, (1, 1), (11, 3), (640, 480)] {
+            let rgb = rows(size.0, size.1);
+            let (result, ours) = stream(size, &rgb, 4096, usize::MAX);
+            assert_eq!(result, Ok(()));
+            let theirs = png_crate_file(size, &rgb);
+            let chunks = theirs.windows(4).filter(|w| w == b"IDAT").count();
+            assert!(size.0 < 640 || chunks > 1, "several image-data chunks");
+            assert!(
+                ours == theirs,
+                "{size:?}: {} against {} bytes",
+                ours.len(),
+                theirs.len()
+            );
+        }
+    }
+
+    #[test]
+    fn too_many_or_too_few_rows_are_refused() {
+        let rgb = rows(SIZE.0, SIZE.1);
+        let (result, _) = stream(SIZE, &rgb[..rgb.len() - 5], 4096, usize::MAX);
+        let reason = result.expect_err("a row short");
+        assert!(reason.contains("199 of the image's 200 rows"), "{reason}");
+        let mut more = rgb.clone();
+        more.extend_from_slice(&rgb[..900]);
+        let (result, _) = stream(SIZE, &more, 4096, usize::MAX);
+        assert!(
+            result
+                .expect_err("a row more")
+                .contains("more than the image's 200 rows")
+        );
+    }
+
+    #[test]
+    fn a_write_failing_anywhere_is_reported() {
+        let rgb = rows(SIZE.0, SIZE.1);
+        let whole = stream(SIZE, &rgb, 4096, usize::MAX).1.len();
+        assert!(whole > CHUNK_BYTES, "several chunks");
+        // The image's end (12 bytes), the last image-data chunk, a whole chunk, the header.
+        for room in [whole - 1, whole - 12, whole - 20, CHUNK_BYTES, 100] {
+            let (result, bytes) = stream(SIZE, &rgb, 4096, room);
             assert!(bytes.len() < whole);
             let reason = result.expect_err(&format!("room for {room} of {whole} bytes"));
             assert!(reason.contains("no space"), "{reason}");
