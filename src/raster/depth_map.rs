@@ -61,7 +61,7 @@ pub fn render_depth(prepared: &PreparedScene, objects: &[usize], view: &DepthVie
             for tx in 0..bins.tiles_x {
                 let rect = TileBins::tile_rect(viewport, tx, ty as u32);
                 let y0 = rect.y0;
-                for &index in &bins.bins[(ty as u32 * bins.tiles_x + tx) as usize] {
+                for &index in bins.bin(tx, ty as u32) {
                     let t = &triangles[index as usize];
                     triangle_rows(t, &rect, &SampleShift::NONE, |row| {
                         let Some(run) = covered_run(&row.edges, row.x1 - row.x0 + 1) else {

@@ -223,7 +223,7 @@ impl<'a, S: FragmentShader> Pass<'a, S> {
         out: StripOutput,
     ) -> (usize, usize) {
         let ty = rect.y0 / TILE_SIZE;
-        let bin = &self.bins.bins[(ty * self.bins.tiles_x + tx) as usize];
+        let bin = self.bins.bin(tx, ty);
         if bin.is_empty() {
             if !(self.whole_and_replacing && *known_background) {
                 out.fill_background(rect);
