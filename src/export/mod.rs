@@ -8,6 +8,7 @@ pub mod metadata;
 mod output_file;
 mod png_file;
 mod png_filter;
+mod png_image_data;
 mod pov_scene;
 mod ppm_file;
 mod still_file;
