@@ -12,9 +12,11 @@ use super::strips::{Pass, STRIP_ROWS, SetUp, StripBuffers, StripJob};
 use super::tile::TileBuffers;
 use super::top_first::map_top_first;
 use super::window::ImageWindow;
+use crate::huge_pages::zeroed_huge;
 use crate::scene::Camera;
 use crate::scene::{Material, Scene};
 use crate::surface::{Mesh, Surface, Tessellation};
+use bytemuck::Zeroable;
 use glam::{Mat4, Vec4};
 use rayon::prelude::*;
 
@@ -183,31 +185,24 @@ pub(super) fn shifted_screen_triangles(
 }
 
 /// The lists one after another. Screen triangles are large and there are many: a lone list is
-/// moved, and several are copied once, in parallel, into a list of the exact size. The copies
-/// are the first touch of its pages, so their faults are split across the threads too; joined
-/// on one thread, object by object, the copies and faults would keep the other core waiting.
-pub(super) fn join_in_order<T: Copy + Send + Sync>(mut lists: Vec<Vec<T>>) -> Vec<T> {
+/// moved, and several are copied once, in parallel, into a list of the exact size zeroed in
+/// parallel: joined on one thread, object by object, the copies and their fresh pages' faults
+/// (and `calloc`'s serial zeroing) would keep the other core waiting.
+pub(super) fn join_in_order<T: Copy + Zeroable + Send + Sync>(mut lists: Vec<Vec<T>>) -> Vec<T> {
     if lists.len() <= 1 {
         return lists.pop().unwrap_or_default();
     }
-    let total = lists.iter().map(Vec::len).sum();
-    let mut joined: Vec<T> = Vec::with_capacity(total);
-    let mut rest = &mut joined.spare_capacity_mut()[..total];
-    crate::huge_pages::advise_huge_pages(rest);
+    let mut joined: Vec<T> = zeroed_huge(lists.iter().map(Vec::len).sum());
+    let mut rest = &mut joined[..];
     let mut copies = Vec::with_capacity(lists.len());
     for list in &lists {
         let (to, after) = rest.split_at_mut(list.len());
         copies.push((to, list));
         rest = after;
     }
-    copies.into_par_iter().for_each(|(to, list)| {
-        for (to, &value) in to.iter_mut().zip(list) {
-            to.write(value);
-        }
-    });
-    // SAFETY: the lists' lengths sum to `total`, and the copies above wrote each of the first
-    // `total` values, in order.
-    unsafe { joined.set_len(total) };
+    copies
+        .into_par_iter()
+        .for_each(|(to, list)| to.copy_from_slice(list));
     joined
 }
 
