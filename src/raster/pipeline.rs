@@ -12,11 +12,9 @@ use super::strips::{Pass, STRIP_ROWS, SetUp, StripBuffers, StripJob};
 use super::tile::TileBuffers;
 use super::top_first::map_top_first;
 use super::window::ImageWindow;
-use crate::huge_pages::zeroed_huge;
 use crate::scene::Camera;
 use crate::scene::{Material, Scene};
 use crate::surface::{Mesh, Surface, Tessellation};
-use bytemuck::Zeroable;
 use glam::{Mat4, Vec4};
 use rayon::prelude::*;
 
@@ -184,25 +182,17 @@ pub(super) fn shifted_screen_triangles(
     join_in_order(pieces)
 }
 
-/// The lists one after another. Screen triangles are large and there are many: a lone list is
-/// moved, and several are copied once, in parallel, into a list of the exact size zeroed in
-/// parallel: joined on one thread, object by object, the copies and their fresh pages' faults
-/// (and `calloc`'s serial zeroing) would keep the other core waiting.
-pub(super) fn join_in_order<T: Copy + Zeroable + Send + Sync>(mut lists: Vec<Vec<T>>) -> Vec<T> {
+/// The lists one after another: a lone list is moved, several are copied once into a list of
+/// the exact size, on one thread: zeroing it first on every thread, so that its pages' first
+/// touch was shared, cost more than it saved.
+pub(super) fn join_in_order<T: Copy>(mut lists: Vec<Vec<T>>) -> Vec<T> {
     if lists.len() <= 1 {
         return lists.pop().unwrap_or_default();
     }
-    let mut joined: Vec<T> = zeroed_huge(lists.iter().map(Vec::len).sum());
-    let mut rest = &mut joined[..];
-    let mut copies = Vec::with_capacity(lists.len());
+    let mut joined = Vec::with_capacity(lists.iter().map(Vec::len).sum());
     for list in &lists {
-        let (to, after) = rest.split_at_mut(list.len());
-        copies.push((to, list));
-        rest = after;
+        joined.extend_from_slice(list);
     }
-    copies
-        .into_par_iter()
-        .for_each(|(to, list)| to.copy_from_slice(list));
     joined
 }
 
