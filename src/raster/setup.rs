@@ -142,7 +142,9 @@ pub struct ScreenTriangle {
 }
 
 // SAFETY: every field is an integer, a float or a plain struct of them (`PixelRect`, `Edge`,
-// `Vec2`, `AttributePlane`), for which all-zero bytes are a valid value.
+// `Vec2`, `AttributePlane`), for which all-zero bytes are a valid value. Only tests make
+// triangles from zeros.
+#[cfg(test)]
 unsafe impl bytemuck::Zeroable for ScreenTriangle {}
 
 /// The screen-space planes of 1/w and of the (u,v) attributes of one scene triangle, in f64
