@@ -2,7 +2,8 @@
 //! textured 128×64 sphere 540 pixels high at 1920×1080, the chelsea photograph sampled bilinearly
 //! (both through bumpwork's sampler, so the rasterizers and pipelines are what differ) and
 //! per-pixel Blinn-Phong with one point light. euc is single-threaded; bumpwork is measured on one
-//! thread and on all. Medians with min–max spread over the same number of frames, in one run.
+//! thread and on all. The three take turns, round by round; each ratio is the median of the
+//! rounds' ratios, with the least and greatest.
 //!
 //! Run: `cargo bench --bench peer_euc`.
 
@@ -10,7 +11,7 @@ mod bench_support;
 
 use bench_support::render_into;
 use bench_support::{bilinear, textured_sphere_scene};
-use bumpwork::measure::Timing;
+use bumpwork::measure::{Timing, ratio_by_round};
 use bumpwork::raster::{Framebuffer, PreparedScene, RenderTarget, Viewport, linear_to_srgb8};
 use bumpwork::scene::Light;
 use bumpwork::shade::LitShader;
@@ -99,7 +100,7 @@ fn main() {
     };
     let target = RenderTarget::new(&camera, viewport);
     let shader = LitShader::new(&prepared.scene, &camera);
-    let mut framebuffer = Framebuffer::new(0, 0, Vec3::ZERO);
+    let framebuffer = Framebuffer::new(0, 0, Vec3::ZERO);
 
     let mesh = &prepared.objects[0].mesh;
     let indices: Vec<u32> = mesh.indices.iter().flatten().copied().collect();
@@ -115,7 +116,7 @@ fn main() {
     };
     let mut color = Buffer2d::new([WIDTH, HEIGHT], 0u32);
     let mut depth = Buffer2d::new([WIDTH, HEIGHT], 1.0f32);
-    let euc = Timing::measure(2, runs(), || {
+    let mut euc_frame = || {
         euc::Target::clear(&mut color, 0);
         euc::Target::clear(&mut depth, 1.0);
         euc_sphere.draw::<Triangles<'_, Buffer2d<f32>, BackfaceCullingDisabled>, _>(
@@ -123,34 +124,50 @@ fn main() {
             &mut color,
             Some(&mut depth),
         );
-    });
+    };
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let pool = |threads: usize| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .expect("thread pool")
+    };
+    let (one_thread, all_threads) = (pool(1), pool(cores));
+    let fragments = std::cell::Cell::new(0);
+    let ours_on = |pool: &rayon::ThreadPool, framebuffer: &mut Framebuffer| {
+        let stats = pool.install(|| render_into(&prepared, &target, &shader, framebuffer));
+        fragments.set(stats.fragments);
+    };
+    // A framebuffer each: one thread and two render in tiles of different sizes.
+    let (mut framebuffer_one, mut framebuffer_all) = (framebuffer.clone(), framebuffer);
+    let (mut ours_one, mut ours_all) = (
+        || ours_on(&one_thread, &mut framebuffer_one),
+        || ours_on(&all_threads, &mut framebuffer_all),
+    );
+    // Round by round, so the machine's drift slows all three alike. Each measured frame follows
+    // unmeasured ones of its own: a frame of a few milliseconds right after euc's runs slowly
+    // (caches, the idle second core), and four settle it where one does not.
+    let times = Timing::interleaved(
+        2,
+        runs(),
+        &mut [(1, &mut euc_frame), (4, &mut ours_one), (4, &mut ours_all)],
+    );
     let euc_pixels = color.as_ref().iter().filter(|&&c| c != 0).count();
-
     println!(
-        "textured lit 128x64 sphere at {WIDTH}x{HEIGHT}, bilinear, {} frames each",
+        "textured lit 128x64 sphere at {WIDTH}x{HEIGHT}, bilinear, {} rounds",
         runs()
     );
     println!(
         "  euc 0.5 (1 thread):      {}  ({euc_pixels} pixels drawn)",
-        euc.summary_ms()
+        Timing::from_samples(times[0].clone()).summary_ms()
     );
-    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
-    for threads in [1, cores] {
-        let pool = rayon::ThreadPoolBuilder::new()
-            .num_threads(threads)
-            .build()
-            .expect("thread pool");
-        let mut fragments = 0;
-        let ours = pool.install(|| {
-            Timing::measure(2, runs(), || {
-                fragments = render_into(&prepared, &target, &shader, &mut framebuffer).fragments;
-            })
-        });
-        let ratio = euc.median.as_secs_f64() / ours.median.as_secs_f64();
+    for (threads, ours) in [(1, &times[1]), (cores, &times[2])] {
+        let (ratio, least, most) = ratio_by_round(&times[0], ours);
         println!(
-            "  bumpwork ({threads} thread{}):  {}  ({fragments} pixels shaded) — {ratio:.2}x euc's speed",
+            "  bumpwork ({threads} thread{}):  {}  ({} pixels shaded) — {ratio:.2}x euc's speed (rounds {least:.2}–{most:.2}x)",
             if threads == 1 { "" } else { "s" },
-            ours.summary_ms()
+            Timing::from_samples(ours.clone()).summary_ms(),
+            fragments.get()
         );
     }
 }
