@@ -318,9 +318,7 @@ impl TileBuffers {
                             // extend's loop out of line, and it reloaded the maker from the
                             // stack (wider loads than the stores that had just put it there,
                             // which stall) at every run.
-                            for x in x0..x0 + run.len() as u32 {
-                                self.fragments.push(make.at(x));
-                            }
+                            make.push_run(x0..x0 + run.len() as u32, &mut self.fragments);
                         }
                         self.visible_runs.push(pixels);
                     }
@@ -398,25 +396,45 @@ impl FragmentMaker {
         }
     }
 
+    /// The fragments of pixels `xs` of the row, pushed in order: one loop for each setting of
+    /// the maker's two flags, so that the per-pixel loop tests neither.
+    #[inline(always)]
+    fn push_run(&self, xs: Range<u32>, fragments: &mut Vec<Fragment>) {
+        match (self.perspective, self.derivatives) {
+            (true, true) => self.push_each::<true, true>(xs, fragments),
+            (true, false) => self.push_each::<true, false>(xs, fragments),
+            (false, true) => self.push_each::<false, true>(xs, fragments),
+            (false, false) => self.push_each::<false, false>(xs, fragments),
+        }
+    }
+
+    #[inline(always)]
+    fn push_each<const PERSPECTIVE: bool, const DERIVATIVES: bool>(
+        &self,
+        xs: Range<u32>,
+        fragments: &mut Vec<Fragment>,
+    ) {
+        fragments.reserve(xs.len());
+        for x in xs {
+            fragments.push(self.at::<PERSPECTIVE, DERIVATIVES>(x));
+        }
+    }
+
     /// The fragment at pixel (x, y): (u,v) and, if the shader reads them, its screen
     /// derivatives from the interpolated planes (for u = U/Q with U = u/w and Q = 1/w:
-    /// ∂u/∂x = (U_x − u·Q_x)/Q).
+    /// ∂u/∂x = (U_x − u·Q_x)/Q). `PERSPECTIVE` and `DERIVATIVES` are the maker's flags.
     #[inline(always)]
-    fn at(&self, x: u32) -> Fragment {
+    fn at<const PERSPECTIVE: bool, const DERIVATIVES: bool>(&self, x: u32) -> Fragment {
         let t = &self.t;
         let offset = pixel_offset(t.origin, x, self.y);
         let q = t.inv_w.at(offset);
         let w = 1.0 / q;
         let plane_uv = Vec2::new(t.u_over_w.at(offset), t.v_over_w.at(offset));
-        let uv = if self.perspective {
-            plane_uv * w
-        } else {
-            plane_uv
-        };
-        let (duv_dx, duv_dy) = if self.derivatives {
+        let uv = if PERSPECTIVE { plane_uv * w } else { plane_uv };
+        let (duv_dx, duv_dy) = if DERIVATIVES {
             let plane_dx = Vec2::new(t.u_over_w.dx, t.v_over_w.dx);
             let plane_dy = Vec2::new(t.u_over_w.dy, t.v_over_w.dy);
-            let (dx, dy) = if self.perspective {
+            let (dx, dy) = if PERSPECTIVE {
                 (
                     (plane_dx - uv * t.inv_w.dx) * w,
                     (plane_dy - uv * t.inv_w.dy) * w,
