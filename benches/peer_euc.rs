@@ -138,7 +138,7 @@ fn main() {
         let stats = pool.install(|| render_into(&prepared, &target, &shader, framebuffer));
         fragments.set(stats.fragments);
     };
-    // A framebuffer each: one thread and two render in tiles of different sizes.
+    // A framebuffer each, for the two turns to borrow apart.
     let (mut framebuffer_one, mut framebuffer_all) = (framebuffer.clone(), framebuffer);
     let (mut ours_one, mut ours_all) = (
         || ours_on(&one_thread, &mut framebuffer_one),

@@ -314,10 +314,6 @@ impl TileBuffers {
                         for (index, run) in same_triangle(run_slots) {
                             let make = FragmentMaker::new(&triangles[index as usize], frame, y);
                             let x0 = first + run.start as u32;
-                            // A loop here, not `extend` with a closure: the compiler left
-                            // extend's loop out of line, and it reloaded the maker from the
-                            // stack (wider loads than the stores that had just put it there,
-                            // which stall) at every run.
                             make.push_run(x0..x0 + run.len() as u32, &mut self.fragments);
                         }
                         self.visible_runs.push(pixels);
@@ -415,6 +411,9 @@ impl FragmentMaker {
         fragments: &mut Vec<Fragment>,
     ) {
         fragments.reserve(xs.len());
+        // A loop, not `extend` with a closure: the compiler left extend's loop out of line, and
+        // it reloaded the maker from the stack (wider loads than the stores that had just put
+        // it there, which stall) at every run.
         for x in xs {
             fragments.push(self.at::<PERSPECTIVE, DERIVATIVES>(x));
         }
