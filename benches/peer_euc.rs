@@ -100,7 +100,6 @@ fn main() {
     };
     let target = RenderTarget::new(&camera, viewport);
     let shader = LitShader::new(&prepared.scene, &camera);
-    let framebuffer = Framebuffer::new(0, 0, Vec3::ZERO);
 
     let mesh = &prepared.objects[0].mesh;
     let indices: Vec<u32> = mesh.indices.iter().flatten().copied().collect();
@@ -139,7 +138,8 @@ fn main() {
         fragments.set(stats.fragments);
     };
     // A framebuffer each, for the two turns to borrow apart.
-    let (mut framebuffer_one, mut framebuffer_all) = (framebuffer.clone(), framebuffer);
+    let empty = || Framebuffer::new(0, 0, Vec3::ZERO);
+    let (mut framebuffer_one, mut framebuffer_all) = (empty(), empty());
     let (mut ours_one, mut ours_all) = (
         || ours_on(&one_thread, &mut framebuffer_one),
         || ours_on(&all_threads, &mut framebuffer_all),
