@@ -7,10 +7,9 @@
 //! bumpwork's shadows is its frame with them against the frame without. Antialiased at equal
 //! error, each renderer's adaptive frame is measured against its own full supersampling: ours
 //! at 16 samples, and at 9, the 3 × 3 POV-Ray takes in a pixel it refines (`+R3`, its default).
-//! The renderers of a
-//! comparison take turns, round by round (this
-//! virtual machine's speed drifts by tens of per cent within minutes), and each ratio is the
-//! median of the rounds' ratios, with the least and greatest; times are medians with min–max.
+//! The renderers of a comparison take turns, round by round (this virtual machine's speed
+//! drifts by tens of per cent within minutes), and each ratio is the median of the rounds'
+//! ratios, with the least and greatest; times are medians with min–max.
 //! Skipped (and said so) when `povray` is not installed.
 //!
 //! Run: `cargo bench --bench peer_povray`.

@@ -2,10 +2,10 @@
 //! png crate's settings (filter and deflate, each one-filter choice with fdeflate too) on the
 //! still's rows, bumpwork's own writer (the png crate's adaptive choice and fast compression,
 //! its filters worked out in one pass, written as a still is, to a file in memory where the
-//! system has /dev/shm), and the deflate backends alone on the same rows Up-filtered: fdeflate (what
-//! `Compression::Fast` uses), miniz_oxide and zlib-rs (flate2's two Rust backends; this bench
-//! builds flate2 with zlib-rs, so the png crate's levels run on zlib-rs here and on
-//! miniz_oxide in the program). One thread, medians of BUMPWORK_BENCH_RUNS (7) runs, and the
+//! system has /dev/shm), and the deflate backends alone on the same rows Up-filtered:
+//! fdeflate (what `Compression::Fast` uses), miniz_oxide and zlib-rs (flate2's two Rust
+//! backends; this bench builds flate2 with zlib-rs, so the png crate's levels run on zlib-rs
+//! here and on miniz_oxide in the program). One thread, medians of BUMPWORK_BENCH_RUNS (7) runs, and the
 //! bytes each writes.
 //!
 //! Run: `cargo bench --bench png_deflate`.
