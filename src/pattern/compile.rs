@@ -1,11 +1,13 @@
 //! Compiler: checked tree to a flat slot program. Constants are folded, repeated sub-expressions
-//! shared, unused `let`s never lowered and dead instructions dropped.
+//! shared, unused `let`s never lowered and dead instructions dropped, and each instruction's form
+//! for gradients is chosen (`activity`).
 //!
 //! Every slot is written once, and an instruction's operands always live in lower slots than its
 //! result; the evaluator relies on that to borrow them disjointly.
 
 use std::collections::HashMap;
 
+use super::activity::{DualForm, choose_dual_forms};
 use super::ast::{BinaryOp, ExprId, ExprKind, UnaryOp};
 use super::check::{Binding, Checked, Input};
 use super::error::PatternError;
@@ -21,6 +23,8 @@ pub struct Instr {
     pub dst: usize,
     /// Operand slots; ops with fewer operands repeat the first.
     pub args: [usize; 4],
+    /// How it runs when partials are carried (`activity`).
+    pub form: DualForm,
 }
 
 /// Where a slot's value comes from before the instructions run.
@@ -101,7 +105,8 @@ pub fn compile(checked: &Checked, source: &str, origin: &str) -> Result<Program,
             Value::Color(c) => outputs.extend(c.map(|n| lowering.slot(n))),
         }
     }
-    let program = hoist_uniform(prune(lowering.sources, lowering.instrs, outputs));
+    let mut program = hoist_uniform(prune(lowering.sources, lowering.instrs, outputs));
+    choose_dual_forms(&mut program);
     if program.sources.len() > MAX_SLOTS {
         let message = format!(
             "pattern too large: {} values after simplification (the limit is {MAX_SLOTS})",
@@ -199,7 +204,12 @@ impl Lowering<'_> {
             return Operand::Slot(slot);
         }
         let dst = self.new_slot(Source::Computed);
-        self.instrs.push(Instr { op, dst, args });
+        self.instrs.push(Instr {
+            op,
+            dst,
+            args,
+            form: DualForm::Full,
+        });
         self.shared.insert((op, args), dst);
         Operand::Slot(dst)
     }
@@ -401,6 +411,7 @@ fn prune(sources: Vec<Source>, instrs: Vec<Instr>, outputs: Vec<usize>) -> Progr
             op: i.op,
             dst: renumber[i.dst],
             args: i.args.map(|a| renumber[a]),
+            form: i.form,
         })
         .collect();
     Program {

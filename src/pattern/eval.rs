@@ -5,10 +5,11 @@
 //! Lanes are `f32` or `f64` (`Real`, which says when each serves). Inputs and outputs are `f32`
 //! for the renderer either way.
 
+use super::activity::DualForm;
 use super::check::Input;
 use super::compile::{Instr, Program, Source};
 use super::dual::{Dual, Scalar};
-use super::ops::{Op, apply};
+use super::ops::{Op, apply, arithmetic};
 use super::real::{LaneStorage, Precision, Real};
 use num_traits::Zero;
 
@@ -84,6 +85,11 @@ pub(crate) trait Lane: Scalar {
     /// Sets the first `values.len()` lanes of `slot` to the inputs `values` with `partials`
     /// (as long, when per fragment).
     fn load(slot: &mut [Self::Real], values: &[f32], partials: Seed);
+    /// Runs `instr` over the lanes: `out` is its result's slot, `operands` its operands'.
+    fn run(instr: &Instr, out: &mut [Self::Real], operands: [&[Self::Real]; 4]);
+    /// What `run` relies on before the per-fragment `instrs` run over `slots`: for duals, zero
+    /// partials in the slots of the instructions that compute a value alone.
+    fn prepare(instrs: &[Instr], slots: &mut [Self::Real]);
 }
 
 impl<R: Real> Lane for R {
@@ -103,6 +109,13 @@ impl<R: Real> Lane for R {
     fn load(slot: &mut [R], values: &[f32], _: Seed) {
         copy_lanes(slot, values);
     }
+
+    #[inline(always)]
+    fn run(instr: &Instr, out: &mut [R], operands: [&[R]; 4]) {
+        dispatch::<R>(instr.op, out, operands);
+    }
+
+    fn prepare(_: &[Instr], _: &mut [R]) {}
 }
 
 impl<R: Real> Lane for Dual<R> {
@@ -135,6 +148,26 @@ impl<R: Real> Lane for Dual<R> {
                 copy_lanes(du, &u[..n]);
                 copy_lanes(dv, &v[..n]);
             }
+        }
+    }
+
+    #[inline(always)]
+    fn run(instr: &Instr, out: &mut [R], operands: [&[R]; 4]) {
+        let [a, b, ..] = operands;
+        match instr.form {
+            DualForm::Full => dispatch::<Dual<R>>(instr.op, out, operands),
+            DualForm::ValueOnly => {
+                dispatch::<R>(instr.op, &mut out[..CHUNK], operands.map(|o| &o[..CHUNK]))
+            }
+            DualForm::FirstVaries => arithmetic_lanes::<R, true>(instr.op, out, a, b),
+            DualForm::SecondVaries => arithmetic_lanes::<R, false>(instr.op, out, a, b),
+            DualForm::Square => square_lanes(out, a),
+        }
+    }
+
+    fn prepare(instrs: &[Instr], slots: &mut [R]) {
+        for instr in instrs.iter().filter(|i| i.form == DualForm::ValueOnly) {
+            slot_mut::<Self>(slots, instr.dst)[CHUNK..].fill(R::zero());
         }
     }
 }
@@ -253,6 +286,7 @@ pub(crate) fn run_chunks<T: Lane>(
     mut store: impl FnMut(usize, &[T::Real]) -> usize,
 ) -> usize {
     let per_fragment = &program.instrs[program.uniform..];
+    T::prepare(per_fragment, slots);
     crate::simd::widest_rounding(
         #[inline(always)]
         || {
@@ -287,7 +321,7 @@ fn run_instrs_here<T: Lane>(instrs: &[Instr], slots: &mut [T::Real]) {
         let (below, rest) = slots.split_at_mut(instr.dst * T::SLOT);
         let out = &mut rest[..T::SLOT];
         let operands = instr.args.map(|s| slot::<T>(below, s));
-        dispatch::<T>(instr.op, out, operands);
+        T::run(instr, out, operands);
     }
 }
 
@@ -335,6 +369,55 @@ fn lanes<T: Lane>(
     }
 }
 
+/// An arithmetic op in dual lanes whose first (`FIRST`) or else second operand alone varies:
+/// the value, and the varying operand's partials times the op's partial in it. The other
+/// operand's partials are not read.
+#[inline(always)]
+fn arithmetic_lanes<R: Real, const FIRST: bool>(op: Op, out: &mut [R], a: &[R], b: &[R]) {
+    macro_rules! each_op {
+        ($($name:ident),*) => {
+            match op {
+                $(Op::$name => one_varies::<R, FIRST>(out, a, b, |x, y| arithmetic(Op::$name, x, y)),)*
+                _ => unreachable!("{op:?} has no form with one varying operand"),
+            }
+        };
+    }
+    each_op!(Add, Sub, Mul, Div, Mod);
+}
+
+/// `arithmetic_lanes`' loop: `rule(x, y)` is the op's value and its partials in x and in y.
+#[inline(always)]
+fn one_varies<R: Real, const FIRST: bool>(
+    out: &mut [R],
+    a: &[R],
+    b: &[R],
+    rule: impl Fn(R, R) -> (R, R, R),
+) {
+    let slot = Dual::<R>::SLOT;
+    let (out, a, b) = (&mut out[..slot], &a[..slot], &b[..slot]);
+    let varying = if FIRST { a } else { b };
+    for i in 0..CHUNK {
+        let (value, pa, pb) = rule(a[i], b[i]);
+        let partial = if FIRST { pa } else { pb };
+        out[i] = value;
+        out[CHUNK + i] = partial * varying[CHUNK + i];
+        out[2 * CHUNK + i] = partial * varying[2 * CHUNK + i];
+    }
+}
+
+/// `a * a` in dual lanes: the full rule's two partial terms, each the same product.
+#[inline(always)]
+fn square_lanes<R: Real>(out: &mut [R], a: &[R]) {
+    let slot = Dual::<R>::SLOT;
+    let (out, a) = (&mut out[..slot], &a[..slot]);
+    for i in 0..CHUNK {
+        let (value, pa, pb) = arithmetic(Op::Mul, a[i], a[i]);
+        out[i] = value;
+        out[CHUNK + i] = pa * a[CHUNK + i] + pb * a[CHUNK + i];
+        out[2 * CHUNK + i] = pa * a[2 * CHUNK + i] + pb * a[2 * CHUNK + i];
+    }
+}
+
 /// `lanes` for an op of four operands.
 #[inline(always)]
 fn lanes4<T: Lane>(out: &mut [T::Real], operands: [&[T::Real]; 4], f: impl Fn(T, T, T, T) -> T) {
@@ -364,11 +447,13 @@ mod tests {
                     op: Op::Mul,
                     dst: 2,
                     args: [0, 1, 0, 0],
+                    form: DualForm::Full,
                 },
                 Instr {
                     op: Op::Sin,
                     dst: 3,
                     args: [2, 2, 2, 2],
+                    form: DualForm::Full,
                 },
             ],
             uniform: 0,
@@ -473,6 +558,94 @@ mod tests {
             both_builds::<Dual<f64>>(program, &inputs);
             both_builds::<f32>(program, &inputs);
             both_builds::<Dual<f32>>(program, &inputs);
+        }
+    }
+
+    /// Every shipped pattern, and a program with every specialised form, evaluated with
+    /// gradients over spread-out inputs: each slot's value has the bits the full chain rule
+    /// gives it, and each varying slot's partials equal the full rule's wherever those are
+    /// finite (see `activity`).
+    #[test]
+    fn specialised_gradients_are_the_full_rules() {
+        fn compare<R: Real>(program: &Program, inputs: &Inputs) {
+            let run = |program: &Program| {
+                let mut scratch = Scratch::new();
+                let slots = scratch.slots::<Dual<R>>(program.sources.len());
+                load_uniforms::<Dual<R>>(program, |p| 3.0 + p as f64, inputs.t, slots);
+                run_uniform::<Dual<R>>(program, slots);
+                load_inputs::<Dual<R>>(program, inputs, 0, CHUNK, slots);
+                let per_fragment = &program.instrs[program.uniform..];
+                Dual::<R>::prepare(per_fragment, slots);
+                run_instrs::<Dual<R>>(per_fragment, slots);
+                slots.to_vec()
+            };
+            let mut full = program.clone();
+            full.instrs.iter_mut().for_each(|i| i.form = DualForm::Full);
+            let (specialised, reference) = (run(program), run(&full));
+            for instr in &program.instrs[program.uniform..] {
+                let lanes = |slots: &[R]| slot::<Dual<R>>(slots, instr.dst).to_vec();
+                let (got, want) = (lanes(&specialised), lanes(&reference));
+                for i in 0..CHUNK {
+                    let (x, y) = (got[i].wide(), want[i].wide());
+                    let same = x.to_bits() == y.to_bits() || (x.is_nan() && y.is_nan());
+                    assert!(same, "{instr:?} lane {i}: value {x:e} against {y:e}");
+                }
+                if instr.form == DualForm::ValueOnly {
+                    continue;
+                }
+                for i in CHUNK..3 * CHUNK {
+                    let (x, y) = (got[i].wide(), want[i].wide());
+                    assert!(
+                        x == y || !y.is_finite(),
+                        "{instr:?} partial {i}: {x:e} against {y:e}"
+                    );
+                }
+            }
+        }
+        let mut state = 7u64;
+        let mut next = move || {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (state >> 40) as f32 / (1u64 << 24) as f32
+        };
+        let forms = "param p = 30 in 1..100\n\
+            let a = u % p - p / 2\nlet b = p / 3 - 2 * v\nlet c = a * a + (4 / b) % 7\n\
+            let k = floor(v) * t + step(u, 3)\nlet e = (5 + v) * (u + 1) - v * 0.5\n\
+            height = if c > 10 and a != 0 then c / p - sqrt(abs(c)) * k else min(a, e) + p % u";
+        let sources = super::super::shipped::BUILTINS
+            .iter()
+            .copied()
+            .chain([("forms", forms)]);
+        for (name, source) in sources {
+            let pattern = super::super::Pattern::compile(source, name).expect("a valid pattern");
+            let program = &pattern.inner.program;
+            for scale in [1.0, 37.0, 4096.0] {
+                let mut lanes = |offset: f32| {
+                    (0..CHUNK)
+                        .map(|_| (next() - offset) * scale)
+                        .collect::<Vec<f32>>()
+                };
+                let (u, v, x, y, z) = (lanes(0.5), lanes(0.3), lanes(0.5), lanes(0.0), lanes(0.9));
+                let partials: Vec<Vec<f32>> = (0..6).map(|_| lanes(0.5)).collect();
+                let inputs = Inputs {
+                    u: &u,
+                    v: &v,
+                    x: &x,
+                    y: &y,
+                    z: &z,
+                    x_u: &partials[0],
+                    x_v: &partials[1],
+                    y_u: &partials[2],
+                    y_v: &partials[3],
+                    z_u: &partials[4],
+                    z_v: &partials[5],
+                    t: 1.25,
+                    precision: Precision::Fastest,
+                };
+                compare::<f32>(program, &inputs);
+                compare::<f64>(program, &inputs);
+            }
         }
     }
 }

@@ -15,6 +15,7 @@
 //! Fragments whose result is not finite (division by zero, `sqrt(-1)`, …) are made flat: height
 //! and gradient 0, colour black. Every `eval_*` returns how many there were.
 
+mod activity;
 mod ast;
 mod cells;
 mod check;

@@ -141,12 +141,9 @@ fn apply_binary<T: Scalar>(op: Op, a: T, b: T, c: T, d: T) -> T {
     let (zero, one) = (T::Real::zero(), T::Real::one());
     match op {
         // Arithmetic partials are non-finite only where the value is too, so no 0·∞ guard.
-        Op::Add => T::arith2(x + y, a, b, one, one),
-        Op::Sub => T::arith2(x - y, a, b, one, -one),
-        Op::Mul => T::arith2(x * y, a, b, y, x),
-        Op::Div => {
-            let q = x / y;
-            T::arith2(q, a, b, one / y, -q / y)
+        Op::Add | Op::Sub | Op::Mul | Op::Div | Op::Mod => {
+            let (f, pa, pb) = arithmetic(op, x, y);
+            T::arith2(f, a, b, pa, pb)
         }
         Op::Pow => {
             let r = x.powf(y);
@@ -157,12 +154,6 @@ fn apply_binary<T: Scalar>(op: Op, a: T, b: T, c: T, d: T) -> T {
                     if x > zero { r * x.ln() } else { zero },
                 )
             })
-        }
-        // q is finite wherever the value is (y = 0 or x/y out of range gives NaN), so the
-        // arithmetic form applies.
-        Op::Mod => {
-            let q = (x / y).floor();
-            T::arith2(x - y * q, a, b, one, -q)
         }
         Op::Min => pick(x <= y, a, b),
         Op::Max => pick(x >= y, a, b),
@@ -200,6 +191,29 @@ fn apply_binary<T: Scalar>(op: Op, a: T, b: T, c: T, d: T) -> T {
         Op::Perlin2 => graded2(perlin2(x.wide(), y.wide()), a, b),
         Op::Cells2 => graded2(cells2(x.wide(), y.wide()), a, b),
         _ => apply_ternary(op, a, b, c, d),
+    }
+}
+
+/// An arithmetic op's value at (x, y) and its partials in x and in y: the one definition the
+/// full chain rule and the gradient's specialised forms (`activity`) share.
+#[inline(always)]
+pub(crate) fn arithmetic<R: Real>(op: Op, x: R, y: R) -> (R, R, R) {
+    let one = R::one();
+    match op {
+        Op::Add => (x + y, one, one),
+        Op::Sub => (x - y, one, -one),
+        Op::Mul => (x * y, y, x),
+        Op::Div => {
+            let q = x / y;
+            (q, one / y, -q / y)
+        }
+        // q is finite wherever the value is (y = 0 or x/y out of range gives NaN), so the
+        // arithmetic form applies.
+        Op::Mod => {
+            let q = (x / y).floor();
+            (x - y * q, one, -q)
+        }
+        _ => unreachable!("{op:?} is not arithmetic"),
     }
 }
 
