@@ -105,27 +105,44 @@ pub fn blinn_phong(
 /// light at a time, which the compiler turns into SIMD: the normalisations and the highlight's
 /// power run four fragments at once (eight where the CPU has AVX2). `surface(range)` gives
 /// those of fragments `range` (a lane's worth at a time), read straight into the lanes: callers
-/// need not store points and normals first. `reach` holds, light by light, the fraction of each
-/// light reaching each fragment (a row of `colors.len()` per light: shadows); empty, every light
-/// reaches every fragment whole.
+/// need not store points and normals first. `reach` says how much of each light reaches each
+/// fragment.
 pub fn blinn_phong_many<Pairs: Iterator<Item = (Vec3, Vec3)>>(
     lights: &FrameLights,
     material: &Material,
     colors: &[Vec3],
     surface: impl Fn(Range<usize>) -> Pairs,
-    reach: &[f32],
+    reach: Reach,
     out: &mut [Vec3],
 ) {
-    crate::simd::widest(
-        #[inline(always)]
-        || blinn_phong_lanes(lights, material, colors, surface, reach, out),
-    );
+    match reach {
+        Reach::Rows(rows) => crate::simd::widest(
+            #[inline(always)]
+            || blinn_phong_lanes::<_, false>(lights, material, colors, surface, rows, out),
+        ),
+        Reach::Terminator => crate::simd::widest(
+            #[inline(always)]
+            || blinn_phong_lanes::<_, true>(lights, material, colors, surface, &[], out),
+        ),
+    }
+}
+
+/// How much of each light reaches each fragment of a batch.
+#[derive(Clone, Copy, Debug)]
+pub enum Reach<'a> {
+    /// Light by light, a row of `colors.len()` fractions (shadows and terminators); empty,
+    /// every light reaches every fragment whole.
+    Rows(&'a [f32]),
+    /// Every light whole, but none past the terminator: where a fragment's normal is its
+    /// surface's geometric one (no bump) and nothing casts shadows, tested in the lighting loop
+    /// as `stop_at_terminator` tests it, so the same bits as its rows.
+    Terminator,
 }
 
 /// The batch loops, inlined into `blinn_phong_many`'s call so they are compiled for the widest
-/// SIMD the CPU has.
+/// SIMD the CPU has; with `TERMINATOR`, `Reach::Terminator`'s (and `reach` is empty).
 #[inline(always)]
-fn blinn_phong_lanes<Pairs: Iterator<Item = (Vec3, Vec3)>>(
+fn blinn_phong_lanes<Pairs: Iterator<Item = (Vec3, Vec3)>, const TERMINATOR: bool>(
     lights: &FrameLights,
     material: &Material,
     colors: &[Vec3],
@@ -149,7 +166,7 @@ fn blinn_phong_lanes<Pairs: Iterator<Item = (Vec3, Vec3)>>(
             // of them touched its dangling address and took a microcode assist, so a still
             // without shadows took longer than one with them.
             let mut reaching = [1.0f32; LANES];
-            if !reach.is_empty() {
+            if !TERMINATOR && !reach.is_empty() {
                 let row = index * fragments + first;
                 reaching[..colors.len()].copy_from_slice(&reach[row..row + colors.len()]);
             }
@@ -157,14 +174,21 @@ fn blinn_phong_lanes<Pairs: Iterator<Item = (Vec3, Vec3)>>(
             let color = match *light {
                 RelativeLight::Point { position, color } => {
                     for k in 0..LANES {
-                        let to_light = crate::surface::normalize_or(position - p.at(k), n.at(k));
+                        let way = position - p.at(k);
+                        let to_light = crate::surface::normalize_or(way, n.at(k));
                         (lambert[k], highlight[k]) = light_terms(n.at(k), to_light, to_eye.at(k));
+                        if TERMINATOR {
+                            reaching[k] = facing_light(n.at(k), way);
+                        }
                     }
                     color
                 }
                 RelativeLight::Directional { towards, color } => {
                     for k in 0..LANES {
                         (lambert[k], highlight[k]) = light_terms(n.at(k), towards, to_eye.at(k));
+                        if TERMINATOR {
+                            reaching[k] = facing_light(n.at(k), towards);
+                        }
                     }
                     color
                 }
@@ -185,6 +209,12 @@ fn blinn_phong_lanes<Pairs: Iterator<Item = (Vec3, Vec3)>>(
             *out = color * diffuse.at(k) + specular.at(k) * material.specular;
         }
     }
+}
+
+/// 1 where normal `n` faces the light that lies `way` off, else 0 (also for a NaN normal).
+#[inline(always)]
+fn facing_light(n: Vec3, way: Vec3) -> f32 {
+    if n.dot(way) > 0.0 { 1.0 } else { 0.0 }
 }
 
 /// n·l and the Blinn highlight's base max(n·h, 0).
@@ -347,7 +377,14 @@ mod tests {
                 .zip(normals[range].iter().copied())
         };
         let mut batch = vec![Vec3::NAN; n];
-        blinn_phong_many(&lights, &material(), &colors, surface, &reach, &mut batch);
+        blinn_phong_many(
+            &lights,
+            &material(),
+            &colors,
+            surface,
+            Reach::Rows(&reach),
+            &mut batch,
+        );
         for k in 0..n {
             let reaching: Vec<Light> = (0..all.len())
                 .filter(|&j| reaches(j, k))
@@ -361,6 +398,83 @@ mod tests {
                 "fragment {k}"
             );
         }
+    }
+
+    /// The terminator tested in the lighting loop lights every fragment as rows of 1 where the
+    /// normal faces the light and 0 where it does not: the same bits, a NaN normal included.
+    #[test]
+    fn the_terminator_in_the_loop_is_its_rows() {
+        let all = three_lights();
+        let lights = FrameLights::new(Vec3::splat(0.05), &all, DVec3::ZERO);
+        let (mut points, mut normals, mut colors) = fragments();
+        normals[17] = Vec3::NAN;
+        // Where the terminator decides: grazing normals that face the first light by the unit
+        // way to it (so it lights them) but not by the way itself (its rows stop it).
+        let RelativeLight::Point { position, .. } = lights.lights[0] else {
+            unreachable!("the first light is a point light")
+        };
+        let grazing = (0..200_000).filter_map(|k| {
+            let t = k as f32 * 0.618;
+            let p = Vec3::new(t.sin(), t.cos(), (t * 0.37).sin()) * 3.0;
+            let way = position - p;
+            let normal = way.cross(Vec3::new(t.cos(), 1.0, t)).normalize();
+            let to_light = crate::surface::normalize_or(way, normal);
+            (normal.dot(way) <= 0.0 && normal.dot(to_light) > 0.0).then_some((p, normal))
+        });
+        for (p, normal) in grazing.take(12) {
+            points.push(p);
+            normals.push(normal);
+            colors.push(Vec3::ONE);
+        }
+        assert!(points.len() > 150, "no grazing fragment found");
+        let n = colors.len();
+        let rows: Vec<f32> = lights
+            .lights
+            .iter()
+            .flat_map(|light| (0..n).map(|k| facing_light(normals[k], light.way_from(points[k]))))
+            .collect();
+        assert!(rows.contains(&0.0) && rows.contains(&1.0), "both sides lit");
+        let surface = |range: Range<usize>| {
+            points[range.clone()]
+                .iter()
+                .copied()
+                .zip(normals[range].iter().copied())
+        };
+        let mut from_rows = vec![Vec3::NAN; n];
+        blinn_phong_many(
+            &lights,
+            &material(),
+            &colors,
+            surface,
+            Reach::Rows(&rows),
+            &mut from_rows,
+        );
+        let mut in_loop = vec![Vec3::NAN; n];
+        blinn_phong_many(
+            &lights,
+            &material(),
+            &colors,
+            surface,
+            Reach::Terminator,
+            &mut in_loop,
+        );
+        let bits = |c: Vec3| c.to_array().map(f32::to_bits);
+        for k in 0..n {
+            assert_eq!(bits(in_loop[k]), bits(from_rows[k]), "fragment {k}");
+        }
+        let mut unstopped = vec![Vec3::NAN; n];
+        blinn_phong_many(
+            &lights,
+            &material(),
+            &colors,
+            surface,
+            Reach::Rows(&[]),
+            &mut unstopped,
+        );
+        let stopped = (150..n)
+            .filter(|&k| bits(unstopped[k]) != bits(in_loop[k]))
+            .count();
+        assert!(stopped > 0, "the grazing fragments test the terminator");
     }
 
     #[test]
@@ -381,9 +495,16 @@ mod tests {
                     .copied()
                     .zip(normals[range].iter().copied())
             };
-            blinn_phong_many(&lights, &material, &colors, surface, &[], &mut batch);
+            blinn_phong_many(
+                &lights,
+                &material,
+                &colors,
+                surface,
+                Reach::Rows(&[]),
+                &mut batch,
+            );
             let mut portable = vec![Vec3::NAN; n];
-            blinn_phong_lanes(&lights, &material, &colors, surface, &[], &mut portable);
+            blinn_phong_lanes::<_, false>(&lights, &material, &colors, surface, &[], &mut portable);
             for k in 0..n {
                 let one = blinn_phong(&lights, &material, colors[k], points[k], normals[k]);
                 for (lit, build) in [(batch[k], "dispatched"), (portable[k], "portable")] {

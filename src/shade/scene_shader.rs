@@ -8,7 +8,7 @@ use super::bump::{
 use super::exact_coverage::Neighbours;
 use super::exact_point::{ExactScratch, SurfacePointSource, exact_fragments, true_hit_derivatives};
 use super::gradient::{GradientMethod, central_difference, shifted_fragments};
-use super::lighting::{FrameLights, RelativeLight, blinn_phong_many, facing_sign};
+use super::lighting::{FrameLights, Reach, RelativeLight, blinn_phong_many, facing_sign};
 use super::pattern_batch::{PatternBatch, Sites};
 use super::shader_mode::ShaderMode;
 use super::shadowing::Shadowing;
@@ -317,10 +317,14 @@ impl LitShader {
             Some(frame) if self.frame_is_constant(surface) => Some(frame.n),
             _ => None,
         };
-        if self.mode == ShaderMode::Shaded {
+        let unbumped = material.bump.is_none();
+        // Where the only thing that stops light is the terminator, and the lit normal is the
+        // geometric one, the lighting loop tests it: no pass of its own.
+        let terminator_in_lighting = unbumped && self.terminators && !self.any_light_casts();
+        if self.mode == ShaderMode::Shaded && !terminator_in_lighting {
             self.light_reach(object_index, constant_normal, scratch);
         }
-        if self.mode == ShaderMode::Shaded && material.bump.is_none() {
+        if self.mode == ShaderMode::Shaded && unbumped {
             // The frames' own normals, read straight into the lighting's lanes.
             let (frames, points) = (&scratch.frames, &scratch.points);
             let surface = |range: Range<usize>| {
@@ -329,7 +333,11 @@ impl LitShader {
                     .zip(frames.n.range(range))
                     .map(|(&p, n)| (p, n * facing_sign(p, n)))
             };
-            self.lighting(material, group, &scratch.colors, &scratch.reach)
+            let reach = match terminator_in_lighting {
+                true => Reach::Terminator,
+                false => Reach::Rows(&scratch.reach),
+            };
+            self.lighting(material, group, &scratch.colors, reach)
                 .light(surface, &mut scratch.lit, out);
             return flattened;
         }
@@ -340,7 +348,8 @@ impl LitShader {
                 let points = points[range.clone()].iter().copied();
                 points.zip(normals[range].iter().copied())
             };
-            self.lighting(material, group, &scratch.colors, &scratch.reach)
+            let reach = Reach::Rows(&scratch.reach);
+            self.lighting(material, group, &scratch.colors, reach)
                 .light(surface, &mut scratch.lit, out);
         } else {
             for (k, &i) in group.iter().enumerate() {
@@ -353,12 +362,19 @@ impl LitShader {
         flattened
     }
 
+    /// Whether any light casts shadows in this frame.
+    fn any_light_casts(&self) -> bool {
+        let lights = 0..self.lights.lights.len();
+        let shadows = self.shadows.as_ref();
+        shadows.is_some_and(|shadows| lights.into_iter().any(|light| shadows.casts(light)))
+    }
+
     fn lighting<'a>(
         &'a self,
         material: &'a Material,
         group: &'a [u32],
         colors: &'a [Vec3],
-        reach: &'a [f32],
+        reach: Reach<'a>,
     ) -> GroupLighting<'a> {
         GroupLighting {
             lights: &self.lights,
@@ -824,7 +840,7 @@ struct GroupLighting<'a> {
     material: &'a Material,
     group: &'a [u32],
     colors: &'a [Vec3],
-    reach: &'a [f32],
+    reach: Reach<'a>,
 }
 
 impl GroupLighting<'_> {
