@@ -533,24 +533,15 @@ mod tests {
             }
         }
         let lanes = |f: fn(f32) -> f32| (0..CHUNK).map(|i| f(i as f32)).collect::<Vec<f32>>();
-        let (u, v) = (lanes(|i| i * 7.3 - 200.0), lanes(|i| 90.0 - i * 3.1));
-        let (x, y, z) = (lanes(|i| i.sin() * 40.0), lanes(|i| i * 0.5), lanes(|i| -i));
-        let partials = lanes(|i| 0.25 + i * 0.01);
-        let inputs = Inputs {
-            u: &u,
-            v: &v,
-            x: &x,
-            y: &y,
-            z: &z,
-            x_u: &partials,
-            x_v: &partials,
-            y_u: &partials,
-            y_v: &partials,
-            z_u: &partials,
-            z_v: &partials,
-            t: 2.5,
-            precision: Precision::Fastest,
-        };
+        let chunk = ChunkInputs::new(|input| match input {
+            0 => lanes(|i| i * 7.3 - 200.0),
+            1 => lanes(|i| 90.0 - i * 3.1),
+            2 => lanes(|i| i.sin() * 40.0),
+            3 => lanes(|i| i * 0.5),
+            4 => lanes(|i| -i),
+            _ => lanes(|i| 0.25 + i * 0.01),
+        });
+        let inputs = chunk.inputs(2.5);
         for (name, source) in super::super::shipped::BUILTINS {
             let pattern = super::super::Pattern::compile(source, name).expect("a shipped pattern");
             let program = &pattern.inner.program;
@@ -621,30 +612,50 @@ mod tests {
             let pattern = super::super::Pattern::compile(source, name).expect("a valid pattern");
             let program = &pattern.inner.program;
             for scale in [1.0, 37.0, 4096.0] {
-                let mut lanes = |offset: f32| {
-                    (0..CHUNK)
-                        .map(|_| (next() - offset) * scale)
-                        .collect::<Vec<f32>>()
-                };
-                let (u, v, x, y, z) = (lanes(0.5), lanes(0.3), lanes(0.5), lanes(0.0), lanes(0.9));
-                let partials: Vec<Vec<f32>> = (0..6).map(|_| lanes(0.5)).collect();
-                let inputs = Inputs {
-                    u: &u,
-                    v: &v,
-                    x: &x,
-                    y: &y,
-                    z: &z,
-                    x_u: &partials[0],
-                    x_v: &partials[1],
-                    y_u: &partials[2],
-                    y_v: &partials[3],
-                    z_u: &partials[4],
-                    z_v: &partials[5],
-                    t: 1.25,
-                    precision: Precision::Fastest,
-                };
+                // u, v, the point and its partials spread around different centres.
+                let offsets = [0.5, 0.3, 0.5, 0.0, 0.9, 0.5];
+                let chunk = ChunkInputs::new(|input| {
+                    let offset = offsets[input.min(5)];
+                    (0..CHUNK).map(|_| (next() - offset) * scale).collect()
+                });
+                let inputs = chunk.inputs(1.25);
                 compare::<f32>(program, &inputs);
                 compare::<f64>(program, &inputs);
+            }
+        }
+    }
+
+    /// A chunk's per-fragment inputs for tests: u, v, x, y, z and the point's six partials.
+    struct ChunkInputs {
+        lanes: Vec<Vec<f32>>,
+    }
+
+    impl ChunkInputs {
+        /// Input `i` (in the order above) is `lanes(i)`, `CHUNK` long.
+        fn new(lanes: impl FnMut(usize) -> Vec<f32>) -> ChunkInputs {
+            ChunkInputs {
+                lanes: (0..11).map(lanes).collect(),
+            }
+        }
+
+        fn inputs(&self, t: f64) -> Inputs<'_> {
+            let [u, v, x, y, z, x_u, x_v, y_u, y_v, z_u, z_v] = &self.lanes[..] else {
+                unreachable!("eleven inputs")
+            };
+            Inputs {
+                u,
+                v,
+                x,
+                y,
+                z,
+                x_u,
+                x_v,
+                y_u,
+                y_v,
+                z_u,
+                z_v,
+                t,
+                precision: Precision::Fastest,
             }
         }
     }

@@ -211,10 +211,17 @@ fn blinn_phong_lanes<Pairs: Iterator<Item = (Vec3, Vec3)>, const TERMINATOR: boo
     }
 }
 
-/// 1 where normal `n` faces the light that lies `way` off, else 0 (also for a NaN normal).
+/// Whether normal `n` faces the light that lies `way` off (`RelativeLight::way_from`): the
+/// terminator's test. False for a NaN normal.
+#[inline(always)]
+pub fn faces_light(n: Vec3, way: Vec3) -> bool {
+    n.dot(way) > 0.0
+}
+
+/// 1 where `faces_light`, else 0.
 #[inline(always)]
 fn facing_light(n: Vec3, way: Vec3) -> f32 {
-    if n.dot(way) > 0.0 { 1.0 } else { 0.0 }
+    if faces_light(n, way) { 1.0 } else { 0.0 }
 }
 
 /// n·l and the Blinn highlight's base max(n·h, 0).
@@ -370,21 +377,7 @@ mod tests {
         let reach: Vec<f32> = (0..all.len())
             .flat_map(|j| (0..n).map(move |k| if reaches(j, k) { 1.0 } else { 0.0 }))
             .collect();
-        let surface = |range: Range<usize>| {
-            points[range.clone()]
-                .iter()
-                .copied()
-                .zip(normals[range].iter().copied())
-        };
-        let mut batch = vec![Vec3::NAN; n];
-        blinn_phong_many(
-            &lights,
-            &material(),
-            &colors,
-            surface,
-            Reach::Rows(&reach),
-            &mut batch,
-        );
+        let batch = lit(&lights, (&points, &normals, &colors), Reach::Rows(&reach));
         for k in 0..n {
             let reaching: Vec<Light> = (0..all.len())
                 .filter(|&j| reaches(j, k))
@@ -399,6 +392,19 @@ mod tests {
             );
         }
     }
+
+    /// `blinn_phong_many` of the fragments' points, normals and colours, in a new batch.
+    fn lit(lights: &FrameLights, (points, normals, colors): Fragments, reach: Reach) -> Vec<Vec3> {
+        let surface = |range: Range<usize>| {
+            let points = points[range.clone()].iter().copied();
+            points.zip(normals[range].iter().copied())
+        };
+        let mut batch = vec![Vec3::NAN; colors.len()];
+        blinn_phong_many(lights, &material(), colors, surface, reach, &mut batch);
+        batch
+    }
+
+    type Fragments<'a> = (&'a [Vec3], &'a [Vec3], &'a [Vec3]);
 
     /// The terminator tested in the lighting loop lights every fragment as rows of 1 where the
     /// normal faces the light and 0 where it does not: the same bits, a NaN normal included.
@@ -434,43 +440,14 @@ mod tests {
             .flat_map(|light| (0..n).map(|k| facing_light(normals[k], light.way_from(points[k]))))
             .collect();
         assert!(rows.contains(&0.0) && rows.contains(&1.0), "both sides lit");
-        let surface = |range: Range<usize>| {
-            points[range.clone()]
-                .iter()
-                .copied()
-                .zip(normals[range].iter().copied())
-        };
-        let mut from_rows = vec![Vec3::NAN; n];
-        blinn_phong_many(
-            &lights,
-            &material(),
-            &colors,
-            surface,
-            Reach::Rows(&rows),
-            &mut from_rows,
-        );
-        let mut in_loop = vec![Vec3::NAN; n];
-        blinn_phong_many(
-            &lights,
-            &material(),
-            &colors,
-            surface,
-            Reach::Terminator,
-            &mut in_loop,
-        );
+        let batch: Fragments = (&points, &normals, &colors);
+        let from_rows = lit(&lights, batch, Reach::Rows(&rows));
+        let in_loop = lit(&lights, batch, Reach::Terminator);
         let bits = |c: Vec3| c.to_array().map(f32::to_bits);
         for k in 0..n {
             assert_eq!(bits(in_loop[k]), bits(from_rows[k]), "fragment {k}");
         }
-        let mut unstopped = vec![Vec3::NAN; n];
-        blinn_phong_many(
-            &lights,
-            &material(),
-            &colors,
-            surface,
-            Reach::Rows(&[]),
-            &mut unstopped,
-        );
+        let unstopped = lit(&lights, batch, Reach::Rows(&[]));
         let stopped = (150..n)
             .filter(|&k| bits(unstopped[k]) != bits(in_loop[k]))
             .count();

@@ -8,7 +8,9 @@ use super::bump::{
 use super::exact_coverage::Neighbours;
 use super::exact_point::{ExactScratch, SurfacePointSource, exact_fragments, true_hit_derivatives};
 use super::gradient::{GradientMethod, central_difference, shifted_fragments};
-use super::lighting::{FrameLights, Reach, RelativeLight, blinn_phong_many, facing_sign};
+use super::lighting::{
+    FrameLights, Reach, RelativeLight, blinn_phong_many, faces_light, facing_sign,
+};
 use super::pattern_batch::{PatternBatch, Sites};
 use super::shader_mode::ShaderMode;
 use super::shadowing::Shadowing;
@@ -85,8 +87,7 @@ fn stop_at_terminator(light: &RelativeLight, points: &[Vec3], normals: &[Vec3], 
     #[inline(always)]
     fn stop(points: &[Vec3], normals: &[Vec3], reach: &mut [f32], way: impl Fn(Vec3) -> Vec3) {
         for ((reach, &p), &n) in reach.iter_mut().zip(points).zip(normals) {
-            let faces_light = n.dot(way(p)) > 0.0;
-            *reach = if faces_light { *reach } else { 0.0 };
+            *reach = if faces_light(n, way(p)) { *reach } else { 0.0 };
         }
     }
     crate::simd::widest(
