@@ -5,8 +5,8 @@
 //! system has /dev/shm), and the deflate backends alone on the same rows Up-filtered:
 //! fdeflate (what `Compression::Fast` uses), miniz_oxide and zlib-rs (flate2's two Rust
 //! backends; this bench builds flate2 with zlib-rs, so the png crate's levels run on zlib-rs
-//! here and on miniz_oxide in the program). One thread, medians of BUMPWORK_BENCH_RUNS (7) runs, and the
-//! bytes each writes.
+//! here and on miniz_oxide in the program). One thread, medians of BUMPWORK_BENCH_RUNS (7)
+//! runs, and the bytes each writes.
 //!
 //! Run: `cargo bench --bench png_deflate`.
 

@@ -36,7 +36,7 @@ pub fn choose_dual_forms(program: &mut Program) {
     let mut varies: Vec<bool> = program.sources.iter().map(source_varies).collect();
     let uniform = program.uniform;
     for (index, instr) in program.instrs.iter_mut().enumerate() {
-        varies[instr.dst] = !has_no_partials(instr.op) && instr.args.iter().any(|&a| varies[a]);
+        varies[instr.dst] = !instr.op.has_no_partials() && instr.args.iter().any(|&a| varies[a]);
         if index >= uniform {
             instr.form = form(instr, &varies);
         }
@@ -47,26 +47,6 @@ pub fn choose_dual_forms(program: &mut Program) {
 /// parameters and constants do not.
 fn source_varies(source: &Source) -> bool {
     matches!(source, Source::Input(input) if *input != Input::T)
-}
-
-/// Ops whose result's partials are zero whatever their operands (`T::constant` in `ops`).
-fn has_no_partials(op: Op) -> bool {
-    matches!(
-        op,
-        Op::Not
-            | Op::Sign
-            | Op::Floor
-            | Op::Ceil
-            | Op::Step
-            | Op::Lt
-            | Op::Le
-            | Op::Gt
-            | Op::Ge
-            | Op::Eq
-            | Op::Ne
-            | Op::And
-            | Op::Or
-    )
 }
 
 fn form(instr: &Instr, varies: &[bool]) -> DualForm {

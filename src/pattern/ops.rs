@@ -81,6 +81,27 @@ impl Op {
             Op::Perlin2 | Op::Perlin3 | Op::Cells2 | Op::Cells3 | Op::Fbm2 | Op::Fbm3
         )
     }
+
+    /// Whether the op's result has zero partials whatever its operands (`T::constant` in
+    /// `apply`): a gradient needs its value alone (`activity`).
+    pub fn has_no_partials(self) -> bool {
+        matches!(
+            self,
+            Op::Not
+                | Op::Sign
+                | Op::Floor
+                | Op::Ceil
+                | Op::Step
+                | Op::Lt
+                | Op::Le
+                | Op::Gt
+                | Op::Ge
+                | Op::Eq
+                | Op::Ne
+                | Op::And
+                | Op::Or
+        )
+    }
 }
 
 fn truth<R: Real>(b: bool) -> R {

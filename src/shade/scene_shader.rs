@@ -365,9 +365,9 @@ impl LitShader {
 
     /// Whether any light casts shadows in this frame.
     fn any_light_casts(&self) -> bool {
-        let lights = 0..self.lights.lights.len();
+        let lights = self.lights.lights.len();
         let shadows = self.shadows.as_ref();
-        shadows.is_some_and(|shadows| lights.into_iter().any(|light| shadows.casts(light)))
+        shadows.is_some_and(|shadows| (0..lights).any(|light| shadows.casts(light)))
     }
 
     fn lighting<'a>(
@@ -966,6 +966,23 @@ pub fn render_lit(prepared: &PreparedScene, target: &RenderTarget) -> (Framebuff
 
 #[cfg(test)]
 mod tests {
+    use super::*;
+    use crate::raster::{PreparedScene, RenderTarget, Viewport, frame_objects, render_pass};
+
+    /// A frame rendered into a new framebuffer.
+    fn render_with(
+        prepared: &PreparedScene,
+        target: &RenderTarget,
+        shader: &impl FragmentShader,
+    ) -> (Framebuffer, FrameStats) {
+        let mut framebuffer = Framebuffer::new(0, 0, Vec3::ZERO);
+        let stats = render_pass(prepared, target, shader, &mut framebuffer);
+        (framebuffer, stats)
+    }
+    use crate::scene::{ImageTexture, preset};
+    use crate::surface::Tessellation;
+    use crate::texture::{Filter, Sampler, TexelGrid, Texture};
+
     /// Over the material: opaque texels as they are, transparent ones the material, and every
     /// texel the same bits as the three-lane formula.
     #[test]
@@ -994,23 +1011,6 @@ mod tests {
         let opaque = Vec4::new(0.7, 0.1, 0.3, 1.0);
         assert_eq!(over_material(opaque, base), opaque.truncate());
     }
-
-    use super::*;
-    use crate::raster::{PreparedScene, RenderTarget, Viewport, frame_objects, render_pass};
-
-    /// A frame rendered into a new framebuffer.
-    fn render_with(
-        prepared: &PreparedScene,
-        target: &RenderTarget,
-        shader: &impl FragmentShader,
-    ) -> (Framebuffer, FrameStats) {
-        let mut framebuffer = Framebuffer::new(0, 0, Vec3::ZERO);
-        let stats = render_pass(prepared, target, shader, &mut framebuffer);
-        (framebuffer, stats)
-    }
-    use crate::scene::{ImageTexture, preset};
-    use crate::surface::Tessellation;
-    use crate::texture::{Filter, Sampler, TexelGrid, Texture};
 
     /// `LitShader` with every fragment's derivatives computed (the trait's default).
     struct AllDerivatives<'a>(&'a LitShader);
