@@ -62,6 +62,13 @@ impl Override {
             }
             _ => None,
         };
+        if let [
+            slot @ ("bump" | "texture"),
+            what @ ("pattern" | "image" | "normal-map"),
+        ] = parts.as_slice()
+        {
+            return Err(source_is_not_a_setting(slot, what, &shown));
+        }
         let target = match parts.as_slice() {
             ["quality", knob] if object.is_none() => Some(Target::Quality(knob.to_string())),
             ["shadows"] if object.is_none() => Some(Target::Shadows),
@@ -99,6 +106,17 @@ impl Override {
     pub fn is_binding(&self) -> bool {
         matches!(self.target, Target::Binding { .. })
     }
+}
+
+/// Why `--set bump.pattern=…` (or `image`, `normal-map`) is not taken, and what does it.
+fn source_is_not_a_setting(slot: &str, what: &str, shown: &str) -> String {
+    let value = shown.split_once('=').map_or("NAME", |(_, v)| v.trim());
+    format!(
+        "'{shown}': --set changes numbers; a {slot}'s {what} is chosen in a scene file \
+         ({slot} = {{ {what} = \"{value}\" }}), by showing the file itself (bumpwork view \
+         FILE.pat or PHOTO.png), or with {} in the workbench",
+        if slot == "bump" { "p" } else { "t" }
+    )
 }
 
 fn binding(object: Option<usize>, slot: &str, name: Name) -> Option<Target> {

@@ -13,10 +13,6 @@ pub struct CheckArgs {
     files: Vec<PathBuf>,
 }
 
-const IMAGE_EXTENSIONS: &[&str] = &[
-    "png", "jpg", "jpeg", "ppm", "pgm", "pbm", "pnm", "bmp", "tga",
-];
-
 pub fn run(args: CheckArgs) -> Result<(), Error> {
     let mut bad = 0;
     for path in &args.files {
@@ -75,13 +71,15 @@ fn check(path: &Path) -> Result<String, String> {
                 .map(|data| bumpwork::model::describe(&data))
                 .map_err(|e| e.to_string())
         }
-        Some(ext) if IMAGE_EXTENSIONS.contains(&ext) => bumpwork::texture::check_image(path)
-            .map(|info| info.to_string())
-            .map_err(|e| e.to_string()),
+        Some(ext) if bumpwork::texture::IMAGE_EXTENSIONS.contains(&ext) => {
+            bumpwork::texture::check_image(path)
+                .map(|info| info.to_string())
+                .map_err(|e| e.to_string())
+        }
         _ => Err(format!(
             "{}: not a pattern (.pat), scene (.toml), model (.obj, .gltf, .glb) or image ({}) file",
             sanitize(&path.display().to_string()),
-            IMAGE_EXTENSIONS.join(", ")
+            bumpwork::texture::IMAGE_EXTENSIONS.join(", ")
         )),
     }
 }

@@ -159,6 +159,9 @@ fn render_start(
         return Ok(());
     }
     let prepared = settings.prepare(scene, &camera)?;
+    if args.time_range.is_some() {
+        warn_if_still(&prepared.scene, frames.len());
+    }
     if let Some(animation) = format.animation() {
         let destination = (output, animation);
         return render_animation(
@@ -264,6 +267,17 @@ fn render_animation(
         );
     }
     Ok(())
+}
+
+/// Says, before any frame is written, when every frame of a sequence will be the same picture.
+fn warn_if_still(scene: &bumpwork::scene::Scene, frames: usize) {
+    if frames > 1 && !scene.moves_with_time() {
+        eprintln!(
+            "bumpwork: warning: all {frames} frames are the same picture: nothing in the scene \
+             moves with time (no pattern moves with t at its parameter values, e.g. a speed of 0, \
+             and no image scrolls)"
+        );
+    }
 }
 
 /// How many of the files `frames` are to be written to exist already; with `no_clobber`, an

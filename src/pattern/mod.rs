@@ -34,6 +34,7 @@ mod parser;
 mod perlin;
 mod real;
 mod shipped;
+mod time_dependence;
 
 use crate::bounded_read::ReadFailure;
 use std::path::Path;
@@ -124,6 +125,15 @@ impl Pattern {
     /// Whether the result depends on `t` (so the view must animate).
     pub fn uses_time(&self) -> bool {
         self.inner.program.uses(Input::T)
+    }
+
+    /// Whether the result can change with `t` at these parameter values (`params` as for
+    /// `eval_bump`): a wave whose speed is 0 stands still.
+    pub fn moves_with_time(&self, params: &[f32]) -> bool {
+        self.uses_time()
+            && time_dependence::moves_with_time(&self.inner.program, |p| {
+                self.param_value(p, params)
+            })
     }
 
     /// Whether `Inputs::u` and `Inputs::v` must be supplied.

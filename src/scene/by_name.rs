@@ -1,5 +1,5 @@
-//! Where a scene comes from: a built-in name, a scene file, a pattern file shown on the
-//! sphere-on-plane scene, or a model file (with a pattern file, `model.obj+my.pat`) on its stage;
+//! Where a scene comes from: a built-in name, a scene file, a pattern file or an image shown on
+//! the sphere-on-plane scene, or a model file (with a pattern file, `model.obj+my.pat`) on its stage;
 //! and the scene's text, as a file would hold it.
 
 use super::{BumpSource, MAX_SCENE_FILE_BYTES, PatternBinding, Scene, Texturing};
@@ -19,6 +19,9 @@ pub fn load_source(name: &str) -> Result<Scene, Error> {
             .to_scene(name, Path::new("."))
             .map_err(|message| Error::Diagnostic(crate::diagnostic::sanitize(&message).into()));
     }
+    if crate::texture::is_image_name(name) && !name.ends_with(".toml") {
+        return image_on_stage(name);
+    }
     if !name.ends_with(".pat") {
         return super::resolve(name);
     }
@@ -27,6 +30,34 @@ pub fn load_source(name: &str) -> Result<Scene, Error> {
     let file_name = Path::new(name).file_name().map(|n| n.to_string_lossy());
     scene.name = file_name.map_or_else(|| name.to_string(), |n| n.into_owned());
     put_pattern_on(&mut scene, name, &pattern);
+    Ok(scene)
+}
+
+/// How much an image's grey (0..1) raises the stage's surfaces: as the shipped image scenes.
+const IMAGE_BUMP_STRENGTH: f32 = 30.0;
+
+/// The image file `name` on the stage scene, as every object's texture and bump.
+fn image_on_stage(name: &str) -> Result<Scene, Error> {
+    let mut scene = super::resolve(PATTERN_STAGE)?;
+    let file_name = Path::new(name).file_name().map(|n| n.to_string_lossy());
+    scene.name = file_name.map_or_else(|| name.to_string(), |n| n.into_owned());
+    let texture = super::BindingFile {
+        image: Some(name.to_string()),
+        ..super::BindingFile::default()
+    };
+    let bump = super::BindingFile {
+        strength: Some(super::Finite(IMAGE_BUMP_STRENGTH)),
+        ..texture.clone()
+    };
+    let mut cache = crate::texture::ImageCache::new(crate::memory_budget::budget_bytes());
+    let base = Path::new(".");
+    for object in &mut scene.objects {
+        let place = |e: String| Error::Diagnostic(crate::diagnostic::sanitize(&e).into());
+        let loaded = texture.load_texture(&object.surface, base, &mut cache);
+        object.material.texture = Some(loaded.map_err(place)?);
+        let loaded = bump.load_bump(&object.surface, base, &mut cache);
+        object.material.bump = Some(loaded.map_err(place)?);
+    }
     Ok(scene)
 }
 
@@ -54,7 +85,7 @@ pub fn source_text(name: &str) -> Result<String, Error> {
     if let Some(model) = super::ModelSource::parse(name) {
         return Ok(model.scene_file()?.to_toml());
     }
-    let preset = if name.ends_with(".pat") {
+    let preset = if name.ends_with(".pat") || crate::texture::is_image_name(name) {
         PATTERN_STAGE
     } else {
         name

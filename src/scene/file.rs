@@ -257,7 +257,7 @@ fn found(value: &impl std::fmt::Debug) -> String {
 
 /// The f64 that prints like the f32 (0.02, not 0.019999999552965164): files written from scenes
 /// stay readable, and read back to the same f32.
-fn shortest(x: f32) -> f64 {
+pub fn shortest(x: f32) -> f64 {
     x.to_string().parse().unwrap_or(x as f64)
 }
 
@@ -555,6 +555,7 @@ impl SurfaceFile {
                 let data = crate::model::load_named_model(file, base, placement)
                     .map_err(|e| e.to_string())?;
                 Surface::Model(ModelSurface {
+                    file: file.as_str().into(),
                     origin: position.0,
                     data: std::sync::Arc::new(data),
                 })

@@ -20,6 +20,25 @@ pub struct Material {
     pub bump: Option<Bump>,
 }
 
+impl Material {
+    /// Whether the look can change with time: a pattern that moves with `t` at its parameter
+    /// values, or an image that scrolls.
+    pub fn moves_with_time(&self) -> bool {
+        let texture = match &self.texture {
+            Some(Texturing::Pattern(b)) => b.moves_with_time(),
+            Some(Texturing::Image(image)) => image.mapping.moves_with_time(),
+            None => false,
+        };
+        let bump = match self.bump.as_ref().map(|b| &b.source) {
+            Some(BumpSource::Pattern(b)) => b.moves_with_time(),
+            Some(BumpSource::Image(image)) => image.mapping.moves_with_time(),
+            Some(BumpSource::NormalMap(map)) => map.mapping.moves_with_time(),
+            None => false,
+        };
+        texture || bump
+    }
+}
+
 impl Default for Material {
     fn default() -> Self {
         Material {
@@ -74,6 +93,12 @@ pub struct PatternBinding {
     /// One value per `pattern.params()`, in order.
     pub params: Vec<f32>,
     pub placement: Placement,
+}
+
+impl PatternBinding {
+    pub fn moves_with_time(&self) -> bool {
+        self.pattern.moves_with_time(&self.params)
+    }
 }
 
 impl PartialEq for PatternBinding {

@@ -17,7 +17,7 @@ pub use by_name::{load_source, put_pattern_on, source_text};
 pub use file::{
     CameraFile, Direction, FieldOfView, Finite, LightFile, MAX_SCENE_FILE_BYTES, MAX_TIME_SECONDS,
     Point, Positive, SceneFile, SceneTime, camera_looking, load_scene_file, parse_scene,
-    parse_scene_in,
+    parse_scene_in, shortest,
 };
 pub use material::{
     Bump, BumpSource, ImageHeight, ImageTexture, Material, NormalMapBump, PatternBinding,
@@ -55,6 +55,11 @@ pub struct Object {
 }
 
 impl Scene {
+    /// Whether any object's look changes with time, so frames at different times differ.
+    pub fn moves_with_time(&self) -> bool {
+        self.objects.iter().any(|o| o.material.moves_with_time())
+    }
+
     /// The memory its decoded images take, each shared image counted once.
     pub fn image_bytes(&self) -> u64 {
         let mut seen = std::collections::HashSet::new();
@@ -105,6 +110,7 @@ pub fn unknown_scene(name: &str) -> Option<crate::Error> {
     let could_be_a_file = std::path::Path::new(name).exists()
         || name.ends_with(".toml")
         || name.ends_with(".pat")
+        || crate::texture::is_image_name(name)
         || ModelSource::parse(name).is_some();
     (preset(name).is_none() && !could_be_a_file).then(|| crate::Error::UnknownScene {
         name: name.to_string(),

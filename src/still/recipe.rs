@@ -425,7 +425,7 @@ fn pattern_state(binding: &PatternBinding, base: &Path) -> BindingFile {
             .params()
             .iter()
             .zip(&binding.params)
-            .map(|(param, &value)| (param.name.clone(), value as f64))
+            .map(|(param, &value)| (param.name.clone(), crate::scene::shortest(value)))
             .collect(),
         scale: Some([Positive(p.scale.x), Positive(p.scale.y)]),
         rotate: Some(Finite(p.rotate_degrees)),

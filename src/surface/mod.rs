@@ -68,6 +68,26 @@ pub enum Surface {
     Model(ModelSurface),
 }
 
+impl Surface {
+    /// What a person calls it: its kind, or a model's file name.
+    pub fn kind_name(&self) -> String {
+        let kind = match self {
+            Surface::Plane(_) => "plane",
+            Surface::Sphere(_) => "sphere",
+            Surface::Paraboloid(_) => "paraboloid",
+            Surface::Cone(_) => "cone",
+            Surface::Wave(_) => "wave surface",
+            Surface::Triangle(_) => "triangle",
+            Surface::Model(model) => {
+                let path = std::path::Path::new(&*model.file);
+                let name = path.file_name().map(|n| n.to_string_lossy());
+                return name.map_or_else(|| "model".into(), |n| n.into_owned());
+            }
+        };
+        kind.into()
+    }
+}
+
 /// The rectangle of (u,v) a surface is defined on. The triangle's domain is the triangle inside it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Domain {

@@ -45,6 +45,8 @@ pub struct ModelData {
 /// A model placed in a scene.
 #[derive(Clone)]
 pub struct ModelSurface {
+    /// The file it was read from, as the scene names it.
+    pub file: Arc<str>,
     /// The anchor: corners are relative to it.
     pub origin: DVec3,
     pub data: Arc<ModelData>,
@@ -286,6 +288,7 @@ mod tests {
             max: Vec2::ONE,
         };
         ModelSurface {
+            file: "test.obj".into(),
             origin: DVec3::ZERO,
             data: Arc::new(ModelData::new(corners, domain, 0)),
         }

@@ -344,6 +344,19 @@ fn convert<S: Copy>(
         .collect()
 }
 
+/// The file name endings of the images bumpwork reads.
+pub const IMAGE_EXTENSIONS: &[&str] = &[
+    "png", "jpg", "jpeg", "ppm", "pgm", "pbm", "pnm", "bmp", "tga",
+];
+
+/// Whether `name` ends as an image file bumpwork reads does (any case).
+pub fn is_image_name(name: &str) -> bool {
+    let extension = std::path::Path::new(name)
+        .extension()
+        .and_then(|e| e.to_str());
+    extension.is_some_and(|e| IMAGE_EXTENSIONS.contains(&e.to_ascii_lowercase().as_str()))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

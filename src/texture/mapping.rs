@@ -95,6 +95,18 @@ impl Mapping {
     }
 }
 
+impl Mapping {
+    /// Whether it shifts with time: a scroll at a velocity other than zero.
+    pub fn moves_with_time(&self) -> bool {
+        match self {
+            Mapping::Scroll(scroll) => {
+                scroll.velocity != Vec2::ZERO || scroll.inner.moves_with_time()
+            }
+            _ => false,
+        }
+    }
+}
+
 impl TextureMapping for Mapping {
     fn map(&self, at: &SurfacePoint) -> Mapped {
         match self {

@@ -38,7 +38,10 @@ pub use encoding::{Encoding, linear_to_srgb, srgb_to_linear};
 pub use error::{PrintableName, Reason, TextureError};
 pub use height::{HeightMap, HeightSample};
 pub use image_cache::ImageCache;
-pub use load::{ImageInfo, Limits, LoadedImage, check_image, decode_image, load_image};
+pub use load::{
+    IMAGE_EXTENSIONS, ImageInfo, Limits, LoadedImage, check_image, decode_image, is_image_name,
+    load_image,
+};
 pub use mapping::{
     Cylindrical, Mapped, Mapping, Planar, PlanarLayout, Scroll, Spherical, SurfacePoint, SurfaceUv,
     TextureMapping, TriangleMap,

@@ -3,10 +3,19 @@
 /// One user request; the key map and the mouse both produce these, and the app applies them.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Action {
+    /// Quits, unless an export is under way: then says once what quitting cancels.
     Quit,
+    /// Quits whatever is under way (Ctrl-C).
+    QuitNow,
     ToggleHelp,
-    /// Closes the help if open, else quits.
+    /// Esc with no overlay open: says how to quit.
     Back,
+    /// The scene picker: a scene by name.
+    OpenPicker,
+    /// The scene at this place in the list shown, with its own state.
+    GoToScene(usize),
+    /// The message log: every message of the run.
+    ToggleLog,
     NextScene,
     PreviousScene,
     /// Degrees of yaw and pitch.
@@ -41,7 +50,8 @@ pub enum Action {
     InvertBump,
     /// Select the next (+1) or previous (−1) pattern parameter (the bump's, then the texture's).
     SelectParam(i32),
-    /// Steps of one fiftieth of the selected parameter's range.
+    /// Steps of the selected parameter: a fiftieth of its range, or a factor of 1.05 for a
+    /// parameter whose range spans a factor of 20 or more from above 0 (a period, a size).
     AdjustParam(f32),
     /// Opens or closes the parameter panel.
     TogglePanel,
@@ -49,6 +59,8 @@ pub enum Action {
     SelectParamAt(usize),
     /// Select the parameter in this row of the panel and move it by steps (the wheel over it).
     AdjustParamAt(usize, f32),
+    /// Sets the parameter in this row of the panel to a value typed (checked by the panel).
+    SetParam(usize, f32),
     TogglePause,
     StepClock,
     Export,

@@ -3,13 +3,21 @@
 
 use super::action::Action;
 use super::clock::Clock;
+use super::diagnostic_box::DiagnosticBox;
 use super::export::ExportJob;
+use super::help::Help;
 use super::image_shelf::ImageShelf;
+use super::kept_scene::KeptScene;
+use super::keymap::action_for;
 use super::light::move_lights;
 use super::material_controls as controls;
+use super::message_log::{Log, LogView};
 use super::options::WorkbenchOptions;
 use super::orbit::Orbit;
+use super::overlay::{Overlay, OverlayKind, Reply};
+use super::param_panel::ParamPanel;
 use super::quality::QualityPreset;
+use super::scene_picker::ScenePicker;
 use super::view_mode::ViewMode;
 use crate::Error;
 use crate::overrides::{Override, apply_to_quality, apply_where_known};
@@ -23,6 +31,7 @@ use crate::term::graphics::Protocol;
 use crate::term::{ColorMode, GlyphSet};
 use crate::watch::open_watched;
 use crate::watch::{ReloadOutcome, Reloader};
+use crossterm::event::KeyEvent;
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
@@ -53,16 +62,17 @@ pub struct App {
     /// `--set` settings, applied at every load.
     settings: Vec<Override>,
     pub clock: Clock,
-    pub help: bool,
-    /// Whether the parameter panel is open.
-    pub panel: bool,
-    /// The whole message of the last failed reload (line, caret), shown over the picture until
-    /// the file loads again or Esc dismisses it.
-    pub diagnostic: Option<String>,
-    /// Lines of the help scrolled past, when it is taller than the screen.
-    pub help_scroll: u16,
+    /// The boxes over the picture, the topmost last; it takes keys first.
+    overlays: Vec<Box<dyn Overlay>>,
     pub quit: bool,
-    pub message: Message,
+    message: Message,
+    /// Every message of the run.
+    log: Log,
+    started: Instant,
+    /// Whether `q` has said what quitting would cancel.
+    quit_warned: bool,
+    /// The scenes shown before, as they were left, by their place in `scenes`.
+    kept: Vec<Option<KeptScene>>,
     pub report: FrameReport,
     pub export_size: (u32, u32),
     pub export_samples: u32,
@@ -157,12 +167,13 @@ impl App {
             cell_size: options.cell_size,
             settings: options.settings.clone(),
             clock: Clock::new(options.fps, start_time),
-            help: false,
-            panel: false,
-            diagnostic: None,
-            help_scroll: 0,
+            overlays: Vec::new(),
             quit: false,
             message: Message::None,
+            log: Log::default(),
+            started: Instant::now(),
+            quit_warned: false,
+            kept: (0..options.scenes.len()).map(|_| None).collect(),
             report: FrameReport::default(),
             export_size: options.export_size,
             export_samples: options.export_samples,
@@ -188,7 +199,7 @@ impl App {
         self.prepared
             .objects
             .iter()
-            .any(|o| controls::animates(&o.material))
+            .any(|o| o.material.moves_with_time())
     }
 
     /// The material the material keys edit.
@@ -196,25 +207,120 @@ impl App {
         self.prepared.objects.get(self.object).map(|o| &o.material)
     }
 
+    /// A key: the topmost overlay's if it takes it, else the key map's.
+    pub fn key(&mut self, key: &KeyEvent) {
+        self.dirty.text = true;
+        let Some(mut top) = self.overlays.pop() else {
+            if let Some(action) = action_for(key) {
+                self.apply(action);
+            }
+            return;
+        };
+        let reply = top.key(key, self);
+        let stays = !matches!(reply, Reply::Close | Reply::CloseAnd(_));
+        if stays {
+            self.overlays.push(top);
+        }
+        match reply {
+            Reply::Taken | Reply::Close => {}
+            Reply::Act(action) | Reply::CloseAnd(action) => self.apply(action),
+            Reply::Pass => {
+                if let Some(action) = action_for(key) {
+                    self.apply(action);
+                }
+            }
+        }
+    }
+
+    /// Whether an overlay of this kind is open.
+    pub fn is_open(&self, kind: OverlayKind) -> bool {
+        self.overlays.iter().any(|o| o.kind() == kind)
+    }
+
+    /// The open overlays, the topmost last.
+    pub fn overlays(&self) -> impl Iterator<Item = &dyn Overlay> {
+        self.overlays.iter().map(|o| o.as_ref())
+    }
+
+    /// Opens `overlay` on top, or closes one of its kind that is open.
+    fn toggle(&mut self, overlay: Box<dyn Overlay>) {
+        let kind = overlay.kind();
+        match self.is_open(kind) {
+            true => self.close(kind),
+            false => self.overlays.push(overlay),
+        }
+    }
+
+    fn close(&mut self, kind: OverlayKind) {
+        self.overlays.retain(|o| o.kind() != kind);
+    }
+
+    pub fn message(&self) -> &Message {
+        &self.message
+    }
+
+    /// Shows `message` in the status line and keeps it in the log.
+    pub fn tell(&mut self, message: Message) {
+        self.log
+            .keep(self.started.elapsed().as_secs_f64(), &message);
+        self.message = message;
+        self.dirty.text = true;
+    }
+
+    /// Shows `brief` in the status line and keeps `whole`, which says more, in the log.
+    pub fn tell_briefly(&mut self, brief: String, whole: &[String]) {
+        let seconds = self.started.elapsed().as_secs_f64();
+        for line in whole {
+            self.log.keep(seconds, &Message::Info(line.clone()));
+        }
+        self.message = Message::Info(brief);
+        self.dirty.text = true;
+    }
+
+    pub fn log(&self) -> &Log {
+        &self.log
+    }
+
+    /// The selected parameter's place in `param_rows`.
+    pub fn param(&self) -> usize {
+        self.param
+    }
+
+    /// The edited object as a person names it: its surface's kind, or the model's file name.
+    pub fn object_name(&self) -> String {
+        match self.scene().objects.get(self.object) {
+            Some(object) => format!("{} {}", self.object + 1, object.surface.kind_name()),
+            None => "no object".into(),
+        }
+    }
+
+    /// What the picker offers: the scenes given, then every built-in not among them.
+    pub fn pickable_scenes(&self) -> Vec<String> {
+        let builtins = crate::scene::PRESET_NAMES.iter().map(|n| n.to_string());
+        let mut names = self.scenes.clone();
+        names.extend(builtins.filter(|n| !self.scenes.contains(n)));
+        names
+    }
+
     pub fn apply(&mut self, action: Action) {
         self.dirty.text = true;
         match action {
-            Action::Quit => self.quit = true,
-            Action::ToggleHelp => self.help = !self.help,
-            Action::Back if self.help => self.help = false,
-            Action::Back if self.diagnostic.is_some() => self.diagnostic = None,
-            Action::Back if self.panel => self.panel = false,
-            Action::TogglePanel => self.panel = !self.panel,
-            Action::Back => self.quit = true,
-            // While the help is open, up and down scroll it instead of orbiting behind it.
-            Action::Orbit(_, dy) if self.help => {
-                self.help_scroll = match dy > 0.0 {
-                    true => self.help_scroll.saturating_sub(1),
-                    false => (self.help_scroll + 1).min(super::keymap::help_lines().count() as u16),
-                };
+            Action::Quit => self.quit_unless_busy(),
+            Action::QuitNow => self.quit = true,
+            Action::ToggleHelp => self.toggle(Box::<Help>::default()),
+            Action::TogglePanel => self.toggle(Box::<ParamPanel>::default()),
+            Action::ToggleLog => self.toggle(Box::<LogView>::default()),
+            Action::OpenPicker => {
+                self.close(OverlayKind::Picker);
+                self.overlays.push(Box::<ScenePicker>::default());
             }
+            Action::Back => match self.overlays.pop() {
+                Some(_) => {}
+                None => self.tell(Message::Info("nothing to close; q quits".into())),
+            },
             Action::NextScene => self.switch_scene(1),
             Action::PreviousScene => self.switch_scene(-1),
+            Action::GoToScene(index) => self.go_to_picked(index),
             Action::Export => self.export(),
             Action::SaveScene => self.save_scene(),
             _ => self.apply_to_picture(action),
@@ -235,21 +341,32 @@ impl App {
             }
             Action::ResetLights => match self.scene_as_saved() {
                 Ok(saved) => self.prepared.scene.lights = saved.lights,
-                Err(e) => self.message = Message::Error(e.to_string()),
+                Err(e) => self.tell(Message::Error(e.to_string())),
             },
             Action::ToggleShadows => {
                 let scene = &mut self.prepared.scene;
                 scene.shadows = !scene.shadows;
                 let state = if scene.shadows { "on" } else { "off" };
-                self.message = Message::Info(format!("shadows {state}"));
+                self.tell(Message::Info(format!("shadows {state}")));
             }
             Action::DropLiveValues => self.drop_live_values(),
             Action::NextViewMode => self.view_mode = self.view_mode.cycled(1),
             Action::PreviousViewMode => self.view_mode = self.view_mode.cycled(-1),
-            Action::NextQuality => self.reprepare(self.quality.next()),
-            Action::NextGlyphs => self.next_picture_kind(),
-            Action::NextColors => self.colors = next_colors(self.colors),
-            Action::TogglePause => self.clock.toggle(),
+            Action::NextQuality => {
+                self.reprepare(self.quality.next());
+                self.tell(Message::Info(format!("quality: {}", self.quality.name())));
+            }
+            Action::NextGlyphs => {
+                self.next_picture_kind();
+                let name = super::status::picture_name(self);
+                self.tell(Message::Info(format!("picture: {name}")));
+            }
+            Action::NextColors => {
+                self.colors = next_colors(self.colors);
+                let name = super::status::colors_name(self.colors);
+                self.tell(Message::Info(format!("colours: {name}")));
+            }
+            Action::TogglePause => self.toggle_clock(),
             Action::StepClock => self.clock.step(),
             _ => self.apply_to_material(action),
         }
@@ -257,7 +374,7 @@ impl App {
 
     fn apply_to_material(&mut self, action: Action) {
         if self.prepared.objects.is_empty() {
-            self.message = Message::Info("this scene has no objects".into());
+            self.tell(Message::Info("this scene has no objects".into()));
             return;
         }
         let param = self.param;
@@ -265,7 +382,8 @@ impl App {
             Action::NextObject => {
                 self.object = (self.object + 1) % self.prepared.objects.len();
                 self.param = 0;
-                true
+                let name = self.object_name();
+                return self.tell(Message::Info(format!("editing object {name}")));
             }
             Action::NextPattern => return self.cycle(controls::cycle_bump, 1),
             Action::PreviousPattern => return self.cycle(controls::cycle_bump, -1),
@@ -286,14 +404,18 @@ impl App {
                 self.param = row;
                 self.edit_material(|m| controls::adjust_param(m, row, steps))
             }
+            Action::SetParam(row, value) => {
+                self.param = row;
+                self.edit_material(|m| controls::set_param(m, row, value))
+            }
             _ => true,
         };
-        self.message = match done {
+        self.tell(match done {
             true => Message::None,
             false => Message::Info(
                 "this object has no pattern parameters (p adds a bump pattern, t a texture)".into(),
             ),
-        };
+        });
     }
 
     /// Puts the next (`step` 1) or previous pattern or image on the edited object with `cycle`
@@ -310,9 +432,12 @@ impl App {
                     true
                 });
                 self.param = 0;
-                self.message = Message::Info(format!("now {}", crate::term::sanitize(&name)));
+                self.tell(Message::Info(format!(
+                    "now {}",
+                    crate::term::sanitize(&name)
+                )));
             }
-            Err(e) => self.message = Message::Error(crate::term::sanitize(&e).into_owned()),
+            Err(e) => self.tell(Message::Error(crate::term::sanitize(&e).into_owned())),
         }
     }
 
@@ -366,25 +491,89 @@ impl App {
     pub fn switch_scene(&mut self, step: i32) {
         let count = self.scenes.len() as i32;
         let index = (self.scene_index as i32 + step).rem_euclid(count) as usize;
-        let opened =
-            open_watched(&self.scenes[index], self.watch).and_then(|(mut scene, reloader)| {
-                apply_settings(&self.settings, &mut scene);
-                Ok((prepare(scene, self.quality, &self.settings)?, reloader))
-            });
-        match opened {
-            Ok(((prepared, quality), reloader)) => {
-                self.quality_in_use = quality;
-                self.reloader = reloader;
-                self.images = shelf_for(&prepared.scene, &self.scenes[index]);
-                self.scene_index = index;
-                self.object = first_bumped_object(&prepared.scene);
-                self.param = 0;
-                self.orbit = Orbit::from_camera(&prepared.scene.camera);
-                self.prepared = prepared;
-                self.message = Message::None;
-                self.dirty = Dirty::ALL;
+        self.show_scene(index);
+    }
+
+    /// The scene at `index` of `pickable_scenes`, added to the scenes Tab goes through if it
+    /// is a built-in not among them.
+    fn go_to_picked(&mut self, index: usize) {
+        let Some(name) = self.pickable_scenes().into_iter().nth(index) else {
+            return;
+        };
+        let index = match self.scenes.iter().position(|s| *s == name) {
+            Some(index) => index,
+            None => {
+                self.scenes.push(name);
+                self.kept.push(None);
+                self.scenes.len() - 1
             }
-            Err(e) => self.report(&e),
+        };
+        self.show_scene(index);
+    }
+
+    /// Shows scene `index` as it was left, or fresh from its source the first time; the scene
+    /// left is kept as it is.
+    fn show_scene(&mut self, index: usize) {
+        if index == self.scene_index {
+            return;
+        }
+        let next = match self.kept[index].take() {
+            Some(kept) => kept,
+            None => match self.open_fresh(index) {
+                Ok(fresh) => fresh,
+                Err(e) => return self.report(&e),
+            },
+        };
+        let left = self.swap_in(next);
+        self.kept[self.scene_index] = Some(left);
+        self.scene_index = index;
+        self.close(OverlayKind::Diagnostic);
+        self.tell(Message::None);
+        self.dirty = Dirty::ALL;
+    }
+
+    /// Scene `index` as its source gives it, with the `--set` settings.
+    fn open_fresh(&self, index: usize) -> Result<KeptScene, Error> {
+        let (mut scene, reloader) = open_watched(&self.scenes[index], self.watch)?;
+        apply_settings(&self.settings, &mut scene);
+        let (prepared, quality_in_use) = prepare(scene, self.quality, &self.settings)?;
+        Ok(KeptScene {
+            images: shelf_for(&prepared.scene, &self.scenes[index]),
+            object: first_bumped_object(&prepared.scene),
+            param: 0,
+            orbit: Orbit::from_camera(&prepared.scene.camera),
+            quality: self.quality,
+            quality_in_use,
+            reloader,
+            prepared,
+        })
+    }
+
+    /// Puts `next` on show; returns what was.
+    fn swap_in(&mut self, next: KeptScene) -> KeptScene {
+        KeptScene {
+            prepared: std::mem::replace(&mut self.prepared, next.prepared),
+            orbit: std::mem::replace(&mut self.orbit, next.orbit),
+            object: std::mem::replace(&mut self.object, next.object),
+            param: std::mem::replace(&mut self.param, next.param),
+            quality: std::mem::replace(&mut self.quality, next.quality),
+            quality_in_use: std::mem::replace(&mut self.quality_in_use, next.quality_in_use),
+            images: std::mem::replace(&mut self.images, next.images),
+            reloader: std::mem::replace(&mut self.reloader, next.reloader),
+        }
+    }
+
+    /// `q`: quits, but while an export is under way first says once what that cancels.
+    fn quit_unless_busy(&mut self) {
+        match &self.export_job {
+            Some(job) if !self.quit_warned => {
+                let path = crate::term::sanitize(&job.path.display().to_string()).into_owned();
+                self.quit_warned = true;
+                self.tell(Message::Info(format!(
+                    "quitting cancels the export of {path}: q again quits, or wait for it"
+                )));
+            }
+            _ => self.quit = true,
         }
     }
 
@@ -393,8 +582,12 @@ impl App {
     fn report(&mut self, error: &Error) {
         let text = error.to_string();
         let first = text.lines().next().unwrap_or_default().to_string();
-        self.diagnostic = (first.len() < text.len()).then_some(text);
-        self.message = Message::Error(first);
+        self.close(OverlayKind::Diagnostic);
+        if first.len() < text.len() {
+            self.overlays
+                .push(Box::new(DiagnosticBox { message: text }));
+        }
+        self.tell(Message::Error(first));
     }
 
     /// Takes what the file watcher found: a changed scene replaces the shown one (keeping the
@@ -420,16 +613,18 @@ impl App {
                             self.quality_in_use = quality;
                             let last = self.prepared.objects.len().saturating_sub(1);
                             self.object = self.object.min(last);
-                            self.message = Message::Info(reloaded_message(&kept));
-                            self.diagnostic = None;
+                            self.tell(Message::Info(reloaded_message(&kept)));
+                            self.close(OverlayKind::Diagnostic);
                             self.dirty.picture = true;
                         }
                         Err(e) => self.report(&e),
                     }
                 }
                 ReloadOutcome::Failed(error) => {
-                    self.message = Message::Error(error.first_line().to_string());
-                    self.diagnostic = Some(error.message);
+                    self.tell(Message::Error(error.first_line().to_string()));
+                    self.close(OverlayKind::Diagnostic);
+                    let message = error.message;
+                    self.overlays.push(Box::new(DiagnosticBox { message }));
                 }
                 ReloadOutcome::Unchanged => {}
             }
@@ -449,10 +644,10 @@ impl App {
         let (scene, camera, time) = (&self.prepared.scene, self.camera(), self.clock.time());
         let saved = crate::still::saved_view(source, scene, &camera, &exported, time)
             .and_then(|file| write_new_file(&path, file.to_toml().as_bytes()));
-        self.message = match saved {
+        self.tell(match saved {
             Ok(()) => Message::Info(format!("saved the view as {}", path.display())),
             Err(e) => Message::Error(e.to_string()),
-        };
+        });
     }
 
     /// The current scene as its source gives it, with the `--set` settings.
@@ -475,10 +670,25 @@ impl App {
                 self.object = self
                     .object
                     .min(self.prepared.objects.len().saturating_sub(1));
-                self.message = Message::Info("the file's values again".into());
+                self.tell(Message::Info("the file's values again".into()));
             }
             Err(e) => self.report(&e),
         }
+    }
+
+    /// Pauses or runs the clock, saying so, and saying when nothing shown moves with it.
+    fn toggle_clock(&mut self) {
+        self.clock.toggle();
+        let state = match self.clock.is_running() {
+            true => "running",
+            false => "paused",
+        };
+        self.tell(Message::Info(match self.animates() {
+            true => format!("clock {state}"),
+            false => format!(
+                "clock {state}; nothing here moves with time (a pattern's speed of 0 stands still)"
+            ),
+        }));
     }
 
     /// Tessellates again for the preset `quality`; one that does not fit keeps the current one.
@@ -496,7 +706,7 @@ impl App {
     fn export(&mut self) {
         if let Some(job) = &self.export_job {
             let path = job.path.display().to_string();
-            self.message = Message::Info(format!("still exporting {path}"));
+            self.tell(Message::Info(format!("still exporting {path}")));
             return;
         }
         let job = ExportJob::start(
@@ -507,10 +717,10 @@ impl App {
         );
         let (w, h) = self.export_size;
         let path = job.path.display();
-        self.message = Message::Info(format!(
+        self.tell(Message::Info(format!(
             "exporting {path} ({w}x{h}, {} spp)…",
             self.export_samples
-        ));
+        )));
         self.export_job = Some(job);
         self.dirty.text = true;
     }
@@ -521,14 +731,14 @@ impl App {
             return;
         };
         let job = self.export_job.take().expect("a finished job");
-        self.message = match outcome {
+        self.tell(match outcome {
             Ok(()) if job.has_recipe => Message::Info(format!("exported {}", job.path.display())),
             Ok(()) => Message::Info(format!(
                 "exported {} (a picture only: this view carries no recipe for render --from)",
                 job.path.display()
             )),
             Err(e) => Message::Error(e.to_string()),
-        };
+        });
         self.dirty.text = true;
     }
 
@@ -540,7 +750,7 @@ impl App {
         }
         let age = now.saturating_duration_since(self.message_seen.1);
         if matches!(self.message, Message::Info(_)) && age >= INFO_LIFETIME {
-            self.message = Message::None;
+            self.tell(Message::None);
             self.dirty.text = true;
         }
     }

@@ -1,7 +1,7 @@
 //! The event loop: draw what changed, wait for input or the next animation frame, repeat; and
 //! give the terminal back however it ends.
 
-use super::app::{App, Message};
+use super::app::App;
 use super::input::{Input, InputState};
 use super::options::WorkbenchOptions;
 use super::pixel_picture::PixelRoute;
@@ -46,21 +46,21 @@ pub fn run(options: &WorkbenchOptions) -> Result<(), Error> {
                 .into(),
         ));
     }
-    app.message = Message::Info(format!(
-        "{} colours ({}; --colors sets them)",
-        colors_name(colors.mode),
-        colors.reason
-    ));
     let signals = ShutdownSignals::register().map_err(terminal_error)?;
     signals.watch_terminal().map_err(terminal_error)?;
     let guard = TerminalGuard::enter(options.mouse).map_err(terminal_error)?;
     let found = find_graphics(options.graphics).map_err(terminal_error)?;
     app.graphics = found.chosen;
     app.graphics_supported = found.supported.clone();
-    if let Message::Info(text) = &mut app.message {
-        let picture = found.chosen.map_or("blocks", |p| p.name());
-        *text = format!("{picture} ({}); {text}", found.reason);
-    }
+    let picture = found.chosen.map_or("blocks", |p| p.name());
+    let colours = colors_name(colors.mode);
+    app.tell_briefly(
+        format!("{picture}, {colours} colours; M says why"),
+        &[
+            format!("picture: {picture} ({})", found.reason),
+            format!("colours: {colours} ({}; --colors sets them)", colors.reason),
+        ],
+    );
     let route = PixelRoute {
         through_tmux: found.through_tmux,
         cell_pixels: cell_pixels(options.cell_size, found.cell_pixels),
@@ -199,6 +199,7 @@ fn handle_pending_events(
     loop {
         match input.translate(event::read()?) {
             Input::Suspend => suspend = true,
+            Input::Key(key) => app.key(&key),
             Input::Action(action) => app.apply(action),
             Input::Pointer(pointer) => {
                 if let Some(action) = pointer.action(app, screen.picture_area()) {

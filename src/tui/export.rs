@@ -13,7 +13,7 @@ use crate::scene::Scene;
 use crate::still::{Recipe, ResolveFilter, StillSettings};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU32, Ordering};
 use std::sync::mpsc::{Receiver, TryRecvError, channel};
 use std::thread::JoinHandle;
 use std::time::{SystemTime, UNIX_EPOCH};
@@ -35,6 +35,8 @@ pub struct ExportJob {
     /// Whether the still carries a recipe (`render --from` can make it again).
     pub has_recipe: bool,
     cancel: Arc<AtomicBool>,
+    /// Thousandths of the still written.
+    progress: Arc<AtomicU32>,
     done: Receiver<Result<(), Error>>,
     thread: Option<JoinHandle<()>>,
 }
@@ -66,16 +68,24 @@ impl ExportJob {
         let path = order.path.clone();
         let has_recipe = carries_recipe(order.mode);
         let stop = Arc::clone(&cancel);
+        let progress = Arc::new(AtomicU32::new(0));
+        let written = Arc::clone(&progress);
         let thread = std::thread::spawn(move || {
-            let _ = sender.send(export(order, &stop));
+            let _ = sender.send(export(order, &stop, &written));
         });
         ExportJob {
             path,
             has_recipe,
             cancel,
+            progress,
             done,
             thread: Some(thread),
         }
+    }
+
+    /// How much of the still is written, in per cent.
+    pub fn percent_done(&self) -> u32 {
+        self.progress.load(Ordering::Relaxed) / 10
     }
 
     /// The outcome once the export has finished.
@@ -106,7 +116,7 @@ fn carries_recipe(mode: ViewMode) -> bool {
     !matches!(mode, ViewMode::Wireframe | ViewMode::Error)
 }
 
-fn export(order: ExportOrder, cancel: &AtomicBool) -> Result<(), Error> {
+fn export(order: ExportOrder, cancel: &AtomicBool, progress: &AtomicU32) -> Result<(), Error> {
     if !carries_recipe(order.mode) {
         return export_picture(order);
     }
@@ -132,7 +142,7 @@ fn export(order: ExportOrder, cancel: &AtomicBool) -> Result<(), Error> {
         &request,
         &order.path,
         StillFormat::Png,
-        &mut |_| {},
+        &mut |done| progress.store((done.clamp(0.0, 1.0) * 1000.0) as u32, Ordering::Relaxed),
         &interrupted,
     )?;
     Ok(())

@@ -1,7 +1,6 @@
 //! Terminal events to actions: keys through the key map, mouse drags and the wheel directly.
 
 use super::action::Action;
-use super::keymap::action_for;
 use crossterm::event::{
     Event, KeyCode, KeyEvent, KeyEventKind, KeyModifiers, MouseButton, MouseEvent, MouseEventKind,
 };
@@ -14,6 +13,8 @@ const WHEEL_ZOOM: f64 = 1.1;
 /// What an event asks for.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Input {
+    /// A key press, for the topmost overlay or the key map (`App::key`).
+    Key(KeyEvent),
     Action(Action),
     /// A click or the wheel at a cell: what it does depends on what is drawn there.
     Pointer(Pointer),
@@ -58,7 +59,8 @@ impl InputState {
         match event {
             Event::Key(key) if is_ctrl(&key, 'z') => Input::Suspend,
             Event::Key(key) if is_ctrl(&key, 'l') => Input::Redraw,
-            Event::Key(key) => action_for(&key).map_or(Input::Nothing, Input::Action),
+            Event::Key(key) if key.kind == KeyEventKind::Release => Input::Nothing,
+            Event::Key(key) => Input::Key(key),
             Event::Resize(cols, rows) => Input::Resize(cols, rows),
             Event::Mouse(mouse) => self.mouse(mouse),
             Event::FocusGained => Input::Redraw,

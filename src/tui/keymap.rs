@@ -20,49 +20,35 @@ const LIGHT_STEP: f64 = 15.0;
 use KeyCode::{BackTab, Char, Down, Esc, F, Home, Left, Right, Tab, Up};
 
 pub const BINDINGS: &[Binding] = &[
-    bind("Tab", "next scene", &[Tab], Action::NextScene),
-    bind("S-Tab", "previous scene", &[BackTab], Action::PreviousScene),
     bind(
-        "← h",
-        "orbit left",
+        "Tab S-Tab",
+        "next / previous scene",
+        &[Tab],
+        Action::NextScene,
+    ),
+    bind("", "", &[BackTab], Action::PreviousScene),
+    bind(
+        "/",
+        "pick a scene by name",
+        &[Char('/')],
+        Action::OpenPicker,
+    ),
+    bind(
+        "←→↑↓ hljk",
+        "orbit (mouse: drag)",
         &[Left, Char('h')],
         Action::Orbit(-ORBIT_STEP, 0.0),
     ),
-    bind(
-        "→ l",
-        "orbit right",
-        &[Right, Char('l')],
-        Action::Orbit(ORBIT_STEP, 0.0),
-    ),
-    bind(
-        "↑ k",
-        "orbit up",
-        &[Up, Char('k')],
-        Action::Orbit(0.0, ORBIT_STEP),
-    ),
-    bind(
-        "↓ j",
-        "orbit down",
-        &[Down, Char('j')],
-        Action::Orbit(0.0, -ORBIT_STEP),
-    ),
-    bind(
-        "H L",
-        "pan left / right",
-        &[Char('H')],
-        Action::Pan(-PAN_STEP, 0.0),
-    ),
+    bind("", "", &[Right, Char('l')], Action::Orbit(ORBIT_STEP, 0.0)),
+    bind("", "", &[Up, Char('k')], Action::Orbit(0.0, ORBIT_STEP)),
+    bind("", "", &[Down, Char('j')], Action::Orbit(0.0, -ORBIT_STEP)),
+    bind("H L K J", "pan", &[Char('H')], Action::Pan(-PAN_STEP, 0.0)),
     bind("", "", &[Char('L')], Action::Pan(PAN_STEP, 0.0)),
-    bind(
-        "K J",
-        "pan up / down",
-        &[Char('K')],
-        Action::Pan(0.0, PAN_STEP),
-    ),
+    bind("", "", &[Char('K')], Action::Pan(0.0, PAN_STEP)),
     bind("", "", &[Char('J')], Action::Pan(0.0, -PAN_STEP)),
     bind(
         "+ -",
-        "zoom in / out (wheel)",
+        "zoom (mouse: wheel)",
         &[Char('+'), Char('=')],
         Action::Zoom(1.0 / ZOOM_STEP),
     ),
@@ -74,18 +60,13 @@ pub const BINDINGS: &[Binding] = &[
         Action::ResetCamera,
     ),
     bind(
-        "a d",
-        "light left / right",
+        "a d r f",
+        "light left right up down",
         &[Char('a')],
         Action::MoveLight(-LIGHT_STEP, 0.0),
     ),
     bind("", "", &[Char('d')], Action::MoveLight(LIGHT_STEP, 0.0)),
-    bind(
-        "r f",
-        "light up / down",
-        &[Char('r')],
-        Action::MoveLight(0.0, LIGHT_STEP),
-    ),
+    bind("", "", &[Char('r')], Action::MoveLight(0.0, LIGHT_STEP)),
     bind("", "", &[Char('f')], Action::MoveLight(0.0, -LIGHT_STEP)),
     bind("R", "reset lights", &[Char('R')], Action::ResetLights),
     bind("S", "shadows on / off", &[Char('S')], Action::ToggleShadows),
@@ -96,22 +77,17 @@ pub const BINDINGS: &[Binding] = &[
         Action::NextViewMode,
     ),
     bind("", "", &[Char('V')], Action::PreviousViewMode),
-    bind(
-        "o",
-        "next object (the one p t b i [ ] , . edit)",
-        &[Char('o')],
-        Action::NextObject,
-    ),
+    bind("o", "next object to edit", &[Char('o')], Action::NextObject),
     bind(
         "p P",
-        "next / previous bump: pattern or image",
+        "bump: pattern or image",
         &[Char('p')],
         Action::NextPattern,
     ),
     bind("", "", &[Char('P')], Action::PreviousPattern),
     bind(
         "t T",
-        "next / previous texture: pattern or image",
+        "texture: pattern or image",
         &[Char('t')],
         Action::NextTexture,
     ),
@@ -145,12 +121,7 @@ pub const BINDINGS: &[Binding] = &[
         Action::AdjustParam(-10.0),
     ),
     bind("", "", &[Char('>')], Action::AdjustParam(10.0)),
-    bind(
-        "m",
-        "parameter panel (click a row, wheel to change)",
-        &[Char('m')],
-        Action::TogglePanel,
-    ),
+    bind("m", "parameter panel", &[Char('m')], Action::TogglePanel),
     bind(
         "Space",
         "pause / run animation",
@@ -169,39 +140,43 @@ pub const BINDINGS: &[Binding] = &[
         &[Char('Q')],
         Action::NextQuality,
     ),
-    bind(
-        "g",
-        "picture: half / quadrant / sextant blocks, then pixels",
-        &[Char('g')],
-        Action::NextGlyphs,
-    ),
+    bind("g", "glyphs, then pixels", &[Char('g')], Action::NextGlyphs),
     bind(
         "c",
-        "colours: true / 256 / 16 / none",
+        "colours: true 256 16 none",
         &[Char('c')],
         Action::NextColors,
     ),
     bind(
         "x",
-        "drop live values: the file's again",
+        "drop live values",
         &[Char('x')],
         Action::DropLiveValues,
     ),
-    bind("e", "export view to PNG", &[Char('e')], Action::Export),
+    bind("e", "export the view to PNG", &[Char('e')], Action::Export),
     bind(
         "s",
-        "save view as a new scene file",
+        "save the view as a scene",
         &[Char('s')],
         Action::SaveScene,
     ),
+    bind("M", "message log", &[Char('M')], Action::ToggleLog),
     bind("? F1", "this help", &[Char('?'), F(1)], Action::ToggleHelp),
-    bind(
-        "Esc",
-        "close help, diagnostic or panel, else quit",
-        &[Esc],
-        Action::Back,
-    ),
-    bind("q C-c", "quit", &[Char('q')], Action::Quit),
+    bind("Esc", "close the box on top", &[Esc], Action::Back),
+    bind("q", "quit", &[Char('q')], Action::Quit),
+];
+
+/// What the help lists beside the bindings: keys read before the key map, and the keys of the
+/// overlays (which take them first while open).
+const MORE_HELP: &[(&str, &str)] = &[
+    ("C-c", "quit at once"),
+    ("C-z", "suspend (fg resumes)"),
+    ("C-l", "draw everything again"),
+    ("m: ↑ ↓", "select (mouse: click)"),
+    ("m: ← →", "fine step (mouse: wheel)"),
+    ("m: Enter", "type a value"),
+    ("/: type", "filter; ↑ ↓ Enter go"),
+    ("M: ↑ ↓", "scroll the log"),
 ];
 
 const fn bind(
@@ -224,7 +199,7 @@ pub fn action_for(key: &KeyEvent) -> Option<Action> {
         return None;
     }
     if crate::term::is_ctrl_c(key) {
-        return Some(Action::Quit);
+        return Some(Action::QuitNow);
     }
     if key
         .modifiers
@@ -238,9 +213,11 @@ pub fn action_for(key: &KeyEvent) -> Option<Action> {
         .map(|b| b.action)
 }
 
-/// The bindings the help lists: those with a label (the unlabeled ones share the line above).
-pub fn help_lines() -> impl Iterator<Item = &'static Binding> {
-    BINDINGS.iter().filter(|b| !b.keys.is_empty())
+/// What the help lists, keys and words: the bindings with a label (the unlabeled ones share the
+/// line above), then the keys outside the key map.
+pub fn help_entries() -> impl Iterator<Item = (&'static str, &'static str)> {
+    let bound = BINDINGS.iter().filter(|b| !b.keys.is_empty());
+    (bound.map(|b| (b.keys, b.description))).chain(MORE_HELP.iter().copied())
 }
 
 #[cfg(test)]
@@ -256,7 +233,7 @@ mod tests {
         assert_eq!(press(Tab), Some(Action::NextScene));
         assert_eq!(press(Char('q')), Some(Action::Quit));
         let ctrl_c = KeyEvent::new(Char('c'), KeyModifiers::CONTROL);
-        assert_eq!(action_for(&ctrl_c), Some(Action::Quit));
+        assert_eq!(action_for(&ctrl_c), Some(Action::QuitNow));
     }
 
     #[test]

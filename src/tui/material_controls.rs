@@ -5,7 +5,6 @@ use super::image_shelf::ImageShelf;
 use crate::pattern::{BUILTINS, OutputKind, Pattern};
 use crate::scene::{Bump, BumpSource, Material, PatternBinding, Placement, Texturing};
 use crate::surface::Surface;
-use crate::texture::Mapping;
 
 /// The built-in patterns of one kind (bump or colour), in the order they are shipped.
 fn builtins_of(colour: bool) -> Vec<(&'static str, Pattern)> {
@@ -166,6 +165,10 @@ pub fn invert_bump(material: &mut Material) -> bool {
 
 /// Steps of one fiftieth of the parameter's range.
 const PARAM_STEPS: f32 = 50.0;
+/// A range from above 0 spanning this factor or more is stepped by a factor.
+const SCALE_SPAN: f32 = 20.0;
+/// The factor of one step of such a parameter.
+const SCALE_STEP: f32 = 1.05;
 
 /// Which of a material's pattern bindings a parameter belongs to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -231,8 +234,27 @@ fn binding_rows(slot: ParamSlot, binding: Option<&PatternBinding>) -> Vec<ParamR
 }
 
 /// Moves parameter `row` of `param_rows` by `steps`, clamped to its range; false if there is
-/// none.
+/// none. A step is a fiftieth of the range, or for a parameter whose range spans a factor of
+/// `SCALE_SPAN` from above 0 (a period, a size) a factor of `SCALE_STEP`, so it moves as
+/// finely at 5 as at 300.
 pub fn adjust_param(material: &mut Material, row: usize, steps: f32) -> bool {
+    with_param(material, row, |value, min, max| {
+        let moved = match min > 0.0 && max / min >= SCALE_SPAN {
+            true => *value * SCALE_STEP.powf(steps),
+            false => *value + steps * (max - min) / PARAM_STEPS,
+        };
+        *value = moved.clamp(min, max);
+    })
+}
+
+/// Sets parameter `row` of `param_rows` to `value`, clamped to its range; false if there is
+/// none.
+pub fn set_param(material: &mut Material, row: usize, value: f32) -> bool {
+    with_param(material, row, |v, min, max| *v = value.clamp(min, max))
+}
+
+/// Applies `change(value, min, max)` to parameter `row` of `param_rows`; false if there is none.
+fn with_param(material: &mut Material, row: usize, change: impl Fn(&mut f32, f32, f32)) -> bool {
     let bump_count = bump_pattern(material).map_or(0, |b| b.params.len());
     let (binding, index) = match row < bump_count {
         true => (bump_pattern_mut(material), row),
@@ -248,18 +270,8 @@ pub fn adjust_param(material: &mut Material, row: usize, steps: f32) -> bool {
     let Some(value) = binding.params.get_mut(index) else {
         return false;
     };
-    *value = (*value + steps * (max - min) / PARAM_STEPS).clamp(min, max);
+    change(value, min, max);
     true
-}
-
-/// Whether the material changes with time: an animated pattern or a scrolling image.
-pub fn animates(material: &Material) -> bool {
-    let texture = match &material.texture {
-        Some(Texturing::Pattern(b)) => b.pattern.uses_time(),
-        Some(Texturing::Image(image)) => matches!(image.mapping, Mapping::Scroll(_)),
-        None => false,
-    };
-    texture || bump_pattern(material).is_some_and(|b| b.pattern.uses_time())
 }
 
 #[cfg(test)]
@@ -379,5 +391,24 @@ mod tests {
         let moved = &param_rows(&material)[bump_count];
         assert!(moved.value != rows[bump_count].value || moved.value == moved.max);
         assert!(!adjust_param(&mut material, rows.len(), 1.0));
+    }
+
+    #[test]
+    fn a_period_steps_by_a_factor_and_a_depth_by_a_part_of_its_range() {
+        let scene = crate::scene::preset("plane-ripple").unwrap();
+        let mut material = scene.objects[0].material.clone();
+        let rows = param_rows(&material);
+        let wavelength = rows.iter().position(|r| r.name == "wavelength").unwrap();
+        let amplitude = rows.iter().position(|r| r.name == "amplitude").unwrap();
+        let (w, a) = (rows[wavelength].value, rows[amplitude].value);
+        adjust_param(&mut material, wavelength, 10.0);
+        adjust_param(&mut material, amplitude, 1.0);
+        let rows = param_rows(&material);
+        let ratio = rows[wavelength].value / w;
+        assert!((ratio - 1.05f32.powi(10)).abs() < 1e-4, "{ratio}");
+        let range = rows[amplitude].max - rows[amplitude].min;
+        assert!((rows[amplitude].value - a - range / 50.0).abs() < 1e-4);
+        assert!(set_param(&mut material, wavelength, 199.2));
+        assert_eq!(param_rows(&material)[wavelength].value, 199.2);
     }
 }

@@ -3,14 +3,13 @@
 //! with only the changed cells.
 
 use super::app::App;
-use super::help::{draw_diagnostic, draw_help};
 use super::pixel_picture::{PixelPicture, PixelRoute};
 use super::refinement::Accumulation;
 use super::render::{
     CellShape, DEFAULT_CELL_ASPECT, Sampling, View, empty_framebuffer, encode_cells,
     render_picture_pass,
 };
-use super::status::status_line;
+use super::status::{StatusLine, error_style, status_line};
 use super::view_mode::ViewMode;
 use crate::raster::Framebuffer;
 use crate::term::graphics::Protocol;
@@ -369,26 +368,25 @@ impl Screen {
         let style = text_style(app.colors);
         if let Some(row) = self.layout.status_row {
             let line = match self.layout.size_unknown {
-                true => NO_SIZE_NOTE.to_string(),
+                true => StatusLine {
+                    text: NO_SIZE_NOTE.to_string(),
+                    error_chars: 0,
+                },
                 false => status_line(app, cols as usize),
             };
-            buffer.set_stringn(
-                0,
-                row,
-                format!("{line:<width$}", width = cols as usize),
-                cols as usize,
-                style,
+            let width = cols as usize;
+            let text = format!("{:<width$}", line.text);
+            let (error, rest) = text.split_at(
+                text.char_indices()
+                    .nth(line.error_chars)
+                    .map_or(text.len(), |(i, _)| i),
             );
+            let (x, _) = buffer.set_stringn(0, row, error, width, error_style(style));
+            buffer.set_stringn(x, row, rest, width.saturating_sub(x as usize), style);
         }
         let picture = self.picture_area();
-        if app.panel {
-            super::param_panel::draw_panel(app, picture, style, &mut buffer);
-        }
-        if let Some(message) = &app.diagnostic {
-            draw_diagnostic(picture, style, message, &mut buffer);
-        }
-        if app.help {
-            draw_help(picture, style, app.help_scroll, &mut buffer);
+        for overlay in app.overlays() {
+            overlay.draw(app, picture, style, &mut buffer);
         }
         to_cells(&buffer)
     }

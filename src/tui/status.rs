@@ -18,17 +18,53 @@ struct Segment {
 /// that says what just happened or went wrong.
 const KEPT_RANK: u8 = 1;
 
-/// The status line for `app`, at most `width` characters.
-pub fn status_line(app: &App, width: usize) -> String {
+/// The help hint at the status line's end, from this width up.
+const HELP_HINT: &str = "? help";
+const HELP_HINT_FROM: usize = 40;
+
+/// The status line, and how many of its first characters are an error to show as one.
+#[derive(Clone, Debug, PartialEq)]
+pub struct StatusLine {
+    pub text: String,
+    pub error_chars: usize,
+}
+
+/// The status line for `app`, at most `width` characters, ending in `? help` from 40 up.
+pub fn status_line(app: &App, width: usize) -> StatusLine {
+    let hint = width >= HELP_HINT_FROM;
+    let room = match hint {
+        true => width - HELP_HINT.len() - SEPARATOR.chars().count(),
+        false => width,
+    };
     let mut segments = segments(app);
-    loop {
+    let error = matches!(app.message(), Message::Error(_));
+    let error_chars = segments
+        .first()
+        .filter(|_| error)
+        .map_or(0, |s| s.text.chars().count());
+    let mut text = loop {
         let line = join(&segments);
         let least = segments.iter().map(|s| s.rank).max().unwrap_or(0);
-        if line.chars().count() <= width || least <= KEPT_RANK {
-            return truncate(&line, width);
+        if line.chars().count() <= room || least <= KEPT_RANK {
+            break truncate(&line, room);
         }
         let position = segments.iter().rposition(|s| s.rank == least).unwrap_or(0);
         segments.remove(position);
+    };
+    let error_chars = error_chars.min(text.chars().count());
+    if hint {
+        let pad = room - text.chars().count();
+        text = format!("{text}{}{SEPARATOR}{HELP_HINT}", " ".repeat(pad));
+    }
+    StatusLine { text, error_chars }
+}
+
+/// How an error shows: red where there is colour, bold where there is none.
+pub fn error_style(base: ratatui::style::Style) -> ratatui::style::Style {
+    use ratatui::style::{Color, Modifier};
+    match base.fg {
+        Some(_) => base.fg(Color::Indexed(9)).add_modifier(Modifier::BOLD),
+        None => base.add_modifier(Modifier::BOLD),
     }
 }
 
@@ -53,7 +89,7 @@ fn segments(app: &App) -> Vec<Segment> {
                 sanitize(&app.scene().name)
             ),
         ),
-        segment(1, app.view_mode.name().into()),
+        segment(2, app.view_mode.name().into()),
         segment(1, material_text(app)),
         segment(
             3,
@@ -89,9 +125,17 @@ fn segments(app: &App) -> Vec<Segment> {
     if !app.clock.is_running() {
         list.push(segment(3, format!("paused t={:.2}s", app.clock.time())));
     }
-    match &app.message {
-        Message::None => list.push(segment(5, "? help".into())),
-        Message::Info(text) => list.insert(2, segment(1, first_line(text))),
+    if let Some(percent) = app.export_job.as_ref().map(|job| job.percent_done()) {
+        list.insert(2, segment(1, format!("exporting {percent}%")));
+    }
+    if report.stats.flattened > 0 {
+        let flat = si(report.stats.flattened);
+        list.insert(2, segment(2, format!("{flat} non-finite spots drawn flat")));
+    }
+    match app.message() {
+        Message::None => {}
+        // What a key just did is read before the rest: right after the scene.
+        Message::Info(text) => list.insert(1, segment(1, first_line(text))),
         // An error matters more than anything else on a short line: it goes first.
         Message::Error(text) => list.insert(0, segment(0, error_text(text))),
     }
@@ -114,7 +158,7 @@ fn material_text(app: &App) -> String {
     };
     let rows = app.param_rows();
     let params = |slot| params_text(&rows, slot, app.param);
-    let mut text = format!("obj {} {}", app.object + 1, bump_text(material));
+    let mut text = format!("{} {}", app.object_name(), bump_text(material));
     text += &params(ParamSlot::Bump);
     if let Some(texture) = &material.texture {
         let name = match texture {
@@ -198,7 +242,7 @@ fn si(n: usize) -> String {
 }
 
 /// The picture's kind: the pixel protocol, or the glyph set.
-fn picture_name(app: &App) -> &'static str {
+pub fn picture_name(app: &App) -> &'static str {
     match app.graphics {
         Some(protocol) => protocol.name(),
         None => glyphs_name(app.glyphs),

@@ -20,7 +20,7 @@ pub fn open_watched(name: &str, watch: bool) -> Result<(Scene, Option<Reloader>)
         let owned = name.to_string();
         let source = FileSetSource::new(model.files(), move || load_source(&owned));
         Reloader::start(source)
-    } else if name.ends_with(".pat") {
+    } else if name.ends_with(".pat") || crate::texture::is_image_name(name) {
         let owned = name.to_string();
         let source = FileSetSource::new(vec![PathBuf::from(name)], move || load_source(&owned));
         Reloader::start(source)

@@ -134,3 +134,30 @@ fn what_an_animation_cannot_be_is_refused_before_anything_is_written() {
     let left: Vec<_> = std::fs::read_dir(&*dir).unwrap().collect();
     assert!(left.is_empty(), "{left:?}");
 }
+
+/// A sequence of a scene where nothing moves with time says so before it writes a frame.
+#[test]
+fn an_animation_of_a_still_scene_says_every_frame_is_the_same() {
+    let dir = temp_dir("still-animation");
+    let output = dir.join("still.gif");
+    let args = [
+        "render",
+        "plane-ripples",
+        "--size=32x24",
+        "-o",
+        output.to_str().unwrap(),
+    ];
+    let run = bumpwork(&[&args[..], &["--time-range", "0..1", "--fps", "4"]].concat());
+    assert!(run.status.success(), "{}", stderr(&run));
+    assert!(
+        stderr(&run).contains("all 4 frames are the same picture"),
+        "{}",
+        stderr(&run)
+    );
+    let moving = render(&dir.join("moving.gif"), &[]);
+    assert!(
+        !stderr(&moving).contains("same picture"),
+        "{}",
+        stderr(&moving)
+    );
+}

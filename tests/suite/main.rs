@@ -77,6 +77,7 @@ mod tui_graphics;
 mod tui_pty;
 mod tui_refinement;
 mod tui_screen;
+mod tui_workbench;
 mod watch_churn;
 mod watch_reload;
 mod watch_soak;

@@ -241,12 +241,12 @@ fn tmux_without_passthrough_gets_blocks_and_says_why() {
     let command = format!("{} view {SCENE}", env!("CARGO_BIN_EXE_bumpwork"));
     let tmux = Tmux::start("graphics", 160, 30, &command);
     tmux.run(&["set-option", "-g", "allow-passthrough", "off"]);
-    let screen = tmux.wait_for("the first frame", |s| s.contains("blocks"));
-    assert!(
-        screen.contains("blocks (inside tmux without allow-passthrough"),
-        "{screen}"
-    );
+    let screen = tmux.wait_for("the first frame", |s| s.contains("blocks, "));
     assert!(screen.contains('▀'), "the picture in half blocks");
+    tmux.run(&["send-keys", "M"]);
+    tmux.wait_for("why, in the message log", |s| {
+        s.contains("picture: blocks (inside tmux without allow-passthrough")
+    });
 }
 
 /// The workbench in tmux, whose client runs in a test pseudo-terminal that answers no queries,
@@ -265,8 +265,14 @@ fn colours_inside_tmux(name: &str, conf_text: &str) -> String {
     command.env("TERM", "xterm-256color");
     command.env_remove("TMUX");
     command.env_remove("COLORTERM");
-    let session = Session::spawn(command, 250, 30);
-    session.wait_for("the colour mode", |s| s.contents().contains("colours ("));
+    let mut session = Session::spawn(command, 250, 30);
+    session.wait_for("the first frame", |s| {
+        s.contents().contains(" colours; M says why")
+    });
+    session.send("M");
+    session.wait_for("the colour mode in the log", |s| {
+        s.contents().contains("colours: ")
+    });
     session.contents()
 }
 
@@ -281,12 +287,12 @@ fn inside_tmux_the_colours_are_what_tmux_knows_of_the_outer_terminal() {
         "set -g status off\nset -as terminal-features 'xterm*:RGB'\n",
     );
     assert!(
-        rgb.contains("truecolor colours (tmux says the terminal outside it has RGB"),
+        rgb.contains("colours: truecolor (tmux says the terminal outside it has RGB"),
         "{rgb}"
     );
     let plain = colours_inside_tmux("no-rgb", "set -g status off\n");
     assert!(
-        plain.contains("256 colours (tmux says the terminal outside it lacks RGB, so tmux shows at most its 256"),
+        plain.contains("colours: 256 (tmux says the terminal outside it lacks RGB, so tmux shows at most its 256"),
         "{plain}"
     );
 }

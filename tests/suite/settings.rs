@@ -178,3 +178,27 @@ fn the_camera_can_be_set_from_the_command_line_and_is_checked_as_a_scene_files()
         assert!(!out.exists());
     }
 }
+
+/// `--set bump.pattern=…` and `texture.image=…` are not numbers: one line says how to choose a
+/// pattern or image instead.
+#[test]
+fn a_pattern_or_image_given_to_set_says_how_to_choose_one() {
+    let run = bumpwork(&[
+        "render",
+        "plane-dimples",
+        "-o",
+        "x.png",
+        "--set",
+        "bump.pattern=stucco",
+    ]);
+    assert_user_error(&run, "bump = { pattern = \"stucco\" }");
+    let run = bumpwork(&[
+        "render",
+        "plane-dimples",
+        "-o",
+        "x.png",
+        "--set",
+        "texture.image=a.png",
+    ]);
+    assert_user_error(&run, "PHOTO.png");
+}

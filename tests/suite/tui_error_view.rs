@@ -31,7 +31,7 @@ fn error_view_psnr(app: &mut App, screen: &mut Screen) -> f64 {
 #[test]
 fn the_error_view_shows_the_psnr_and_finer_presets_raise_it() {
     let mut app = app("big-sphere-squares");
-    let mut screen = Screen::new(60, 20);
+    let mut screen = Screen::new(80, 20);
     while app.view_mode != ViewMode::Error {
         app.apply(Action::NextViewMode);
     }

@@ -191,7 +191,14 @@ fn auto_takes_the_terminals_answer_and_its_replies_never_reach_the_keys() {
     let mut session = answered_session(&["view", "plane-dimples"], plain);
     std::thread::sleep(Duration::from_millis(10));
     session.send("\x1b_Gi=32;ENOENT:late\x1b\\");
-    session.wait_for("blocks", status_contains("blocks (the terminal answered"));
+    session.wait_for("blocks", status_contains("blocks, "));
+    session.send("M");
+    session.wait_for("why, in the log", |s| {
+        s.contents()
+            .contains("picture: blocks (the terminal answered")
+    });
+    session.send("\x1b");
+    session.wait_for("the log closed", |s| !s.contents().contains("messages:"));
     session.wait_for("the bump as the file has it", status_contains("×1.00"));
     session.send("q");
     assert_eq!(session.exit_within(QUIT_DEADLINE), Some(0));

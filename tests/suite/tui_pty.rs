@@ -214,11 +214,28 @@ fn a_failed_reload_shows_the_whole_diagnostic_until_dismissed_or_fixed() {
     assert_eq!(session.exit_within(QUIT_DEADLINE), Some(0));
 }
 
-/// Quitting while an export runs cancels it, leaves no file, and says so on the normal screen.
+/// While an export runs the status line shows its progress; `q` first says what quitting would
+/// cancel, and a second `q` cancels it, leaves no file, and says so on the normal screen.
 #[test]
 fn quitting_during_an_export_says_it_was_cancelled() {
     let dir = tempfile::tempdir().unwrap();
     let mut session = exporting_in(dir.path());
+    session.wait_for("the export's progress", |screen| {
+        let status = screen.contents();
+        status
+            .lines()
+            .last()
+            .is_some_and(|l| l.contains("exporting") && l.contains('%'))
+    });
+    session.send("q");
+    session.wait_for(
+        "the warning",
+        status_contains("quitting cancels the export"),
+    );
+    assert!(
+        session.child.try_wait().unwrap().is_none(),
+        "one q quit during the export"
+    );
     session.send("q");
     assert_eq!(session.exit_within(QUIT_DEADLINE), Some(0));
     session.wait_for("the note on the normal screen", |screen| {

@@ -103,7 +103,7 @@ fn finished_export_message(app: &mut App) -> String {
         app.poll_export();
         std::thread::sleep(Duration::from_millis(10));
     }
-    match &app.message {
+    match app.message() {
         Message::Info(text) => text.clone(),
         other => panic!("{other:?}"),
     }
@@ -149,8 +149,8 @@ fn the_export_key_writes_the_live_view_in_the_background_and_from_makes_it_again
     app.apply(Action::AdjustParam(10.0));
     app.apply(Action::ScaleBump(2.0));
     app.apply(Action::Export);
-    let Message::Info(text) = &app.message else {
-        panic!("{:?}", app.message);
+    let Message::Info(text) = app.message() else {
+        panic!("{:?}", app.message());
     };
     assert!(text.starts_with("exporting "), "{text}");
     let text = finished_export_message(&mut app);
@@ -251,16 +251,16 @@ fn an_edited_pattern_file_reloads_and_a_broken_one_keeps_the_view_and_shows_wher
     let mut screen = Screen::new(40, 12);
     draw(&mut screen, &mut app);
     app.reload_if_changed();
-    assert_eq!(app.message, Message::None, "unchanged file reloaded");
+    assert_eq!(*app.message(), Message::None, "unchanged file reloaded");
 
     // The watcher reports asynchronously, after its debounce: poll until the message arrives.
     let wait_for = |app: &mut App, wanted: &dyn Fn(&Message) -> bool| {
         let start = std::time::Instant::now();
-        while !wanted(&app.message) {
+        while !wanted(app.message()) {
             assert!(
                 start.elapsed().as_secs() < 60,
                 "no reload: {:?}",
-                app.message
+                app.message()
             );
             std::thread::sleep(std::time::Duration::from_millis(20));
             app.reload_if_changed();
@@ -268,7 +268,7 @@ fn an_edited_pattern_file_reloads_and_a_broken_one_keeps_the_view_and_shows_wher
     };
     std::fs::write(&path, "height = u + )\n").unwrap();
     wait_for(&mut app, &|m| matches!(m, Message::Error(_)));
-    let Message::Error(error) = &app.message else {
+    let Message::Error(error) = app.message() else {
         unreachable!()
     };
     assert!(error.contains("live.pat:1:"), "{error}");
@@ -300,7 +300,7 @@ fn with_watching_off_an_edited_file_is_not_reloaded() {
         std::thread::sleep(std::time::Duration::from_millis(20));
         app.reload_if_changed();
     }
-    assert_eq!(app.message, Message::None);
+    assert_eq!(*app.message(), Message::None);
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
@@ -308,17 +308,17 @@ fn with_watching_off_an_edited_file_is_not_reloaded() {
 fn information_expires_and_errors_stay() {
     let mut app = app();
     let start = Instant::now();
-    app.message = Message::Info("reloaded".into());
+    app.tell(Message::Info("reloaded".into()));
     app.expire_message(start);
     app.expire_message(start + Duration::from_secs(2));
-    assert_eq!(app.message, Message::Info("reloaded".into()));
+    assert_eq!(*app.message(), Message::Info("reloaded".into()));
     app.expire_message(start + bumpwork::tui::INFO_LIFETIME + Duration::from_millis(1));
-    assert_eq!(app.message, Message::None);
+    assert_eq!(*app.message(), Message::None);
     assert!(app.dirty.text, "the status line is drawn again without it");
-    app.message = Message::Error("x.pat:1:1: expected an expression".into());
+    app.tell(Message::Error("x.pat:1:1: expected an expression".into()));
     app.expire_message(start + Duration::from_secs(10));
     app.expire_message(start + Duration::from_secs(100));
-    assert!(matches!(app.message, Message::Error(_)));
+    assert!(matches!(app.message(), Message::Error(_)));
 }
 
 /// The whole screen as text, a line a row.
@@ -329,27 +329,37 @@ fn screen_text(screen: &Screen, app: &App) -> String {
         .collect()
 }
 
+/// Presses `code` as a terminal sends it.
+fn press(app: &mut App, code: crossterm::event::KeyCode) {
+    app.key(&crossterm::event::KeyEvent::new(
+        code,
+        crossterm::event::KeyModifiers::NONE,
+    ));
+}
+
 #[test]
-fn at_80_by_24_every_key_of_the_help_can_be_scrolled_to() {
+fn at_80_by_24_the_help_shows_every_key_at_once_and_esc_closes_it() {
+    use crossterm::event::KeyCode;
     let mut app = app();
     let screen = Screen::new(80, 24);
-    app.apply(Action::ToggleHelp);
-    let descriptions: Vec<&str> = bumpwork::tui::keymap::help_lines()
-        .map(|b| b.description)
+    press(&mut app, KeyCode::Char('?'));
+    let text = screen_text(&screen, &app);
+    let missing: Vec<_> = bumpwork::tui::keymap::help_entries()
+        .filter(|(keys, words)| !text.contains(keys) || !text.contains(words))
         .collect();
-    let mut seen: std::collections::HashSet<&str> = std::collections::HashSet::new();
-    for _ in 0..=descriptions.len() {
-        let text = screen_text(&screen, &app);
-        seen.extend(descriptions.iter().copied().filter(|d| text.contains(d)));
-        // Down scrolls the help; the view behind it does not move.
-        let camera = app.camera();
-        app.apply(Action::Orbit(0.0, -10.0));
-        assert_eq!(app.camera(), camera, "the view orbited behind the help");
+    assert!(
+        missing.is_empty(),
+        "not shown at 80x24: {missing:?}\n{text}"
+    );
+    assert!(text.contains("keys (Esc closes)"), "{text}");
+    for needed in ["Esc", "q ", "C-z", "C-l", "drag", "wheel", "click"] {
+        assert!(text.contains(needed), "{needed} missing:\n{text}");
     }
-    let missing: Vec<_> = descriptions.iter().filter(|d| !seen.contains(*d)).collect();
-    assert!(missing.is_empty(), "never shown at 80x24: {missing:?}");
-    app.apply(Action::Back);
-    assert!(!app.help);
+    press(&mut app, KeyCode::Esc);
+    assert!(!app.is_open(bumpwork::tui::OverlayKind::Help));
+    assert!(!app.quit, "Esc only closes");
+    press(&mut app, KeyCode::Esc);
+    assert!(!app.quit, "Esc with nothing open does not quit");
 }
 
 #[test]
@@ -429,7 +439,7 @@ fn the_saved_scene_renders_what_the_export_key_exports() {
     app.apply(Action::ScaleBump(2.0));
     // An image put on by the keys: the texture and the bump go back past the patterns.
     app.apply(Action::PreviousTexture);
-    assert_eq!(app.message, Message::Info("now gravel".into()));
+    assert_eq!(*app.message(), Message::Info("now gravel".into()));
     app.apply(Action::NextObject);
     let image_bump = |app: &App| {
         matches!(
@@ -445,8 +455,8 @@ fn the_saved_scene_renders_what_the_export_key_exports() {
     }
     assert!(image_bump(&app), "the bump keys reach the images");
     app.apply(Action::SaveScene);
-    let Message::Info(text) = app.message.clone() else {
-        panic!("{:?}", app.message);
+    let Message::Info(text) = app.message().clone() else {
+        panic!("{:?}", app.message());
     };
     let saved = Path::new(text.strip_prefix("saved the view as ").unwrap()).to_path_buf();
     app.apply(Action::Export);
@@ -490,8 +500,8 @@ fn the_saved_scene_renders_what_the_export_key_exports() {
     );
     // A second save takes a new name.
     app.apply(Action::SaveScene);
-    let Message::Info(again) = app.message.clone() else {
-        panic!("{:?}", app.message);
+    let Message::Info(again) = app.message().clone() else {
+        panic!("{:?}", app.message());
     };
     assert_ne!(again, text);
     std::fs::remove_dir_all(&dir).unwrap();
