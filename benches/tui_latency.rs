@@ -10,7 +10,7 @@ use bumpwork::raster::Framebuffer;
 use bumpwork::term::{
     ColorChoice, ColorMode, EncodeOptions, FrameOptions, GlyphSet, Picture, encode, encode_frame,
 };
-use bumpwork::tui::{App, Screen, View, WorkbenchOptions, keymap, render_frame};
+use bumpwork::tui::{App, Screen, View, WorkbenchOptions, render_frame};
 use crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use glam::Vec3;
 use std::process::Command;
@@ -36,10 +36,7 @@ fn app_of(scene: &str) -> App {
 
 /// Presses `code` and draws: what the event loop does for one key.
 fn press_and_draw(app: &mut App, screen: &mut Screen, code: KeyCode, out: &mut Vec<u8>) -> usize {
-    let key = KeyEvent::new(code, KeyModifiers::NONE);
-    if let Some(action) = keymap::action_for(&key) {
-        app.apply(action);
-    }
+    app.key(&KeyEvent::new(code, KeyModifiers::NONE));
     out.clear();
     screen.draw(app, out).expect("writing to memory")
 }
@@ -192,6 +189,66 @@ fn shown_sub_pixels(bytes: &[u8], cols: usize, rows: usize) -> Vec<[u8; 3]> {
     pixels
 }
 
+/// Mean CIE76 colour difference (ΔE*ab, D65) between two pictures of 8-bit sRGB: about 2.3 is
+/// a difference just seen side by side.
+fn mean_delta_e(a: &[[u8; 3]], b: &[[u8; 3]]) -> f64 {
+    let total: f64 = a
+        .iter()
+        .zip(b)
+        .map(|(p, q)| {
+            let (p, q) = (lab(*p), lab(*q));
+            ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2) + (p[2] - q[2]).powi(2)).sqrt()
+        })
+        .sum();
+    total / a.len() as f64
+}
+
+/// `pixels` (`size`) averaged over 2×2 blocks in linear light: a dithered picture as the eye sees
+/// it from a little further off.
+fn blurred(pixels: &[[u8; 3]], (width, height): (usize, usize)) -> Vec<[u8; 3]> {
+    let linear = |v: u8| bumpwork::texture::srgb_to_linear(f32::from(v) / 255.0);
+    (0..(width / 2) * (height / 2))
+        .map(|i| {
+            let (x, y) = (2 * (i % (width / 2)), 2 * (i / (width / 2)));
+            let block =
+                [(0, 0), (1, 0), (0, 1), (1, 1)].map(|(dx, dy)| pixels[(y + dy) * width + x + dx]);
+            std::array::from_fn(|c| {
+                let mean = block.iter().map(|p| linear(p[c])).sum::<f32>() / 4.0;
+                bumpwork::raster::linear_to_srgb8(mean)
+            })
+        })
+        .collect()
+}
+
+/// PSNR and mean ΔE of `shown` against `reference`, sub-pixel by sub-pixel and over 2×2 blocks.
+fn fidelity(shown: &[[u8; 3]], reference: &[[u8; 3]], size: (usize, usize)) -> String {
+    let (a, b) = (blurred(shown, size), blurred(reference, size));
+    format!(
+        "{:.1} dB, ΔE {:.2}; 2×2 {:.1} dB, ΔE {:.2}",
+        psnr(shown, reference),
+        mean_delta_e(shown, reference),
+        psnr(&a, &b),
+        mean_delta_e(&a, &b)
+    )
+}
+
+/// CIELAB of an 8-bit sRGB colour, D65 white.
+fn lab(rgb: [u8; 3]) -> [f64; 3] {
+    let [r, g, b] = rgb.map(|v| f64::from(bumpwork::texture::srgb_to_linear(f32::from(v) / 255.0)));
+    let x = (0.4124 * r + 0.3576 * g + 0.1805 * b) / 0.95047;
+    let y = 0.2126 * r + 0.7152 * g + 0.0722 * b;
+    let z = (0.0193 * r + 0.1192 * g + 0.9505 * b) / 1.08883;
+    let f = |t: f64| {
+        if t > 216.0 / 24389.0 {
+            t.cbrt()
+        } else {
+            (24389.0 / 27.0 * t + 16.0) / 116.0
+        }
+    };
+    let (fx, fy, fz) = (f(x), f(y), f(z));
+    [116.0 * fy - 16.0, 500.0 * (fx - fy), 200.0 * (fy - fz)]
+}
+
 fn psnr(a: &[[u8; 3]], b: &[[u8; 3]]) -> f64 {
     let squared: f64 = a
         .iter()
@@ -225,6 +282,20 @@ fn reference_picture(app: &App, width: usize, height: usize) -> Vec<[u8; 3]> {
         .collect()
 }
 
+/// With `BUMPWORK_SAVE_PICTURES=DIR`, writes `pixels` (sRGB, `size`) as `DIR/NAME.png`, to look at.
+fn save_picture(pixels: &[[u8; 3]], size: (usize, usize), name: &str) {
+    let Some(dir) = std::env::var_os("BUMPWORK_SAVE_PICTURES") else {
+        return;
+    };
+    let mut framebuffer = Framebuffer::new(size.0 as u32, size.1 as u32, Vec3::ZERO);
+    for (pixel, rgb) in framebuffer.color_mut().iter_mut().zip(pixels) {
+        *pixel =
+            Vec3::from_array(rgb.map(|v| bumpwork::texture::srgb_to_linear(f32::from(v) / 255.0)));
+    }
+    let path = std::path::Path::new(&dir).join(format!("{name}.png"));
+    bumpwork::export::write_png(&framebuffer, &path).expect("writing the picture");
+}
+
 /// chafa's picture of the reference still in `colours` (its `--colors` name), read back.
 fn chafa_sub_pixels(
     reference: &[[u8; 3]],
@@ -245,7 +316,10 @@ fn chafa_sub_pixels(
     let output = output.ok().filter(|o| o.status.success())?;
     // chafa ends lines with LF alone; a terminal's line discipline adds the carriage return.
     let lines = String::from_utf8_lossy(&output.stdout).replace('\n', "\r\n");
-    Some(shown_sub_pixels(lines.as_bytes(), cols, rows))
+    let shown = shown_sub_pixels(lines.as_bytes(), cols, rows);
+    save_picture(&shown, size, &format!("chafa-{colours}"));
+    save_picture(reference, size, "reference");
+    Some(shown)
 }
 
 /// From a change to the settled picture: the first frame's and the settled picture's PSNR against
@@ -273,7 +347,7 @@ fn picture_quality_of(scene: &str) {
     ] {
         app.colors = mode;
         let mut settle_times = Vec::new();
-        let mut result = (0.0, 0.0, 0);
+        let mut result = (0.0, String::new(), 0);
         for _ in 0..5 {
             let mut screen = Screen::new(QUALITY_COLS, QUALITY_ROWS);
             let mut bytes = Vec::new();
@@ -285,16 +359,17 @@ fn picture_quality_of(scene: &str) {
                 screen.refine(&mut app, &mut bytes).unwrap();
             }
             settle_times.push(start.elapsed());
-            let settled = psnr(&shown_sub_pixels(&bytes, cols, rows), &reference);
-            result = (first, settled, bytes.len());
+            let shown = shown_sub_pixels(&bytes, cols, rows);
+            save_picture(&shown, size, &format!("{scene}-{mode:?}"));
+            result = (first, fidelity(&shown, &reference, size), bytes.len());
         }
         settle_times.sort();
         let chafa = match chafa_sub_pixels(&reference, size, chafa_name) {
-            Some(pixels) => format!("{:.1} dB", psnr(&pixels, &reference)),
+            Some(pixels) => fidelity(&pixels, &reference, size),
             None => "not run (apt-get install chafa)".into(),
         };
         println!(
-            "{:<10} first frame {:.1} dB, settled {:.1} dB in {:.0} ms (median of 5; {:.0}–{:.0}), {} B written; chafa --colors {chafa_name}: {chafa}",
+            "{:<10} first frame {:.1} dB, settled {} in {:.0} ms (median of 5; {:.0}–{:.0}), {} B written\n{:<10} chafa --colors {chafa_name}: {chafa}",
             format!("{mode:?}"),
             result.0,
             result.1,
@@ -302,6 +377,7 @@ fn picture_quality_of(scene: &str) {
             settle_times[0].as_secs_f64() * 1e3,
             settle_times[4].as_secs_f64() * 1e3,
             result.2,
+            "",
         );
     }
 }
