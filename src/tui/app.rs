@@ -73,6 +73,8 @@ pub struct App {
     quit_warned: bool,
     /// The scenes shown before, as they were left, by their place in `scenes`.
     kept: Vec<Option<KeptScene>>,
+    /// Until when the edited object's edges are drawn over the picture (after `o`).
+    marked_until: Option<Instant>,
     pub report: FrameReport,
     pub export_size: (u32, u32),
     pub export_samples: u32,
@@ -92,6 +94,9 @@ pub struct App {
 
 /// `material_controls::cycle_bump` or `cycle_texture`.
 type Cycle = fn(&mut Material, &Surface, i32, &mut ImageShelf) -> Result<String, String>;
+
+/// How long the object `o` moves to stays marked in the picture.
+const MARK_LIFETIME: Duration = Duration::from_millis(1500);
 
 /// How long an `Info` message stays in the status line.
 pub const INFO_LIFETIME: Duration = Duration::from_secs(5);
@@ -174,6 +179,7 @@ impl App {
             started: Instant::now(),
             quit_warned: false,
             kept: (0..options.scenes.len()).map(|_| None).collect(),
+            marked_until: None,
             report: FrameReport::default(),
             export_size: options.export_size,
             export_samples: options.export_samples,
@@ -294,6 +300,11 @@ impl App {
         }
     }
 
+    /// The object marked in the picture, while the mark lasts.
+    pub fn marked_object(&self) -> Option<usize> {
+        self.marked_until.map(|_| self.object)
+    }
+
     /// What the picker offers: the scenes given, then every built-in not among them.
     pub fn pickable_scenes(&self) -> Vec<String> {
         let builtins = crate::scene::PRESET_NAMES.iter().map(|n| n.to_string());
@@ -382,6 +393,7 @@ impl App {
             Action::NextObject => {
                 self.object = (self.object + 1) % self.prepared.objects.len();
                 self.param = 0;
+                self.marked_until = Some(Instant::now() + MARK_LIFETIME);
                 let name = self.object_name();
                 return self.tell(Message::Info(format!("editing object {name}")));
             }
@@ -745,6 +757,10 @@ impl App {
     /// Clears an `Info` message once it has been on show for `INFO_LIFETIME`; errors stay while
     /// they hold (a broken file is reported until it is mended).
     pub fn expire_message(&mut self, now: Instant) {
+        if self.marked_until.is_some_and(|until| now >= until) {
+            self.marked_until = None;
+            self.dirty.picture = true;
+        }
         if self.message_seen.0 != self.message {
             self.message_seen = (self.message.clone(), now);
         }

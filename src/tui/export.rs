@@ -165,6 +165,7 @@ fn export_picture(order: ExportOrder) -> Result<(), Error> {
         time: order.settings.time,
         quality: order.settings.quality,
         shadows: &shadows,
+        marked: None,
     };
     let mut framebuffer = empty_framebuffer();
     render_frame(&view, width, height, &mut framebuffer);

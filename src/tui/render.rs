@@ -22,6 +22,8 @@ pub struct View<'a> {
     pub quality: Quality,
     /// The shadow maps of the last pass, reused while they still hold.
     pub shadows: &'a ShadowCache,
+    /// The object whose edges are drawn over the picture, for a moment after `o` chose it.
+    pub marked: Option<usize>,
 }
 
 impl<'a> View<'a> {
@@ -33,6 +35,7 @@ impl<'a> View<'a> {
             time: app.clock.time(),
             quality: app.quality_in_use,
             shadows: &app.shadow_cache,
+            marked: app.marked_object(),
         }
     }
 }
@@ -85,7 +88,9 @@ fn render_frame_at(
         framebuffer,
     );
     if view.mode == ViewMode::Wireframe {
-        draw_wireframe(view.prepared, &target, framebuffer);
+        draw_wireframe(view.prepared, &target, None, framebuffer);
+    } else if let Some(object) = view.marked {
+        draw_wireframe(view.prepared, &target, Some(object), framebuffer);
     }
     rendered
 }

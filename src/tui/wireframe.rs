@@ -11,14 +11,19 @@ const HALF_WIDTH: f32 = 0.6;
 const DEPTH_TOLERANCE: f32 = 2e-3;
 
 /// Draws the edges of every triangle of `prepared` seen through `target` onto `framebuffer`,
-/// where the triangle is the visible surface.
+/// where the triangle is the visible surface; with `only`, those of that object alone.
 pub fn draw_wireframe(
     prepared: &PreparedScene,
     target: &RenderTarget,
+    only: Option<usize>,
     framebuffer: &mut Framebuffer,
 ) {
     let objects = frame_objects(prepared, target.camera);
-    for triangle in screen_triangles(&objects, target) {
+    let wanted = |t: &ScreenTriangle| only.is_none_or(|o| t.object as usize == o);
+    for triangle in screen_triangles(&objects, target)
+        .into_iter()
+        .filter(wanted)
+    {
         draw_triangle_edges(&triangle, framebuffer);
     }
 }

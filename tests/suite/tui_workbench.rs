@@ -171,16 +171,38 @@ fn the_status_line_says_what_each_key_did_and_the_log_keeps_it() {
     assert_eq!(session.exit_within(QUIT_DEADLINE), Some(0));
 }
 
-/// `o` names the object it moves to.
+/// The picture's cells as they look (glyph and the colours it shows), the status line left out.
+fn picture(screen: &vt100::Screen) -> Vec<(String, vt100::Color, vt100::Color)> {
+    let (rows, cols) = screen.size();
+    let unseen = vt100::Color::Default;
+    (0..rows.get() - 1)
+        .flat_map(|row| (0..cols.get()).map(move |col| (row, col)))
+        .filter_map(|(row, col)| screen.cell(row, col))
+        .map(|cell| match cell.contents() {
+            " " | "" => (" ".into(), unseen, cell.bgcolor()),
+            "█" => ("█".into(), cell.fgcolor(), unseen),
+            glyph => (glyph.into(), cell.fgcolor(), cell.bgcolor()),
+        })
+        .collect()
+}
+
+/// `o` names the object it moves to and draws its edges over the picture for a moment, then
+/// the picture is as it was.
 #[test]
-fn the_object_key_names_the_object() {
+fn the_object_key_names_the_object_and_marks_it_for_a_moment() {
     let args = ["view", "sphere-on-plane-dimples"];
-    let mut session = Session::bumpwork(&args, None, (160, 30), "sphere-on-plane-dimples");
+    let mut session = Session::bumpwork(&args, None, (220, 40), "sphere-on-plane-dimples");
+    session.wait_for("the picture to settle", settled);
+    let before = picture(session.screen.lock().unwrap().screen());
     session.send("o");
     session.wait_for("the object named", |s| {
         let status = s.contents();
         let last = status.lines().last().unwrap_or("").to_string();
-        last.contains("editing object") && (last.contains("sphere") || last.contains("plane"))
+        last.contains("editing object 2 sphere")
+    });
+    session.wait_for("its edges drawn", |s| picture(s) != before);
+    session.wait_for("the picture as it was", |s| {
+        picture(s) == before && settled(s)
     });
     session.send("q");
     assert_eq!(session.exit_within(QUIT_DEADLINE), Some(0));
