@@ -90,6 +90,14 @@ pub struct RenderArgs {
     /// from 1; without it, every object that has PARAM).
     #[arg(long = "set", value_name = "KEY=VALUE", value_parser = Override::parse)]
     set: Vec<Override>,
+    /// The bump on every object: a shipped pattern or image by name, a pattern file (.pat) or
+    /// an image file (grey, lighter is higher).
+    #[arg(long, value_name = "NAME|FILE")]
+    bump: Option<String>,
+    /// The texture on every object: a shipped colour pattern or image by name, a colour pattern
+    /// file or an image file.
+    #[arg(long, value_name = "NAME|FILE")]
+    texture: Option<String>,
     /// Where the camera is, X,Y,Z [default: the scene's].
     #[arg(long, value_name = "X,Y,Z", value_parser = parse_point, allow_hyphen_values = true)]
     eye: Option<[f64; 3]>,
@@ -136,6 +144,16 @@ pub fn run(args: RenderArgs) -> Result<(), Error> {
     render_start(&args, &start, &output, format, &interrupt)
 }
 
+impl RenderArgs {
+    /// `--bump` and `--texture`.
+    fn choice(&self) -> bumpwork::scene::MaterialChoice {
+        bumpwork::scene::MaterialChoice {
+            bump: self.bump.clone(),
+            texture: self.texture.clone(),
+        }
+    }
+}
+
 /// Renders `start` with the command line's options and settings to `output` (each frame of a
 /// sequence).
 fn render_start(
@@ -149,6 +167,7 @@ fn render_start(
     settings.quality =
         apply_to_quality(&args.set, settings.quality).map_err(Error::InvalidArgument)?;
     let mut scene = start.scene.clone();
+    args.choice().apply(&mut scene)?;
     apply_to_scene(&args.set, &mut scene).map_err(Error::InvalidArgument)?;
     scene.camera = camera_from_options(args, &scene.camera)?;
     let camera = scene.camera.clone();

@@ -45,6 +45,14 @@ pub struct ViewArgs {
     /// [OBJECT.]bump.params.PARAM; kept over reloads.
     #[arg(long = "set", value_name = "KEY=VALUE", value_parser = bumpwork::overrides::Override::parse)]
     set: Vec<bumpwork::overrides::Override>,
+    /// The bump on every object: a shipped pattern or image by name, a pattern file (.pat) or an
+    /// image file (grey, lighter is higher).
+    #[arg(long, value_name = "NAME|FILE")]
+    bump: Option<String>,
+    /// The texture on every object: a shipped colour pattern or image by name, a colour pattern
+    /// file or an image file.
+    #[arg(long, value_name = "NAME|FILE")]
+    texture: Option<String>,
     /// Samples per pixel of PNGs the export key writes.
     #[arg(long, default_value_t = 4,
           value_parser = clap::value_parser!(u32).range(1..=bumpwork::still::MAX_SAMPLES as i64))]
@@ -78,6 +86,10 @@ pub fn run(args: ViewArgs) -> Result<(), Error> {
         cell_size: args.cell_size,
         graphics: args.graphics.unwrap_or_default(),
         settings: args.set,
+        choice: bumpwork::scene::MaterialChoice {
+            bump: args.bump,
+            texture: args.texture,
+        },
     };
     bumpwork::tui::run(&options)
 }

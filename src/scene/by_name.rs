@@ -33,9 +33,6 @@ pub fn load_source(name: &str) -> Result<Scene, Error> {
     Ok(scene)
 }
 
-/// How much an image's grey (0..1) raises the stage's surfaces: as the shipped image scenes.
-const IMAGE_BUMP_STRENGTH: f32 = 30.0;
-
 /// The image file `name` on the stage scene, as every object's texture and bump.
 fn image_on_stage(name: &str) -> Result<Scene, Error> {
     let mut scene = super::resolve(PATTERN_STAGE)?;
@@ -46,7 +43,7 @@ fn image_on_stage(name: &str) -> Result<Scene, Error> {
         ..super::BindingFile::default()
     };
     let bump = super::BindingFile {
-        strength: Some(super::Finite(IMAGE_BUMP_STRENGTH)),
+        strength: Some(super::Finite(super::IMAGE_BUMP_STRENGTH)),
         ..texture.clone()
     };
     let mut cache = crate::texture::ImageCache::new(crate::memory_budget::budget_bytes());
@@ -54,9 +51,13 @@ fn image_on_stage(name: &str) -> Result<Scene, Error> {
     for object in &mut scene.objects {
         let place = |e: String| Error::Diagnostic(crate::diagnostic::sanitize(&e).into());
         let loaded = texture.load_texture(&object.surface, base, &mut cache);
-        object.material.texture = Some(loaded.map_err(place)?);
+        object.material.texture = Some(super::material_choice::recorded_texture(
+            loaded.map_err(place)?,
+        ));
         let loaded = bump.load_bump(&object.surface, base, &mut cache);
-        object.material.bump = Some(loaded.map_err(place)?);
+        object.material.bump = Some(super::material_choice::recorded_bump(
+            loaded.map_err(place)?,
+        ));
     }
     Ok(scene)
 }

@@ -7,6 +7,7 @@ pub mod dependencies;
 pub(crate) mod exact_arrays;
 mod file;
 mod material;
+mod material_choice;
 mod model_stage;
 mod presets;
 mod quality_table;
@@ -23,6 +24,7 @@ pub use material::{
     Bump, BumpSource, ImageHeight, ImageTexture, Material, NormalMapBump, PatternBinding,
     Placement, Texturing,
 };
+pub use material_choice::{IMAGE_BUMP_STRENGTH, MaterialChoice};
 pub use model_stage::ModelSource;
 pub use presets::{PRESET_NAMES, preset, preset_file};
 pub use quality_table::{KnobPlace, KnobSetting, QualityTable, written_table};

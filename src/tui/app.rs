@@ -24,7 +24,7 @@ use crate::overrides::{Override, apply_to_quality, apply_where_known};
 use crate::quality::Quality;
 use crate::raster::{FrameStats, Framebuffer, PreparedScene, Viewport};
 use crate::scene::Camera;
-use crate::scene::{Material, Scene};
+use crate::scene::{Material, MaterialChoice, Scene};
 use crate::shadow::ShadowCache;
 use crate::surface::Surface;
 use crate::term::graphics::Protocol;
@@ -61,6 +61,8 @@ pub struct App {
     pub cell_size: Option<(u32, u32)>,
     /// `--set` settings, applied at every load.
     settings: Vec<Override>,
+    /// `--bump` and `--texture`, applied at every load before the settings.
+    choice: MaterialChoice,
     pub clock: Clock,
     /// The boxes over the picture, the topmost last; it takes keys first.
     overlays: Vec<Box<dyn Overlay>>,
@@ -145,9 +147,9 @@ impl App {
         if options.scenes.is_empty() {
             return Err(Error::InvalidArgument("no scene to show".into()));
         }
-        check_settings(&options.scenes, &options.settings)?;
+        check_settings(&options.scenes, &options.settings, &options.choice)?;
         let (mut scene, reloader) = open_watched(&options.scenes[0], options.watch)?;
-        apply_settings(&options.settings, &mut scene);
+        dress(&options.settings, &options.choice, &mut scene)?;
         let quality = options.quality;
         let orbit = Orbit::from_camera(&scene.camera);
         let (prepared, quality_in_use) = prepare(scene, quality, &options.settings)?;
@@ -171,6 +173,7 @@ impl App {
             colors,
             cell_size: options.cell_size,
             settings: options.settings.clone(),
+            choice: options.choice.clone(),
             clock: Clock::new(options.fps, start_time),
             overlays: Vec::new(),
             quit: false,
@@ -547,7 +550,7 @@ impl App {
     /// Scene `index` as its source gives it, with the `--set` settings.
     fn open_fresh(&self, index: usize) -> Result<KeptScene, Error> {
         let (mut scene, reloader) = open_watched(&self.scenes[index], self.watch)?;
-        apply_settings(&self.settings, &mut scene);
+        dress(&self.settings, &self.choice, &mut scene)?;
         let (prepared, quality_in_use) = prepare(scene, self.quality, &self.settings)?;
         Ok(KeptScene {
             images: shelf_for(&prepared.scene, &self.scenes[index]),
@@ -615,7 +618,10 @@ impl App {
             match outcome {
                 ReloadOutcome::Reloaded(reload) => {
                     let mut reload = reload;
-                    apply_settings(&self.settings, &mut reload.scene);
+                    if let Err(e) = dress(&self.settings, &self.choice, &mut reload.scene) {
+                        self.report(&e);
+                        continue;
+                    }
                     let (scene, kept) = reload.keep_live_params_telling(&self.prepared.scene);
                     match prepare(scene, self.quality, &self.settings) {
                         Ok((prepared, quality)) => {
@@ -665,7 +671,7 @@ impl App {
     /// The current scene as its source gives it, with the `--set` settings.
     fn scene_as_saved(&self) -> Result<Scene, Error> {
         let mut scene = crate::scene::load_source(&self.scenes[self.scene_index])?;
-        apply_settings(&self.settings, &mut scene);
+        dress(&self.settings, &self.choice, &mut scene)?;
         Ok(scene)
     }
 
@@ -845,11 +851,16 @@ fn reloaded_message(kept: &[crate::watch::KeptValue]) -> String {
 
 /// Every scene opens, and every `--set` is one the workbench takes: quality knobs, and scene
 /// settings each taken by at least one of the scenes.
-fn check_settings(scenes: &[String], settings: &[Override]) -> Result<(), Error> {
+fn check_settings(
+    scenes: &[String],
+    settings: &[Override],
+    choice: &MaterialChoice,
+) -> Result<(), Error> {
     apply_to_quality(settings, Quality::interactive()).map_err(Error::InvalidArgument)?;
     let mut taken = vec![false; settings.len()];
     for name in scenes {
         let mut scene = crate::scene::load_source(name)?;
+        choice.apply(&mut scene)?;
         (Quality::interactive().with_settings(&scene.quality)).map_err(Error::Diagnostic)?;
         let here = apply_where_known(settings, &mut scene).map_err(Error::InvalidArgument)?;
         taken.iter_mut().zip(here).for_each(|(t, h)| *t |= h);
@@ -864,9 +875,12 @@ fn check_settings(scenes: &[String], settings: &[Override]) -> Result<(), Error>
     }
 }
 
-/// The scene settings `scene` has places for (checked at start: the values are valid).
-fn apply_settings(settings: &[Override], scene: &mut Scene) {
+/// `--bump` and `--texture`, then the scene settings `scene` has places for (checked at start:
+/// the values are valid).
+fn dress(settings: &[Override], choice: &MaterialChoice, scene: &mut Scene) -> Result<(), Error> {
+    choice.apply(scene)?;
     let _ = apply_where_known(settings, scene);
+    Ok(())
 }
 
 /// The first object with a bump map, else the first: what the material keys start on.

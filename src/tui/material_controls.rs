@@ -76,10 +76,6 @@ fn bump_pattern_mut(material: &mut Material) -> Option<&mut PatternBinding> {
     }
 }
 
-/// Bump strength for an image put on in place of a pattern: image heights run 0..1, so they
-/// need a factor near the shipped image scenes' to show.
-const IMAGE_BUMP_STRENGTH: f32 = 30.0;
-
 /// Puts the next or previous shipped bump pattern or image on the material (on `surface`),
 /// keeping a pattern's placement and the sign; the strength is kept unless the kind changes.
 /// Returns the new bump's name.
@@ -110,7 +106,7 @@ pub fn cycle_bump(
     let is_image = matches!(source, BumpSource::Image(_));
     let strength = match (&material.bump, was_image == is_image) {
         (Some(bump), true) => bump.strength,
-        _ if is_image => IMAGE_BUMP_STRENGTH,
+        _ if is_image => crate::scene::IMAGE_BUMP_STRENGTH,
         _ => 1.0,
     };
     let invert = material.bump.as_ref().is_some_and(|b| b.invert);
@@ -317,7 +313,7 @@ mod tests {
             match &bump.source {
                 BumpSource::Image(image) => {
                     assert!(image.chosen_live);
-                    assert_eq!(bump.strength, IMAGE_BUMP_STRENGTH);
+                    assert_eq!(bump.strength, crate::scene::IMAGE_BUMP_STRENGTH);
                 }
                 BumpSource::Pattern(_) => assert_eq!(bump.strength, 1.0),
                 BumpSource::NormalMap(_) => panic!("the shelf cycles patterns and images"),

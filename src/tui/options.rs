@@ -2,6 +2,7 @@
 
 use super::quality::QualityPreset;
 use crate::overrides::Override;
+use crate::scene::MaterialChoice;
 use crate::term::graphics::GraphicsChoice;
 use crate::term::{ColorChoice, GlyphSet};
 
@@ -28,6 +29,8 @@ pub struct WorkbenchOptions {
     pub graphics: GraphicsChoice,
     /// `--set` scene settings, applied to every scene shown that has them, at every load.
     pub settings: Vec<Override>,
+    /// `--bump` and `--texture`, put on every object of every scene shown, at every load.
+    pub choice: MaterialChoice,
 }
 
 impl Default for WorkbenchOptions {
@@ -48,6 +51,7 @@ impl Default for WorkbenchOptions {
             cell_size: None,
             graphics: GraphicsChoice::Auto,
             settings: Vec::new(),
+            choice: MaterialChoice::default(),
         }
     }
 }

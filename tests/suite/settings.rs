@@ -202,3 +202,60 @@ fn a_pattern_or_image_given_to_set_says_how_to_choose_one() {
     ]);
     assert_user_error(&run, "PHOTO.png");
 }
+
+/// `--bump` and `--texture` put a shipped pattern or image, or a file, on every object; the
+/// still's recipe keeps them, so `render --from` makes the same picture; a wrong kind or an
+/// unknown name is one line and no file.
+#[test]
+fn bump_and_texture_choose_a_pattern_or_image_and_the_recipe_keeps_them() {
+    let dir = temp_dir("bump-texture");
+    let still = dir.join("chosen.png");
+    let plain = dir.join("plain.png");
+    let again = dir.join("again.png");
+    let path = |p: &std::path::Path| p.to_str().unwrap().to_string();
+    let render = |extra: &[&str], out: &str| {
+        let mut args = vec!["render", "plane-dimples", "--size=64x48", "-o", out];
+        args.extend(extra);
+        let run = bumpwork(&args);
+        assert!(run.status.success(), "{}", stderr(&run));
+        decode_png(std::path::Path::new(out)).2
+    };
+    let chosen = render(&["--bump", "gravel", "--texture", "chelsea"], &path(&still));
+    assert_ne!(
+        chosen,
+        render(&[], &path(&plain)),
+        "the choice changed nothing"
+    );
+    let run = bumpwork(&["render", "--from", &path(&still), "-o", &path(&again)]);
+    assert!(run.status.success(), "{}", stderr(&run));
+    assert_eq!(decode_png(&again).2, chosen, "--from lost the choice");
+    let refused = dir.join("refused.png");
+    for (option, name, says) in [
+        (
+            "--texture",
+            "stucco",
+            "--texture stucco: a height or slope pattern is a bump",
+        ),
+        (
+            "--bump",
+            "checks",
+            "--bump checks: a colour pattern is a texture",
+        ),
+        (
+            "--bump",
+            "no-such-thing",
+            "--bump no-such-thing: expected a shipped pattern",
+        ),
+    ] {
+        let run = bumpwork(&[
+            "render",
+            "plane-dimples",
+            "-o",
+            &path(&refused),
+            option,
+            name,
+        ]);
+        assert_user_error(&run, says);
+        assert!(!refused.exists());
+    }
+}

@@ -280,3 +280,22 @@ fn an_image_is_shown_and_follows_its_file() {
     session.send("q");
     assert_eq!(session.exit_within(QUIT_DEADLINE), Some(0));
 }
+
+/// `view --bump NAME --texture NAME` shows them on the scene.
+#[test]
+fn the_workbench_takes_a_bump_and_a_texture_by_name() {
+    let args = [
+        "view",
+        "plane-dimples",
+        "--bump",
+        "stucco",
+        "--texture",
+        "chelsea",
+    ];
+    let mut session = Session::bumpwork(&args, None, (200, 30), "plane-dimples");
+    session.wait_for("the choice", |s| {
+        status_contains("stucco ×1.00")(s) && status_contains("tex chelsea")(s)
+    });
+    session.send("q");
+    assert_eq!(session.exit_within(QUIT_DEADLINE), Some(0));
+}
