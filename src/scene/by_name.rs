@@ -38,27 +38,9 @@ fn image_on_stage(name: &str) -> Result<Scene, Error> {
     let mut scene = super::resolve(PATTERN_STAGE)?;
     let file_name = Path::new(name).file_name().map(|n| n.to_string_lossy());
     scene.name = file_name.map_or_else(|| name.to_string(), |n| n.into_owned());
-    let texture = super::BindingFile {
-        image: Some(name.to_string()),
-        ..super::BindingFile::default()
-    };
-    let bump = super::BindingFile {
-        strength: Some(super::Finite(super::IMAGE_BUMP_STRENGTH)),
-        ..texture.clone()
-    };
-    let mut cache = crate::texture::ImageCache::new(crate::memory_budget::budget_bytes());
-    let base = Path::new(".");
-    for object in &mut scene.objects {
-        let place = |e: String| Error::Diagnostic(crate::diagnostic::sanitize(&e).into());
-        let loaded = texture.load_texture(&object.surface, base, &mut cache);
-        object.material.texture = Some(super::material_choice::recorded_texture(
-            loaded.map_err(place)?,
-        ));
-        let loaded = bump.load_bump(&object.surface, base, &mut cache);
-        object.material.bump = Some(super::material_choice::recorded_bump(
-            loaded.map_err(place)?,
-        ));
-    }
+    let place = |e: String| Error::Diagnostic(crate::diagnostic::sanitize(&e).into());
+    super::material_choice::put_texture(&mut scene, name).map_err(place)?;
+    super::material_choice::put_bump(&mut scene, name).map_err(place)?;
     Ok(scene)
 }
 

@@ -57,7 +57,8 @@ fn pattern(name: &str) -> Result<Pattern, String> {
     super::load_pattern(name, Path::new("."))
 }
 
-fn put_bump(scene: &mut Scene, name: &str) -> Result<(), String> {
+/// `name` (a shipped pattern or image, or a file) as the bump of every object of `scene`.
+pub(super) fn put_bump(scene: &mut Scene, name: &str) -> Result<(), String> {
     let mut cache = ImageCache::new(crate::memory_budget::budget_bytes());
     if is_image(name) {
         let binding = BindingFile {
@@ -93,7 +94,8 @@ fn put_bump(scene: &mut Scene, name: &str) -> Result<(), String> {
     Ok(())
 }
 
-fn put_texture(scene: &mut Scene, name: &str) -> Result<(), String> {
+/// `name` (a shipped colour pattern or image, or a file) as the texture of every object.
+pub(super) fn put_texture(scene: &mut Scene, name: &str) -> Result<(), String> {
     let mut cache = ImageCache::new(crate::memory_budget::budget_bytes());
     if is_image(name) {
         let binding = BindingFile {
@@ -117,7 +119,7 @@ fn put_texture(scene: &mut Scene, name: &str) -> Result<(), String> {
 }
 
 /// An image bump marked as put on by name, so a still's recipe records it.
-pub(super) fn recorded_bump(mut bump: Bump) -> Bump {
+fn recorded_bump(mut bump: Bump) -> Bump {
     if let BumpSource::Image(image) = &mut bump.source {
         image.chosen_live = true;
     }
@@ -125,7 +127,7 @@ pub(super) fn recorded_bump(mut bump: Bump) -> Bump {
 }
 
 /// An image texture marked as put on by name, so a still's recipe records it.
-pub(super) fn recorded_texture(mut texture: Texturing) -> Texturing {
+fn recorded_texture(mut texture: Texturing) -> Texturing {
     if let Texturing::Image(image) = &mut texture {
         image.chosen_live = true;
     }

@@ -183,24 +183,13 @@ fn the_camera_can_be_set_from_the_command_line_and_is_checked_as_a_scene_files()
 /// pattern or image instead.
 #[test]
 fn a_pattern_or_image_given_to_set_says_how_to_choose_one() {
-    let run = bumpwork(&[
-        "render",
-        "plane-dimples",
-        "-o",
-        "x.png",
-        "--set",
-        "bump.pattern=stucco",
-    ]);
-    assert_user_error(&run, "bump = { pattern = \"stucco\" }");
-    let run = bumpwork(&[
-        "render",
-        "plane-dimples",
-        "-o",
-        "x.png",
-        "--set",
-        "texture.image=a.png",
-    ]);
-    assert_user_error(&run, "PHOTO.png");
+    for (setting, says) in [
+        ("bump.pattern=stucco", "bump = { pattern = \"stucco\" }"),
+        ("texture.image=a.png", "PHOTO.png"),
+    ] {
+        let run = bumpwork(&["render", "plane-dimples", "-o", "x.png", "--set", setting]);
+        assert_user_error(&run, says);
+    }
 }
 
 /// `--bump` and `--texture` put a shipped pattern or image, or a file, on every object; the

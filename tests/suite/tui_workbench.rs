@@ -171,17 +171,21 @@ fn the_status_line_says_what_each_key_did_and_the_log_keeps_it() {
     assert_eq!(session.exit_within(QUIT_DEADLINE), Some(0));
 }
 
-/// The picture's cells as they look (glyph and the colours it shows), the status line left out.
-fn picture(screen: &vt100::Screen) -> Vec<(String, vt100::Color, vt100::Color)> {
+/// The picture as it looks: each cell's upper and lower colour (half blocks, spaces and full
+/// blocks, however the writer chose to draw a cell), the status line left out.
+fn picture(screen: &vt100::Screen) -> Vec<(vt100::Color, vt100::Color)> {
     let (rows, cols) = screen.size();
-    let unseen = vt100::Color::Default;
     (0..rows.get() - 1)
         .flat_map(|row| (0..cols.get()).map(move |col| (row, col)))
         .filter_map(|(row, col)| screen.cell(row, col))
-        .map(|cell| match cell.contents() {
-            " " | "" => (" ".into(), unseen, cell.bgcolor()),
-            "█" => ("█".into(), cell.fgcolor(), unseen),
-            glyph => (glyph.into(), cell.fgcolor(), cell.bgcolor()),
+        .map(|cell| {
+            let (fg, bg) = (cell.fgcolor(), cell.bgcolor());
+            match cell.contents() {
+                "▀" => (fg, bg),
+                "▄" => (bg, fg),
+                "█" => (fg, fg),
+                _ => (bg, bg),
+            }
         })
         .collect()
 }
