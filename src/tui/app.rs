@@ -36,12 +36,12 @@ use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 pub struct App {
-    pub scenes: Vec<String>,
-    pub scene_index: usize,
+    pub(super) scenes: Vec<String>,
+    pub(super) scene_index: usize,
     pub prepared: PreparedScene,
-    pub orbit: Orbit,
+    pub(super) orbit: Orbit,
     /// The object the material keys edit, and its selected bump parameter.
-    pub object: usize,
+    pub(super) object: usize,
     pub param: usize,
     pub view_mode: ViewMode,
     /// The preset `Q` cycles.
@@ -50,20 +50,20 @@ pub struct App {
     /// ones over it.
     pub quality_in_use: Quality,
     /// The shadow maps of the last frame, drawn again when the view or the lights change.
-    pub shadow_cache: ShadowCache,
-    pub glyphs: GlyphSet,
+    pub(super) shadow_cache: ShadowCache,
+    pub(super) glyphs: GlyphSet,
     /// The pixel protocol the picture is sent in; `None` draws it in `glyphs`.
     pub graphics: Option<Protocol>,
     /// The protocols the terminal speaks, which `g` cycles through after the glyph sets.
-    pub graphics_supported: Vec<Protocol>,
+    pub(super) graphics_supported: Vec<Protocol>,
     pub colors: ColorMode,
     /// `--cell-size`: a cell's pixels, for terminals that do not report them.
-    pub cell_size: Option<(u32, u32)>,
+    pub(super) cell_size: Option<(u32, u32)>,
     /// `--set` settings, applied at every load.
     settings: Vec<Override>,
     /// `--bump` and `--texture`, applied at every load before the settings.
     choice: MaterialChoice,
-    pub clock: Clock,
+    pub(super) clock: Clock,
     /// The boxes over the picture, the topmost last; it takes keys first.
     overlays: Vec<Box<dyn Overlay>>,
     pub quit: bool,
