@@ -1,20 +1,18 @@
 //! The workbench in a real terminal emulator (tmux) on a pattern file whose name, and then whose
 //! content and error message, hold escape sequences: the screen shows them as visible escapes,
 //! and none reaches the terminal (the pane's title is not set, the screen is not cleared, the
-//! character set is not switched). Skips, saying why, where tmux is missing.
+//! character set is not switched). Skips, saying why, where tmux is require.
 
 #![cfg(unix)]
 
-use crate::tmux_support::{Tmux, missing};
+use crate::tmux_support::{Tmux, require};
 
 const TITLE: &str = "pwned";
 
 #[test]
+#[ignore = "needs tmux; bash .ci/run installs it and runs the ignored tests"]
 fn escapes_from_files_reach_the_screen_only_as_text() {
-    if let Some(reason) = missing(&["tmux"]) {
-        println!("skipping: {reason}");
-        return;
-    }
+    require(&["tmux"]);
     let dir = std::env::temp_dir().join(format!("bumpwork-hostile-tui-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();

@@ -2,11 +2,11 @@
 //! VT340 (sixel), each screenshot with xwd every second until the picture has settled; the
 //! picture found on the screen is compared with a still of the same view. tmux without
 //! passthrough gets blocks and says why; inside tmux the colours are what tmux says. Skipped,
-//! with the reason printed, where the programs are missing (`.ci/run` installs them).
+//! with the reason printed, where the programs are require (`.ci/run` installs them).
 
 use crate::graphics_support::psnr;
 use crate::pty_support::Session;
-use crate::tmux_support::{Tmux, missing};
+use crate::tmux_support::{Tmux, require};
 use portable_pty::CommandBuilder;
 use std::path::Path;
 use std::process::Command;
@@ -164,12 +164,9 @@ fn save_if_asked(shot: &Shot, name: &str) {
 }
 
 /// The workbench in the terminal `command` starts (it names the binary with `{bumpwork}`),
-/// when `tools` are there: its picture against the still, at least `bound` dB once settled.
+/// which needs `tools`: its picture against the still, at least `bound` dB once settled.
 fn shows_the_picture(name: &str, tools: &[&str], command: &str, bound: f64) {
-    if let Some(reason) = missing(tools) {
-        eprintln!("skipped: {reason}");
-        return;
-    }
+    require(tools);
     let dir = tempfile::tempdir().unwrap();
     let command = command.replace("{bumpwork}", env!("CARGO_BIN_EXE_bumpwork"));
     let still = std::cell::OnceCell::new();
@@ -184,6 +181,7 @@ fn shows_the_picture(name: &str, tools: &[&str], command: &str, bound: f64) {
 }
 
 #[test]
+#[ignore = "needs a real terminal under Xvfb (kitty, xterm, xwd); bash .ci/run installs them and runs the ignored tests"]
 fn kitty_shows_the_picture_in_its_own_pixels() {
     let kitty = format!(
         "kitty --config NONE -o font_size=10 -o remember_window_size=no \
@@ -195,6 +193,7 @@ fn kitty_shows_the_picture_in_its_own_pixels() {
 }
 
 #[test]
+#[ignore = "needs a real terminal under Xvfb (kitty, xterm, xwd); bash .ci/run installs them and runs the ignored tests"]
 fn xterm_as_a_vt340_shows_the_picture_in_sixels() {
     let xterm = format!(
         "xterm -ti vt340 -xrm 'XTerm*numColorRegisters: 256' -geometry {COLS}x{ROWS}+0+0 \
@@ -204,6 +203,7 @@ fn xterm_as_a_vt340_shows_the_picture_in_sixels() {
 }
 
 #[test]
+#[ignore = "needs a real terminal under Xvfb (kitty, xterm, xwd); bash .ci/run installs them and runs the ignored tests"]
 fn kitty_through_tmux_with_passthrough_shows_the_picture_in_pixels() {
     let dir = tempfile::tempdir().unwrap();
     let conf = dir.path().join("tmux.conf");
@@ -233,11 +233,9 @@ impl Drop for TmuxServer {
 }
 
 #[test]
+#[ignore = "needs tmux; bash .ci/run installs it and runs the ignored tests"]
 fn tmux_without_passthrough_gets_blocks_and_says_why() {
-    if let Some(reason) = missing(&["tmux"]) {
-        eprintln!("skipped: {reason}");
-        return;
-    }
+    require(&["tmux"]);
     let command = format!("{} view {SCENE}", env!("CARGO_BIN_EXE_bumpwork"));
     let tmux = Tmux::start("graphics", 160, 30, &command);
     tmux.run(&["set-option", "-g", "allow-passthrough", "off"]);
@@ -277,11 +275,9 @@ fn colours_inside_tmux(name: &str, conf_text: &str) -> String {
 }
 
 #[test]
+#[ignore = "needs tmux; bash .ci/run installs it and runs the ignored tests"]
 fn inside_tmux_the_colours_are_what_tmux_knows_of_the_outer_terminal() {
-    if let Some(reason) = missing(&["tmux"]) {
-        eprintln!("skipped: {reason}");
-        return;
-    }
+    require(&["tmux"]);
     let rgb = colours_inside_tmux(
         "rgb",
         "set -g status off\nset -as terminal-features 'xterm*:RGB'\n",

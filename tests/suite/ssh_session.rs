@@ -13,7 +13,7 @@
 #![cfg(unix)]
 
 use crate::test_dir::TestDir;
-use crate::tmux_support::{DEADLINE, Tmux, eventually, missing};
+use crate::tmux_support::{DEADLINE, Tmux, eventually, require};
 use std::net::{Ipv4Addr, TcpListener, TcpStream};
 use std::path::Path;
 use std::process::{Child, Command, Stdio};
@@ -162,11 +162,9 @@ fn session(name: &str, remote: impl Fn(&Path) -> String) {
 
 /// `ssh host bumpwork`: the workbench leads the remote session, so the hang-up is its own.
 #[test]
+#[ignore = "needs sshd, ssh and tmux; bash .ci/run installs them and runs the ignored tests"]
 fn killing_the_ssh_client_hangs_up_the_remote_workbench() {
-    if let Some(reason) = missing(&[SSHD, "ssh", "ssh-keygen", "tmux"]) {
-        println!("skipping: {reason}");
-        return;
-    }
+    require(&[SSHD, "ssh", "ssh-keygen", "tmux"]);
     session("exec", |binary| {
         format!(
             "exec {} view plane-dimples sphere-on-plane-dimples --no-watch",
@@ -179,11 +177,9 @@ fn killing_the_ssh_client_hangs_up_the_remote_workbench() {
 /// status): no SIGHUP reaches the workbench, only a terminal that is gone. It must notice that,
 /// and end as a hang-up would, with status 129.
 #[test]
+#[ignore = "needs sshd, ssh and tmux; bash .ci/run installs them and runs the ignored tests"]
 fn a_vanished_terminal_ends_the_workbench_without_a_hang_up_signal() {
-    if let Some(reason) = missing(&[SSHD, "ssh", "ssh-keygen", "tmux"]) {
-        println!("skipping: {reason}");
-        return;
-    }
+    require(&[SSHD, "ssh", "ssh-keygen", "tmux"]);
     let status_file =
         std::env::temp_dir().join(format!("bumpwork-ssh-status-{}", std::process::id()));
     let _ = std::fs::remove_file(&status_file);

@@ -13,18 +13,19 @@ pub struct Tmux {
     socket: String,
 }
 
-/// `Some(reason)` when a tool the test needs is missing, for a printed skip.
-pub fn missing(tools: &[&str]) -> Option<String> {
-    tools
-        .iter()
-        .find(|tool| {
-            let found = Command::new("sh")
-                .args(["-c", &format!("command -v {tool}")])
-                .output()
-                .is_ok_and(|o| o.status.success());
-            !found && !std::path::Path::new(tool).exists()
-        })
-        .map(|tool| format!("{tool} is not installed"))
+/// Fails the test, naming the tool, unless every one of `tools` is installed. Tests that call
+/// it are `#[ignore]`d with the reason; `bash .ci/run` installs the tools and runs them.
+pub fn require(tools: &[&str]) {
+    let missing = tools.iter().find(|tool| {
+        let found = Command::new("sh")
+            .args(["-c", &format!("command -v {tool}")])
+            .output()
+            .is_ok_and(|o| o.status.success());
+        !found && !std::path::Path::new(tool).exists()
+    });
+    if let Some(tool) = missing {
+        panic!("{tool} is not installed (bash .ci/run installs what these tests need)");
+    }
 }
 
 impl Tmux {
