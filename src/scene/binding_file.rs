@@ -119,6 +119,14 @@ pub enum FilterFile {
 }
 
 impl BindingFile {
+    /// Image `name` at the default placement, as a scene file's `image = "NAME"` alone.
+    pub fn image(name: &str) -> BindingFile {
+        BindingFile {
+            image: Some(name.to_string()),
+            ..BindingFile::default()
+        }
+    }
+
     pub fn load_bump(
         &self,
         surface: &Surface,

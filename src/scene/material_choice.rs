@@ -62,9 +62,8 @@ pub(super) fn put_bump(scene: &mut Scene, name: &str) -> Result<(), String> {
     let mut cache = ImageCache::new(crate::memory_budget::budget_bytes());
     if is_image(name) {
         let binding = BindingFile {
-            image: Some(name.to_string()),
             strength: Some(Finite(IMAGE_BUMP_STRENGTH)),
-            ..BindingFile::default()
+            ..BindingFile::image(name)
         };
         for object in &mut scene.objects {
             let bump = binding.load_bump(&object.surface, Path::new("."), &mut cache)?;
@@ -98,10 +97,7 @@ pub(super) fn put_bump(scene: &mut Scene, name: &str) -> Result<(), String> {
 pub(super) fn put_texture(scene: &mut Scene, name: &str) -> Result<(), String> {
     let mut cache = ImageCache::new(crate::memory_budget::budget_bytes());
     if is_image(name) {
-        let binding = BindingFile {
-            image: Some(name.to_string()),
-            ..BindingFile::default()
-        };
+        let binding = BindingFile::image(name);
         for object in &mut scene.objects {
             let texture = binding.load_texture(&object.surface, Path::new("."), &mut cache)?;
             object.material.texture = Some(recorded_texture(texture));

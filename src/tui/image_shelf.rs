@@ -43,7 +43,7 @@ impl ImageShelf {
 
     /// Image `name` as a colour texture on `surface`.
     pub fn texture(&mut self, name: &str, surface: &Surface) -> Result<ImageTexture, String> {
-        match placed(name).load_texture(surface, &self.base, &mut self.cache)? {
+        match BindingFile::image(name).load_texture(surface, &self.base, &mut self.cache)? {
             Texturing::Image(image) => Ok(ImageTexture {
                 chosen_live: true,
                 ..image
@@ -54,7 +54,7 @@ impl ImageShelf {
 
     /// Image `name` as a height map on `surface` (grey, lighter is higher).
     pub fn height(&mut self, name: &str, surface: &Surface) -> Result<ImageHeight, String> {
-        let bump = placed(name).load_bump(surface, &self.base, &mut self.cache)?;
+        let bump = BindingFile::image(name).load_bump(surface, &self.base, &mut self.cache)?;
         match bump.source {
             BumpSource::Image(image) => Ok(ImageHeight {
                 chosen_live: true,
@@ -64,13 +64,5 @@ impl ImageShelf {
                 unreachable!("an image binding loads an image")
             }
         }
-    }
-}
-
-/// `name` with the default placement, as a scene file's `image = "name"` alone.
-fn placed(name: &str) -> BindingFile {
-    BindingFile {
-        image: Some(name.to_string()),
-        ..BindingFile::default()
     }
 }

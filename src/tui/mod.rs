@@ -31,6 +31,7 @@ mod refinement;
 mod render;
 mod resample;
 mod scene_picker;
+mod scene_setup;
 mod screen;
 mod status;
 mod view_mode;
