@@ -7,6 +7,7 @@
 
 use bumpwork::measure::Timing;
 use bumpwork::raster::Framebuffer;
+use bumpwork::term::cielab::{chroma_and_hue, delta_e};
 use bumpwork::term::{
     ColorChoice, ColorMode, EncodeOptions, FrameOptions, GlyphSet, Picture, encode, encode_frame,
 };
@@ -192,14 +193,7 @@ fn shown_sub_pixels(bytes: &[u8], cols: usize, rows: usize) -> Vec<[u8; 3]> {
 /// Mean CIE76 colour difference (ΔE*ab, D65) between two pictures of 8-bit sRGB: about 2.3 is
 /// a difference just seen side by side.
 fn mean_delta_e(a: &[[u8; 3]], b: &[[u8; 3]]) -> f64 {
-    let total: f64 = a
-        .iter()
-        .zip(b)
-        .map(|(p, q)| {
-            let (p, q) = (lab(*p), lab(*q));
-            ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2) + (p[2] - q[2]).powi(2)).sqrt()
-        })
-        .sum();
+    let total: f64 = a.iter().zip(b).map(|(p, q)| delta_e(*p, *q)).sum();
     total / a.len() as f64
 }
 
@@ -220,33 +214,39 @@ fn blurred(pixels: &[[u8; 3]], (width, height): (usize, usize)) -> Vec<[u8; 3]> 
         .collect()
 }
 
-/// PSNR and mean ΔE of `shown` against `reference`, sub-pixel by sub-pixel and over 2×2 blocks.
+/// PSNR and mean ΔE of `shown` against `reference`, sub-pixel by sub-pixel and over 2×2 blocks,
+/// and how well 4×4 blocks keep the reference's hue.
 fn fidelity(shown: &[[u8; 3]], reference: &[[u8; 3]], size: (usize, usize)) -> String {
     let (a, b) = (blurred(shown, size), blurred(reference, size));
+    let half = (size.0 / 2, size.1 / 2);
+    let (hue_error, chroma_kept) = hue_kept(&blurred(&a, half), &blurred(&b, half));
     format!(
-        "{:.1} dB, ΔE {:.2}; 2×2 {:.1} dB, ΔE {:.2}",
+        "{:.1} dB, ΔE {:.2}; 2×2 {:.1} dB, ΔE {:.2}; 4×4 hue off {hue_error:.0}°, chroma {:.0} %",
         psnr(shown, reference),
         mean_delta_e(shown, reference),
         psnr(&a, &b),
-        mean_delta_e(&a, &b)
+        mean_delta_e(&a, &b),
+        chroma_kept * 100.0
     )
 }
 
-/// CIELAB of an 8-bit sRGB colour, D65 white.
-fn lab(rgb: [u8; 3]) -> [f64; 3] {
-    let [r, g, b] = rgb.map(|v| f64::from(bumpwork::texture::srgb_to_linear(f32::from(v) / 255.0)));
-    let x = (0.4124 * r + 0.3576 * g + 0.1805 * b) / 0.95047;
-    let y = 0.2126 * r + 0.7152 * g + 0.0722 * b;
-    let z = (0.0193 * r + 0.1192 * g + 0.9505 * b) / 1.08883;
-    let f = |t: f64| {
-        if t > 216.0 / 24389.0 {
-            t.cbrt()
-        } else {
-            (24389.0 / 27.0 * t + 16.0) / 116.0
+/// Over the blocks whose reference colour has a hue (C*ab ≥ 10): the mean hue angle error, and
+/// the shown chroma as a fraction of the reference's.
+fn hue_kept(shown: &[[u8; 3]], reference: &[[u8; 3]]) -> (f64, f64) {
+    let (mut angle, mut chroma, mut reference_chroma, mut count) = (0.0, 0.0, 0.0, 0);
+    for (p, q) in shown.iter().zip(reference) {
+        let ((cp, hp), (cq, hq)) = (chroma_and_hue(*p), chroma_and_hue(*q));
+        if cq >= 10.0 {
+            angle += ((hp - hq + 180.0).rem_euclid(360.0) - 180.0).abs();
+            chroma += cp;
+            reference_chroma += cq;
+            count += 1;
         }
-    };
-    let (fx, fy, fz) = (f(x), f(y), f(z));
-    [116.0 * fy - 16.0, 500.0 * (fx - fy), 200.0 * (fy - fz)]
+    }
+    (
+        angle / count.max(1) as f64,
+        chroma / reference_chroma.max(1e-9),
+    )
 }
 
 fn psnr(a: &[[u8; 3]], b: &[[u8; 3]]) -> f64 {

@@ -46,10 +46,12 @@
 
 mod ansi_writer;
 mod cell;
+pub mod cielab;
 mod color;
 mod color_mode;
 mod cursor;
 mod dither;
+mod dither_mix;
 mod encode;
 mod glyphs;
 pub mod graphics;

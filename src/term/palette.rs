@@ -57,12 +57,6 @@ pub fn xterm256_rgb(index: u8) -> [u8; 3] {
     }
 }
 
-/// Squared colour distance, weighted towards green and away from red as the eye is: cheap and
-/// "perceptual enough" to pick between palette entries.
-pub fn distance2(a: [u8; 3], b: [u8; 3]) -> i32 {
-    let d = |i: usize| a[i] as i32 - b[i] as i32;
-    WEIGHTS[0] * d(0) * d(0) + WEIGHTS[1] * d(1) * d(1) + WEIGHTS[2] * d(2) * d(2)
-}
-
-/// Channel weights of [`distance2`] (the low-red branch of the "redmean" approximation).
+/// Channel weights for comparing sRGB colours, towards green and away from red as the eye is (the
+/// low-red branch of the "redmean" approximation): cheap and "perceptual enough" between palette entries.
 pub const WEIGHTS: [i32; 3] = [2, 4, 3];

@@ -1,7 +1,8 @@
-//! Mapping an sRGB colour to a palette index, with an ordered-dither threshold deciding between the two
-//! palette entries that bracket it.
+//! Mapping an sRGB colour to a palette index: the palette's best [`DitherMix`] for the colour, and an
+//! ordered-dither threshold picking one of its entries.
 
-use super::palette::{ANSI16, CUBE_LEVELS, GREY_RAMP_START, WEIGHTS, cube_index, distance2};
+use super::dither_mix::{DitherMix, MixRules, best_dither_mix};
+use super::palette::{ANSI16, CUBE_LEVELS, GREY_RAMP_START, WEIGHTS, cube_index};
 
 /// The palettes a colour can be quantised to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -63,15 +64,14 @@ const CUBE_BRACKETS: [(u8, u8); 256] = bracket_table(&CUBE_LEVELS);
 const GREY_BRACKETS: [(u8, u8); 256] = bracket_table(&GREY_LADDER);
 
 fn quantize_xterm256(rgb: [u8; 3], threshold: u8) -> u8 {
-    choose(best_xterm256_mix(rgb), threshold)
+    best_xterm256_mix(rgb).pick(threshold)
 }
 
-/// The nearest of the palette entries around `rgb` (the eight corners of its cube cell and the
-/// two grey steps around its grey), the partner whose mix with it best reproduces `rgb`, and the
-/// mix fraction. One mix of two entries, as for the 16 colours: dithering each channel on its own
-/// mixes up to eight cube entries into colour noise, and choosing the grey ramp or the cube per
-/// pixel blotches a dull colour (a cat's fur) where the choice flips; a mix may join the two.
-fn best_xterm256_mix(rgb: [u8; 3]) -> (u8, u8, u8) {
+/// The best mix of two of the palette entries around `rgb`: the eight corners of its cube cell and
+/// the two grey steps around its grey. Two, as dithering each channel on its own mixes up to eight
+/// cube entries into colour noise, and choosing the grey ramp or the cube per pixel blotches a dull
+/// colour (a cat's fur) where the choice flips; a mix may join the two.
+fn best_xterm256_mix(rgb: [u8; 3]) -> DitherMix {
     let cell = rgb.map(|v| CUBE_BRACKETS[v as usize].0 as usize);
     let grey_step = GREY_BRACKETS[weighted_grey(rgb) as usize].0 as usize;
     let corners = (0..8).map(|k| {
@@ -90,7 +90,7 @@ fn best_xterm256_mix(rgb: [u8; 3]) -> (u8, u8, u8) {
     for (slot, candidate) in candidates.iter_mut().zip(corners.chain(greys)) {
         *slot = candidate;
     }
-    best_mix(rgb, &candidates, XTERM256_MIX_VARIANCE_PENALTY)
+    best_dither_mix(rgb, &candidates, XTERM256_RULES)
 }
 
 fn weighted_grey(rgb: [u8; 3]) -> u8 {
@@ -99,110 +99,74 @@ fn weighted_grey(rgb: [u8; 3]) -> u8 {
     ((sum + total / 2) / total) as u8
 }
 
-/// How much a visible two-colour mix is penalised, as a fraction of its variance: keeps the dither from
-/// mixing far-apart colours (say red and cyan for grey) when a closer pair exists, and from breaking a
-/// dark background into a checker of black and grey. (At 1 no mix would ever win: a mix's mean squared
-/// error is its residual plus its whole variance; half keeps the dither where partners are close.
-/// `cargo bench --bench tui_latency` measures the 16-colour picture against the area average.)
-const MIX_VARIANCE_PENALTY: f32 = 0.5;
+/// The 16 colours are far apart: a dull colour lies between grey and two hues (an orange between
+/// grey, red and yellow), so three may mix, and an error off the grey axis weighs 9 on top of the
+/// channel weights (2–4). Half the spread is penalised, which keeps the dither where partners are close and a dark
+/// background black. (`cargo bench --bench tui_latency` measures the picture against the area
+/// average, beside chafa.)
+const ANSI16_RULES: MixRules = MixRules {
+    spread_penalty: 0.5,
+    hue_weight: 9.0,
+    three: true,
+};
 
-/// The same for the 256 colours, whose entries are close: a colour less than 0.41 of the way from
-/// an entry to the next shows as that entry, flat (a mix wins where t² > 0.7·t·(1 − t)). Less
-/// grain, and nearer the area average both sub-pixel by sub-pixel and in mean ΔE than at 0.5
-/// (`cargo bench --bench tui_latency` measures both, beside chafa).
-const XTERM256_MIX_VARIANCE_PENALTY: f32 = 0.7;
+/// The 256 colours are close: a colour less than 0.41 of the way from an entry to the next shows
+/// as that entry, flat (a mix wins where t² > 0.7·t·(1 − t)). Less grain, and nearer the area
+/// average both sub-pixel by sub-pixel and in mean ΔE than at 0.5. An error off the grey axis
+/// weighs 1 on top of the channel weights, so a dull tan mixes from the cube rather than showing
+/// as the grey ramp; more costs grain (and ΔE) for the hue it gains.
+const XTERM256_RULES: MixRules = MixRules {
+    spread_penalty: 0.7,
+    hue_weight: 1.0,
+    three: false,
+};
 
 fn quantize_ansi16(rgb: [u8; 3], threshold: u8) -> u8 {
-    choose(best_ansi16_mix(rgb), threshold)
+    best_ansi16_mix(rgb).pick(threshold)
 }
 
-fn choose((near, far, t): (u8, u8, u8), threshold: u8) -> u8 {
-    if threshold < t { far } else { near }
-}
-
-/// [`quantize`] with a memo of the 16-colour mix search, which costs ~16 projections per colour while
+/// [`quantize`] with a memo of the mix search, which weighs up to ~120 mixes per colour while
 /// rendered frames repeat colours a lot. One per frame or per thread: it is not shared.
 #[derive(Clone, Debug)]
 pub struct Quantizer {
     palette: Palette,
-    /// Direct-mapped: (packed rgb | VALID, near, far, t).
-    ansi16_mixes: Vec<(u32, u8, u8, u8)>,
+    /// Direct-mapped: (packed rgb | VALID, its mix).
+    mixes: Vec<(u32, DitherMix)>,
 }
 
-const MEMO_SLOTS: usize = 4096;
+const MEMO_SLOTS: usize = 8192;
 const VALID: u32 = 1 << 24;
 
 impl Quantizer {
     pub fn new(palette: Palette) -> Self {
-        let slots = if palette == Palette::Ansi16 {
-            MEMO_SLOTS
-        } else {
-            0
-        };
         Quantizer {
             palette,
-            ansi16_mixes: vec![(0, 0, 0, 0); slots],
+            mixes: vec![(0, DitherMix::default()); MEMO_SLOTS],
         }
     }
 
     /// Same result as [`quantize`] with this quantizer's palette.
     pub fn quantize(&mut self, rgb: [u8; 3], threshold: u8) -> u8 {
-        if self.palette == Palette::Xterm256 {
-            return quantize_xterm256(rgb, threshold);
-        }
         let key = VALID | (rgb[0] as u32) << 16 | (rgb[1] as u32) << 8 | rgb[2] as u32;
-        let slot = (key.wrapping_mul(0x9E37_79B1) >> 20) as usize % MEMO_SLOTS;
-        let entry = &mut self.ansi16_mixes[slot];
+        let slot = (key.wrapping_mul(0x9E37_79B1) >> 19) as usize % MEMO_SLOTS;
+        let entry = &mut self.mixes[slot];
         if entry.0 != key {
-            let (near, far, t) = best_ansi16_mix(rgb);
-            *entry = (key, near, far, t);
+            let mix = match self.palette {
+                Palette::Xterm256 => best_xterm256_mix(rgb),
+                Palette::Ansi16 => best_ansi16_mix(rgb),
+            };
+            *entry = (key, mix);
         }
-        choose((entry.1, entry.2, entry.3), threshold)
+        entry.1.pick(threshold)
     }
 }
 
-/// The nearest ANSI colour, the partner whose mix with it best reproduces `rgb`, and the mix fraction.
-fn best_ansi16_mix(rgb: [u8; 3]) -> (u8, u8, u8) {
+fn best_ansi16_mix(rgb: [u8; 3]) -> DitherMix {
     let mut candidates = [(0u8, [0u8; 3]); 16];
     for (i, slot) in candidates.iter_mut().enumerate() {
         *slot = (i as u8, ANSI16[i]);
     }
-    best_mix(rgb, &candidates, MIX_VARIANCE_PENALTY)
-}
-
-/// Of `candidates` (palette index, colour): the nearest to `rgb`, the partner whose mix with it
-/// best reproduces `rgb` once the mix's visible spread is counted, and the mix fraction (0..=255).
-fn best_mix(rgb: [u8; 3], candidates: &[(u8, [u8; 3])], penalty: f32) -> (u8, u8, u8) {
-    let &(near, near_rgb) = candidates
-        .iter()
-        .min_by_key(|(_, c)| distance2(rgb, *c))
-        .expect("candidates");
-    let p1 = near_rgb.map(|v| v as f32);
-    let c = rgb.map(|v| v as f32);
-    let e = [c[0] - p1[0], c[1] - p1[1], c[2] - p1[2]];
-    let mut best = (near, 0.0f32, dot_w(e, e));
-    for &(far, p2) in candidates {
-        let d = [
-            p2[0] as f32 - p1[0],
-            p2[1] as f32 - p1[1],
-            p2[2] as f32 - p1[2],
-        ];
-        let dd = dot_w(d, d);
-        if dd == 0.0 {
-            continue;
-        }
-        let t = (dot_w(e, d) / dd).clamp(0.0, 1.0);
-        let r = [e[0] - t * d[0], e[1] - t * d[1], e[2] - t * d[2]];
-        let cost = dot_w(r, r) + penalty * t * (1.0 - t) * dd;
-        if cost < best.2 {
-            best = (far, t, cost);
-        }
-    }
-    (near, best.0, (best.1 * 255.0).round() as u8)
-}
-
-fn dot_w(a: [f32; 3], b: [f32; 3]) -> f32 {
-    (0..3).map(|i| WEIGHTS[i] as f32 * a[i] * b[i]).sum()
+    best_dither_mix(rgb, &candidates, ANSI16_RULES)
 }
 
 /// Whether a pixel is lit in monochrome mode: its luma (Rec. 709 weights on the sRGB values) against the
@@ -215,6 +179,7 @@ pub fn monochrome_lit(rgb: [u8; 3], threshold: u8) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::term::cielab::chroma_and_hue;
     use crate::term::palette::xterm256_rgb;
 
     #[test]
@@ -230,6 +195,51 @@ mod tests {
         assert_eq!(mixed.len(), 2, "{mixed:?}");
     }
 
+    /// The colour a flat patch of `rgb` shows as: the dithered entries averaged over every threshold.
+    fn dithered_average(rgb: [u8; 3], palette: Palette) -> [u8; 3] {
+        let shown: Vec<[u8; 3]> = (0..64)
+            .map(|k| xterm256_rgb(quantize(rgb, palette, (4 * k + 2) as u8)))
+            .collect();
+        std::array::from_fn(|c| {
+            (shown.iter().map(|p| p[c] as u32).sum::<u32>() / shown.len() as u32) as u8
+        })
+    }
+
+    /// A lit orange sphere, a cat's fur in light and in shade, a teal, an olive, a slate blue and a
+    /// dusty rose: none of them near a palette entry, all of them nearer a grey in RGB than in hue.
+    const DULL_COLOURS: [[u8; 3]; 8] = [
+        [200, 140, 115],
+        [160, 110, 70],
+        [114, 87, 65],
+        [180, 100, 50],
+        [80, 140, 150],
+        [130, 140, 70],
+        [100, 110, 160],
+        [170, 110, 120],
+    ];
+
+    #[test]
+    fn dull_colours_keep_their_hue() {
+        // The 16 colours hold no dark yellow: a dark brown shows as dark red, 43° off. In the 256
+        // the cube's darkest steps (0, 95) are too far apart for a mix of two to hold a dark
+        // brown's hue without visible grain: it shows as a dull grey rose.
+        let dark_brown = [114, 87, 65];
+        for (palette, most_off) in [(Palette::Ansi16, 45.0), (Palette::Xterm256, 25.0)] {
+            for rgb in DULL_COLOURS {
+                if palette == Palette::Xterm256 && rgb == dark_brown {
+                    continue;
+                }
+                let (chroma, hue) = chroma_and_hue(rgb);
+                let (shown_chroma, shown_hue) = chroma_and_hue(dithered_average(rgb, palette));
+                let hue_error = (shown_hue - hue + 180.0).rem_euclid(360.0) - 180.0;
+                assert!(
+                    hue_error.abs() < most_off && shown_chroma > 0.5 * chroma,
+                    "{palette:?}: {rgb:?} (C {chroma:.0}, h {hue:.0}°) shows as C {shown_chroma:.0}, h {shown_hue:.0}°"
+                );
+            }
+        }
+    }
+
     #[test]
     fn bracket_ends_are_exact() {
         assert_eq!(bracket(&CUBE_LEVELS, 0), (0, 0));
@@ -239,14 +249,16 @@ mod tests {
 
     #[test]
     fn memoised_quantizer_agrees_with_quantize() {
-        let mut quantizer = Quantizer::new(Palette::Ansi16);
-        for v in (0..=255u32).step_by(3) {
-            for rgb in [[v as u8, 40, 200], [10, v as u8, v as u8], [v as u8; 3]] {
-                for threshold in [2, 100, 254] {
-                    assert_eq!(
-                        quantizer.quantize(rgb, threshold),
-                        quantize(rgb, Palette::Ansi16, threshold)
-                    );
+        for palette in [Palette::Ansi16, Palette::Xterm256] {
+            let mut quantizer = Quantizer::new(palette);
+            for v in (0..=255u32).step_by(3) {
+                for rgb in [[v as u8, 40, 200], [10, v as u8, v as u8], [v as u8; 3]] {
+                    for threshold in [2, 100, 254] {
+                        assert_eq!(
+                            quantizer.quantize(rgb, threshold),
+                            quantize(rgb, palette, threshold)
+                        );
+                    }
                 }
             }
         }
