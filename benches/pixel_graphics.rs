@@ -27,7 +27,7 @@ fn app(protocol: Protocol) -> (App, Screen) {
         ..WorkbenchOptions::default()
     };
     let mut app = App::new(&options, ColorMode::TrueColor).expect("built-in scene");
-    app.graphics = Some(protocol);
+    app.set_graphics(Some(protocol));
     let mut screen = Screen::new(COLS, ROWS);
     screen.set_pixel_route(route(false), &mut app);
     (app, screen)

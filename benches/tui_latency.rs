@@ -345,7 +345,7 @@ fn picture_quality_of(scene: &str) {
         (ColorMode::Ansi256, "256"),
         (ColorMode::Ansi16, "16"),
     ] {
-        app.colors = mode;
+        app.set_colors(mode);
         let mut settle_times = Vec::new();
         let mut result = (0.0, String::new(), 0);
         for _ in 0..5 {

@@ -53,6 +53,9 @@ pub struct ViewArgs {
     /// file or an image file.
     #[arg(long, value_name = "NAME|FILE")]
     texture: Option<String>,
+    /// Directory the export key writes PNGs to and the save key scenes to.
+    #[arg(long, value_name = "DIR", default_value = ".")]
+    export_dir: std::path::PathBuf,
     /// Samples per pixel of PNGs the export key writes.
     #[arg(long, default_value_t = 4,
           value_parser = clap::value_parser!(u32).range(1..=bumpwork::still::MAX_SAMPLES as i64))]
@@ -81,6 +84,7 @@ pub fn run(args: ViewArgs) -> Result<(), Error> {
         } else {
             args.export_samples
         },
+        export_dir: existing_directory(args.export_dir)?,
         watch: !args.no_watch,
         quality: args.quality.unwrap_or_default(),
         cell_size: args.cell_size,
@@ -95,6 +99,15 @@ pub fn run(args: ViewArgs) -> Result<(), Error> {
 }
 
 /// `model.obj my.pat` as one source, `model.obj+my.pat`: the pattern shown on the model.
+/// `--export-dir`, checked before the workbench starts rather than at the first export.
+fn existing_directory(dir: std::path::PathBuf) -> Result<std::path::PathBuf, Error> {
+    if dir.is_dir() {
+        Ok(dir)
+    } else {
+        Err(Error::write(&dir, "--export-dir: not a directory"))
+    }
+}
+
 fn patterns_on_models(names: Vec<String>) -> Vec<String> {
     let mut joined: Vec<String> = Vec::with_capacity(names.len());
     for name in names {

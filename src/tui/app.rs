@@ -39,25 +39,25 @@ use std::time::{Duration, Instant};
 pub struct App {
     pub(super) scenes: Vec<String>,
     pub(super) scene_index: usize,
-    pub prepared: PreparedScene,
+    pub(super) prepared: PreparedScene,
     pub(super) orbit: Orbit,
     /// The object the material keys edit, and its selected bump parameter.
     pub(super) object: usize,
-    pub param: usize,
-    pub view_mode: ViewMode,
+    pub(super) param: usize,
+    pub(super) view_mode: ViewMode,
     /// The preset `Q` cycles.
-    pub quality: QualityPreset,
+    pub(super) quality: QualityPreset,
     /// What is rendered: the preset with the scene file's `[quality]` settings and the `--set`
     /// ones over it.
-    pub quality_in_use: Quality,
+    pub(super) quality_in_use: Quality,
     /// The shadow maps of the last frame, drawn again when the view or the lights change.
     pub(super) shadow_cache: ShadowCache,
     pub(super) glyphs: GlyphSet,
     /// The pixel protocol the picture is sent in; `None` draws it in `glyphs`.
-    pub graphics: Option<Protocol>,
+    pub(super) graphics: Option<Protocol>,
     /// The protocols the terminal speaks, which `g` cycles through after the glyph sets.
     pub(super) graphics_supported: Vec<Protocol>,
-    pub colors: ColorMode,
+    pub(super) colors: ColorMode,
     /// `--cell-size`: a cell's pixels, for terminals that do not report them.
     pub(super) cell_size: Option<(u32, u32)>,
     /// `--set` settings, applied at every load.
@@ -67,7 +67,7 @@ pub struct App {
     pub(super) clock: Clock,
     /// The boxes over the picture, the topmost last; it takes keys first.
     overlays: Vec<Box<dyn Overlay>>,
-    pub quit: bool,
+    pub(super) quit: bool,
     message: Message,
     /// Every message of the run.
     log: Log,
@@ -78,13 +78,13 @@ pub struct App {
     kept: Vec<Option<KeptScene>>,
     /// Until when the edited object's edges are drawn over the picture (after `o`).
     marked_until: Option<Instant>,
-    pub report: FrameReport,
-    pub export_size: (u32, u32),
-    pub export_samples: u32,
-    pub export_dir: PathBuf,
+    pub(super) report: FrameReport,
+    export_size: (u32, u32),
+    export_samples: u32,
+    export_dir: PathBuf,
     /// The export rendering in the background, if any.
-    pub export_job: Option<ExportJob>,
-    pub dirty: Dirty,
+    pub(super) export_job: Option<ExportJob>,
+    pub(super) dirty: Dirty,
     /// The images the pattern and texture keys offer.
     images: ImageShelf,
     /// Watches the current scene's files; None for built-in scenes.
@@ -187,7 +187,7 @@ impl App {
             report: FrameReport::default(),
             export_size: options.export_size,
             export_samples: options.export_samples,
-            export_dir: PathBuf::from("."),
+            export_dir: options.export_dir.clone(),
             export_job: None,
             dirty: Dirty::ALL,
             reloader,
@@ -202,6 +202,51 @@ impl App {
 
     pub fn scene(&self) -> &Scene {
         &self.prepared.scene
+    }
+
+    /// What the last frame cost.
+    pub fn frame_report(&self) -> &FrameReport {
+        &self.report
+    }
+
+    pub fn view_mode(&self) -> ViewMode {
+        self.view_mode
+    }
+
+    /// The preset `Q` cycles.
+    pub fn quality_preset(&self) -> QualityPreset {
+        self.quality
+    }
+
+    /// What is rendered: the preset with the scene's and the `--set` settings over it.
+    pub fn quality_in_use(&self) -> &Quality {
+        &self.quality_in_use
+    }
+
+    /// Sends the picture in `protocol`'s pixels, or in glyphs for `None`.
+    pub fn set_graphics(&mut self, protocol: Option<Protocol>) {
+        self.graphics = protocol;
+        self.dirty = Dirty::ALL;
+    }
+
+    pub fn set_colors(&mut self, colors: ColorMode) {
+        self.colors = colors;
+        self.dirty = Dirty::ALL;
+    }
+
+    /// Whether the workbench has been asked to end.
+    pub fn quitting(&self) -> bool {
+        self.quit
+    }
+
+    /// Whether an export is rendering in the background.
+    pub fn exporting(&self) -> bool {
+        self.export_job.is_some()
+    }
+
+    /// What must be drawn again.
+    pub fn dirty(&self) -> Dirty {
+        self.dirty
     }
 
     /// Whether the picture changes with time, so frames must keep coming while the clock runs.
@@ -537,7 +582,7 @@ impl App {
             Some(kept) => kept,
             None => match self.open_fresh(index) {
                 Ok(fresh) => fresh,
-                Err(e) => return self.report(&e),
+                Err(e) => return self.show_error(&e),
             },
         };
         let left = self.swap_in(next);
@@ -595,7 +640,7 @@ impl App {
 
     /// Shows `error`: its first line in the status line, a message of several lines (a file's
     /// line and caret) whole over the picture.
-    fn report(&mut self, error: &Error) {
+    fn show_error(&mut self, error: &Error) {
         let text = error.to_string();
         let first = text.lines().next().unwrap_or_default().to_string();
         self.close(OverlayKind::Diagnostic);
@@ -620,7 +665,7 @@ impl App {
                 ReloadOutcome::Reloaded(reload) => {
                     let mut reload = reload;
                     if let Err(e) = dress(&self.settings, &self.choice, &mut reload.scene) {
-                        self.report(&e);
+                        self.show_error(&e);
                         continue;
                     }
                     let (scene, kept) = reload.keep_live_params_telling(&self.prepared.scene);
@@ -636,7 +681,7 @@ impl App {
                             self.close(OverlayKind::Diagnostic);
                             self.dirty.picture = true;
                         }
-                        Err(e) => self.report(&e),
+                        Err(e) => self.show_error(&e),
                     }
                 }
                 ReloadOutcome::Failed(error) => {
@@ -691,7 +736,7 @@ impl App {
                     .min(self.prepared.objects.len().saturating_sub(1));
                 self.tell(Message::Info("the file's values again".into()));
             }
-            Err(e) => self.report(&e),
+            Err(e) => self.show_error(&e),
         }
     }
 
@@ -718,7 +763,7 @@ impl App {
                 self.quality = quality;
                 self.quality_in_use = in_use;
             }
-            Err(e) => self.report(&e),
+            Err(e) => self.show_error(&e),
         }
     }
 

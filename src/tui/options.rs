@@ -5,6 +5,7 @@ use crate::overrides::Override;
 use crate::scene::MaterialChoice;
 use crate::term::graphics::GraphicsChoice;
 use crate::term::{ColorChoice, GlyphSet};
+use std::path::PathBuf;
 
 #[derive(Clone, Debug)]
 pub struct WorkbenchOptions {
@@ -19,6 +20,8 @@ pub struct WorkbenchOptions {
     pub export_size: (u32, u32),
     /// Samples per pixel of exported PNGs.
     pub export_samples: u32,
+    /// Where `e` writes stills and `s` saves scenes.
+    pub export_dir: PathBuf,
     /// Reload scene, pattern and image files when they change on disk.
     pub watch: bool,
     /// The quality preset to start with (`Q` cycles them).
@@ -46,6 +49,7 @@ impl Default for WorkbenchOptions {
             mouse: true,
             export_size: (1920, 1080),
             export_samples: 4,
+            export_dir: PathBuf::from("."),
             watch: true,
             quality: QualityPreset::default(),
             cell_size: None,

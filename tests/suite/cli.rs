@@ -74,6 +74,14 @@ fn unknown_scene_names_are_a_user_error_with_a_suggestion() {
 }
 
 #[test]
+fn a_missing_export_dir_is_a_user_error_before_the_workbench_starts() {
+    let dir = temp_dir("export-dir");
+    let missing = dir.join("not-here");
+    let output = bumpwork(&["view", "--export-dir", missing.to_str().unwrap()]);
+    assert_user_error(&output, "--export-dir: not a directory");
+}
+
+#[test]
 fn malformed_scene_files_point_at_line_and_column() {
     let dir = temp_dir("malformed");
     let out = dir.join("x.png");

@@ -125,17 +125,17 @@ fn the_workbench_takes_the_table_and_quality_settings_over_its_presets() {
         ColorMode::TrueColor,
     )
     .unwrap();
-    assert_eq!(app.quality_in_use.samples, 4);
-    assert_eq!(app.quality_in_use.tessellation, 24);
+    assert_eq!(app.quality_in_use().samples, 4);
+    assert_eq!(app.quality_in_use().tessellation, 24);
     assert_eq!(
-        app.quality_in_use.normal_form,
+        app.quality_in_use().normal_form,
         bumpwork::shade::NormalForm::Full
     );
     app.apply(Action::NextQuality);
-    assert_eq!(app.quality.name(), "high");
-    assert_eq!(app.quality_in_use.tessellation, 24, "the table over high");
+    assert_eq!(app.quality_preset().name(), "high");
+    assert_eq!(app.quality_in_use().tessellation, 24, "the table over high");
     assert_eq!(
-        app.quality_in_use.adaptive_tolerance_px,
+        app.quality_in_use().adaptive_tolerance_px,
         Some(0.5),
         "high's own"
     );

@@ -681,7 +681,7 @@ fn the_workbenchs_shadows_follow_the_light_keys_and_s_turns_them_off() {
     let moved = frame(&app);
     assert_ne!(moved, first, "the light and its shadow moved");
     app.apply(Action::ToggleShadows);
-    assert!(!app.prepared.scene.shadows);
+    assert!(!app.scene().shadows);
     let flat = frame(&app);
     let darker = |a: &[Vec3], b: &[Vec3]| a.iter().zip(b).filter(|(p, q)| p.x < q.x - 1e-4).count();
     assert!(

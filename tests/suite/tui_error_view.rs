@@ -25,14 +25,16 @@ fn status(screen: &Screen, app: &App) -> String {
 fn error_view_psnr(app: &mut App, screen: &mut Screen) -> f64 {
     app.invalidate();
     screen.draw(app, &mut Vec::new()).unwrap();
-    app.report.psnr_db.expect("the error view reports a PSNR")
+    app.frame_report()
+        .psnr_db
+        .expect("the error view reports a PSNR")
 }
 
 #[test]
 fn the_error_view_shows_the_psnr_and_finer_presets_raise_it() {
     let mut app = app("big-sphere-squares");
     let mut screen = Screen::new(80, 20);
-    while app.view_mode != ViewMode::Error {
+    while app.view_mode() != ViewMode::Error {
         app.apply(Action::NextViewMode);
     }
     let interactive = error_view_psnr(&mut app, &mut screen);
@@ -45,7 +47,7 @@ fn the_error_view_shows_the_psnr_and_finer_presets_raise_it() {
     for _ in 0..3 {
         app.apply(Action::NextQuality);
     }
-    assert_eq!(app.quality.name(), "draft");
+    assert_eq!(app.quality_preset().name(), "draft");
     let draft = error_view_psnr(&mut app, &mut screen);
     assert!(
         status(&screen, &app).contains("PSNR"),
@@ -61,13 +63,17 @@ fn the_error_view_shows_the_psnr_and_finer_presets_raise_it() {
     );
     app.apply(Action::NextViewMode);
     screen.draw(&mut app, &mut Vec::new()).unwrap();
-    assert_eq!(app.report.psnr_db, None, "only the error view measures");
+    assert_eq!(
+        app.frame_report().psnr_db,
+        None,
+        "only the error view measures"
+    );
 }
 
 #[test]
 fn the_heat_map_is_dark_where_the_frame_matches_the_reference() {
     let mut app = app("plane-dimples");
-    while app.view_mode != ViewMode::Error {
+    while app.view_mode() != ViewMode::Error {
         app.apply(Action::NextViewMode);
     }
     let mut framebuffer = Framebuffer::new(0, 0, Vec3::ZERO);
@@ -93,7 +99,7 @@ fn the_preset_key_cycles_the_crate_presets_and_the_status_counts_the_samples() {
     let mut names = Vec::new();
     for _ in 0..4 {
         app.apply(Action::NextQuality);
-        names.push(app.quality.name());
+        names.push(app.quality_preset().name());
     }
     assert_eq!(names, ["high", "exact", "draft", "interactive"]);
     app.apply(Action::NextQuality);

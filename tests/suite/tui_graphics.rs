@@ -28,7 +28,7 @@ fn app(scene: &str) -> App {
 /// process.
 fn settled(scene: &str, protocol: Protocol) -> (App, Screen, Vec<u8>) {
     let mut app = app(scene);
-    app.graphics = Some(protocol);
+    app.set_graphics(Some(protocol));
     let mut screen = Screen::new(COLS, ROWS);
     screen.set_pixel_route(route(false), &mut app);
     let mut out = Vec::new();
@@ -110,7 +110,7 @@ fn an_idle_pixel_picture_sends_nothing_and_leaving_kitty_deletes_its_image() {
     screen.draw(&mut app, &mut idle).unwrap();
     screen.refine(&mut app, &mut idle).unwrap();
     assert!(idle.is_empty(), "an idle screen wrote {} bytes", idle.len());
-    app.graphics = None;
+    app.set_graphics(None);
     let mut blocks = Vec::new();
     screen.draw(&mut app, &mut blocks).unwrap();
     let text = String::from_utf8_lossy(&blocks);
@@ -262,7 +262,7 @@ fn iterm2_sends_the_same_pixels_as_a_png_and_tmux_passes_sequences_through() {
     assert_eq!(pixels, exact.pixels, "iTerm2's PNG holds the exact picture");
     // Through tmux: each kitty sequence wrapped, its escapes doubled, the picture the same.
     let mut app = app("plane-dimples");
-    app.graphics = Some(Protocol::Kitty);
+    app.set_graphics(Some(Protocol::Kitty));
     let mut screen = Screen::new(COLS, ROWS);
     screen.set_pixel_route(route(true), &mut app);
     let mut wrapped = Vec::new();

@@ -95,6 +95,39 @@ fn the_workbench_runs_in_a_real_terminal_and_gives_it_back() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
+/// `--export-dir` sends the export key's stills there, not to the current directory.
+#[test]
+fn the_export_key_writes_into_the_export_dir() {
+    let cwd = tempfile::tempdir().unwrap();
+    let stills = cwd.path().join("stills");
+    std::fs::create_dir(&stills).unwrap();
+    let args = [
+        "view",
+        "plane-dimples",
+        "--export-size",
+        "64x36",
+        "--export-dir",
+        "stills",
+    ];
+    let mut session = Session::bumpwork(&args, Some(cwd.path()), (COLS, ROWS), "plane-dimples");
+    session.send("e");
+    session.wait_for("the export to finish", status_contains("exported"));
+    let pngs = |dir: &std::path::Path| {
+        std::fs::read_dir(dir)
+            .unwrap()
+            .filter_map(|e| e.ok())
+            .filter(|e| e.path().extension().is_some_and(|x| x == "png"))
+            .count()
+    };
+    assert_eq!(pngs(&stills), 1, "status: {}", session.status_line());
+    assert_eq!(pngs(cwd.path()), 0);
+    session.send("q");
+    assert_eq!(
+        session.exit_within(std::time::Duration::from_secs(30)),
+        Some(0)
+    );
+}
+
 /// The workbench in `dir`, exporting a still large and supersampled enough to be still running
 /// when the test acts.
 fn exporting_in(dir: &std::path::Path) -> Session {

@@ -99,14 +99,14 @@ fn an_idle_screen_refines_to_the_last_pass_and_a_key_starts_again() {
     let mut screen = Screen::new(40, 12);
     let mut out = Vec::new();
     screen.draw(&mut app, &mut out).unwrap();
-    assert_eq!(app.report.passes, 1);
+    assert_eq!(app.frame_report().passes, 1);
     let mut redraws = 0;
     while screen.refining(&app) {
         if screen.refine(&mut app, &mut out).unwrap() > 0 {
             redraws += 1;
         }
     }
-    assert_eq!(app.report.passes, MAX_PASSES);
+    assert_eq!(app.frame_report().passes, MAX_PASSES);
     assert!(
         (1..=6).contains(&redraws),
         "{redraws} redraws while refining"
@@ -117,6 +117,6 @@ fn an_idle_screen_refines_to_the_last_pass_and_a_key_starts_again() {
         "a change is drawn before any pass is added"
     );
     screen.draw(&mut app, &mut out).unwrap();
-    assert_eq!(app.report.passes, 1);
+    assert_eq!(app.frame_report().passes, 1);
     assert!(screen.refining(&app));
 }

@@ -10,10 +10,24 @@ use std::path::Path;
 use std::time::{Duration, Instant};
 
 fn app() -> App {
-    let options = WorkbenchOptions {
+    App::new(&options(), ColorMode::TrueColor).unwrap()
+}
+
+fn options() -> WorkbenchOptions {
+    WorkbenchOptions {
         scenes: vec!["plane-dimples".into(), "sphere-on-plane-dimples".into()],
         colors: ColorChoice::Fixed(ColorMode::TrueColor),
         ..WorkbenchOptions::default()
+    }
+}
+
+/// [`app`] exporting `size` stills of `samples` samples into `dir`.
+fn app_exporting(dir: &Path, size: (u32, u32), samples: u32) -> App {
+    let options = WorkbenchOptions {
+        export_dir: dir.to_path_buf(),
+        export_size: size,
+        export_samples: samples,
+        ..options()
     };
     App::new(&options, ColorMode::TrueColor).unwrap()
 }
@@ -97,9 +111,9 @@ fn fresh_dir(name: &str) -> std::path::PathBuf {
 
 /// Waits for the export the app started and returns its final status message.
 fn finished_export_message(app: &mut App) -> String {
-    assert!(app.export_job.is_some());
+    assert!(app.exporting());
     let started = Instant::now();
-    while app.export_job.is_some() && started.elapsed() < Duration::from_secs(30) {
+    while app.exporting() && started.elapsed() < Duration::from_secs(30) {
         app.poll_export();
         std::thread::sleep(Duration::from_millis(10));
     }
@@ -111,11 +125,9 @@ fn finished_export_message(app: &mut App) -> String {
 
 #[test]
 fn a_wireframe_export_is_a_picture_and_says_it_carries_no_recipe() {
-    let mut app = app();
     let dir = fresh_dir("wire");
-    app.export_dir = dir.clone();
-    app.export_size = (48, 32);
-    while app.view_mode != ViewMode::Wireframe {
+    let mut app = app_exporting(&dir, (48, 32), 4);
+    while app.view_mode() != ViewMode::Wireframe {
         app.apply(Action::NextViewMode);
     }
     app.apply(Action::Export);
@@ -138,11 +150,8 @@ fn a_wireframe_export_is_a_picture_and_says_it_carries_no_recipe() {
 
 #[test]
 fn the_export_key_writes_the_live_view_in_the_background_and_from_makes_it_again() {
-    let mut app = app();
     let dir = fresh_dir("export");
-    app.export_dir = dir.clone();
-    app.export_size = (64, 36);
-    app.export_samples = 4;
+    let mut app = app_exporting(&dir, (64, 36), 4);
     // Live edits a still must carry: the camera, a light, a pattern parameter, the bump.
     app.apply(Action::Orbit(0.3, 0.1));
     app.apply(Action::MoveLight(0.5, 0.0));
@@ -159,7 +168,7 @@ fn the_export_key_writes_the_live_view_in_the_background_and_from_makes_it_again
     let recipe_text = &texts.iter().find(|(k, _)| k == RECIPE).unwrap().1;
     let recipe = Recipe::parse(recipe_text, "export").unwrap();
     assert_eq!((recipe.width, recipe.height), (64, 36));
-    let live = app.quality.quality();
+    let live = app.quality_preset().quality();
     assert_eq!(
         recipe.quality,
         bumpwork::quality::Quality { samples: 4, ..live }
@@ -196,11 +205,8 @@ fn the_export_key_writes_the_live_view_in_the_background_and_from_makes_it_again
 
 #[test]
 fn quitting_during_an_export_leaves_no_file() {
-    let mut app = app();
     let dir = fresh_dir("cancel");
-    app.export_dir = dir.clone();
-    app.export_size = (4000, 3000);
-    app.export_samples = 64;
+    let mut app = app_exporting(&dir, (4000, 3000), 64);
     app.apply(Action::Export);
     std::thread::sleep(Duration::from_millis(200));
     drop(app);
@@ -314,7 +320,10 @@ fn information_expires_and_errors_stay() {
     assert_eq!(*app.message(), Message::Info("reloaded".into()));
     app.expire_message(start + bumpwork::tui::INFO_LIFETIME + Duration::from_millis(1));
     assert_eq!(*app.message(), Message::None);
-    assert!(app.dirty.text, "the status line is drawn again without it");
+    assert!(
+        app.dirty().text,
+        "the status line is drawn again without it"
+    );
     app.tell(Message::Error("x.pat:1:1: expected an expression".into()));
     app.expire_message(start + Duration::from_secs(10));
     app.expire_message(start + Duration::from_secs(100));
@@ -357,9 +366,9 @@ fn at_80_by_24_the_help_shows_every_key_at_once_and_esc_closes_it() {
     }
     press(&mut app, KeyCode::Esc);
     assert!(!app.is_open(bumpwork::tui::OverlayKind::Help));
-    assert!(!app.quit, "Esc only closes");
+    assert!(!app.quitting(), "Esc only closes");
     press(&mut app, KeyCode::Esc);
-    assert!(!app.quit, "Esc with nothing open does not quit");
+    assert!(!app.quitting(), "Esc with nothing open does not quit");
 }
 
 #[test]
@@ -423,12 +432,9 @@ fn psnr(a: &[u8], b: &[u8]) -> f64 {
 
 #[test]
 fn the_saved_scene_renders_what_the_export_key_exports() {
-    let mut app = app();
-    app.apply(Action::NextScene);
     let dir = fresh_dir("save");
-    app.export_dir = dir.clone();
-    app.export_size = (64, 36);
-    app.export_samples = 4;
+    let mut app = app_exporting(&dir, (64, 36), 4);
+    app.apply(Action::NextScene);
     // The same live edits as an export carries: camera, light, parameter, bump, quality, time.
     app.apply(Action::TogglePause);
     app.apply(Action::StepClock);
