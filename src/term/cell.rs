@@ -51,6 +51,22 @@ impl Cell {
     pub fn looks_same(self, other: Cell) -> bool {
         self == other || self.canonical() == other.canonical()
     }
+
+    /// Whether the two cells show the same glyph in colours no channel of which differs by more
+    /// than `levels` (palette colours must be equal: a step of the palette is never small).
+    pub fn looks_within(self, other: Cell, levels: u8) -> bool {
+        let (a, b) = (self.canonical(), other.canonical());
+        a.glyph == b.glyph && colors_within(a.fg, b.fg, levels) && colors_within(a.bg, b.bg, levels)
+    }
+}
+
+fn colors_within(a: Color, b: Color, levels: u8) -> bool {
+    match (a, b) {
+        (Color::Rgb(r, g, b), Color::Rgb(r2, g2, b2)) => {
+            r.abs_diff(r2) <= levels && g.abs_diff(g2) <= levels && b.abs_diff(b2) <= levels
+        }
+        _ => a == b,
+    }
 }
 
 /// A `cols × rows` grid of cells, row-major.
@@ -90,6 +106,27 @@ impl CellGrid {
     }
 
     /// The cells of row `y`.
+    /// This grid, but where `shown` (the grid on screen) has a cell within `levels` of this
+    /// one's, that cell: what changes less than that is not worth sending.
+    pub fn keeping_close(&self, shown: &CellGrid, levels: u8) -> CellGrid {
+        if (shown.cols, shown.rows) != (self.cols, self.rows) {
+            return self.clone();
+        }
+        let cells = self
+            .cells
+            .iter()
+            .zip(&shown.cells)
+            .map(|(&new, &old)| {
+                if new.looks_within(old, levels) {
+                    old
+                } else {
+                    new
+                }
+            })
+            .collect();
+        CellGrid { cells, ..*self }
+    }
+
     pub fn row(&self, y: usize) -> &[Cell] {
         &self.cells[y * self.cols..(y + 1) * self.cols]
     }
@@ -98,6 +135,40 @@ impl CellGrid {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_grid_keeps_the_shown_cells_that_changed_by_less_than_the_levels() {
+        let cell = |v: u8, glyph| Cell {
+            glyph,
+            fg: Color::Rgb(v, v, v),
+            bg: Color::Rgb(0, v, 0),
+        };
+        let mut shown = CellGrid::new(3, 1);
+        let mut next = CellGrid::new(3, 1);
+        for (x, (old, new)) in [(100, 104), (100, 105), (100, 100)].into_iter().enumerate() {
+            shown.set(x, 0, cell(old, '▀'));
+            next.set(x, 0, cell(new, '▀'));
+        }
+        let kept = next.keeping_close(&shown, 4);
+        assert_eq!(
+            kept.get(0, 0),
+            shown.get(0, 0),
+            "4 levels: not worth sending"
+        );
+        assert_eq!(kept.get(1, 0), next.get(1, 0), "5 levels: sent");
+        let indexed = Cell {
+            glyph: '▀',
+            fg: Color::Indexed(16),
+            bg: Color::Indexed(17),
+        };
+        assert!(!indexed.looks_within(
+            Cell {
+                fg: Color::Indexed(17),
+                ..indexed
+            },
+            255
+        ));
+    }
 
     const RED: Color = Color::Rgb(255, 0, 0);
     const BLUE: Color = Color::Indexed(4);

@@ -125,6 +125,12 @@ pub struct FrameReport {
     pub passes: u32,
     /// Bytes of the last picture sent as pixels.
     pub picture_bytes: usize,
+    /// Whether more passes of this picture are coming.
+    pub refining: bool,
+    /// Every byte written to the terminal.
+    pub bytes_sent: u64,
+    /// The link's measured throughput in bytes per second, while it holds the frames back.
+    pub link_throughput: Option<f64>,
 }
 
 /// What must be redrawn: the picture (re-render) or only the text around it.
@@ -247,6 +253,12 @@ impl App {
     /// What must be drawn again.
     pub fn dirty(&self) -> Dirty {
         self.dirty
+    }
+
+    /// What the link to the terminal has carried and how fast, for the next status line.
+    pub(super) fn set_link(&mut self, throughput: Option<f64>, bytes_sent: u64) {
+        self.report.link_throughput = throughput;
+        self.report.bytes_sent = bytes_sent;
     }
 
     /// Whether the picture changes with time, so frames must keep coming while the clock runs.

@@ -2,6 +2,7 @@
 //! give the terminal back however it ends.
 
 use super::app::App;
+use super::frame_pacing::FramePacer;
 use super::input::{Input, InputState};
 use super::options::WorkbenchOptions;
 use super::pixel_picture::PixelRoute;
@@ -104,6 +105,8 @@ fn event_loop(
     screen.set_cell_aspect(cell_aspect(app.cell_size), app);
     screen.set_pixel_route(route, app);
     let mut input = InputState::default();
+    let mut pacer = FramePacer::default();
+    pacer.probe((cols, rows));
     let mut last_frame = Instant::now();
     while !app.quit && signals.received().is_none() {
         app.reload_if_changed();
@@ -121,7 +124,12 @@ fn event_loop(
         // Locked per frame, never across the wait: the signal watchdog needs stdout to restore
         // the terminal when this loop is stuck in a poll on a hung-up tty. A failed write means
         // the terminal is gone; the hang-up signal ends the loop.
-        let _ = screen.draw(app, &mut io::stdout().lock());
+        let new_picture = app.dirty.picture;
+        let bytes = screen.draw(app, &mut io::stdout().lock()).unwrap_or(0);
+        if new_picture {
+            pacer.whole_frame(bytes);
+        }
+        landed(&mut pacer, app, &mut screen, bytes);
         // While the picture refines, input is only looked at between its passes: a key waits
         // for at most the pass in flight.
         let wait = match screen.refining(app) {
@@ -132,13 +140,23 @@ fn event_loop(
         if event::poll(wait)? {
             suspend |= handle_pending_events(app, &mut screen, &mut input)?;
         } else {
-            let _ = screen.refine(app, &mut io::stdout().lock());
+            let bytes = screen.refine(app, &mut io::stdout().lock()).unwrap_or(0);
+            landed(&mut pacer, app, &mut screen, bytes);
         }
         if suspend && signals.received().is_none() {
             suspend_until_continued(app, &mut screen, mouse)?;
         }
     }
     Ok(())
+}
+
+/// Waits until the terminal has drawn the frame of `bytes` just written, and lets the link's
+/// speed decide how refinement proceeds and what the status line says of it.
+fn landed(pacer: &mut FramePacer, app: &mut App, screen: &mut Screen, bytes: usize) {
+    let layout = screen.layout();
+    pacer.frame_sent(bytes, Instant::now(), (layout.cols, layout.rows));
+    screen.send_settled_only(pacer.slow());
+    app.set_link(pacer.bottleneck(), pacer.bytes_sent());
 }
 
 /// A signal handler that is removed (the default action back) when this is dropped.

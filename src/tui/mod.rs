@@ -12,6 +12,7 @@ mod diagnostic_box;
 mod error_view;
 mod event_loop;
 mod export;
+mod frame_pacing;
 mod help;
 mod image_shelf;
 mod input;

@@ -21,6 +21,10 @@ use ratatui::widgets::Widget;
 use std::io::{self, Write};
 use std::time::Instant;
 
+/// sRGB levels by which a cell's colour may differ from the settled picture's over a slow link
+/// rather than be sent again: under 2 ΔE at mid-grey, less than side-by-side comparison shows.
+const UNSEEN_CHANGE: u8 = 4;
+
 /// Where things go on a screen of a given size.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Layout {
@@ -82,6 +86,8 @@ pub struct Screen {
     pixel_route: PixelRoute,
     /// The picture rows of the grid last drawn over a pixel picture: the text over it.
     text_over_pixels: Vec<Cell>,
+    /// Whether refinement sends only the settled picture, not the passes on the way (a slow link).
+    settled_only: bool,
 }
 
 impl Screen {
@@ -96,7 +102,14 @@ impl Screen {
             pixels: None,
             pixel_route: PixelRoute::default(),
             text_over_pixels: Vec::new(),
+            settled_only: false,
         }
+    }
+
+    /// Whether refinement sends only the settled picture (over a slow link, where each pass on
+    /// the way would delay it by a whole frame), or also the passes at 4 and 16 samples.
+    pub fn send_settled_only(&mut self, settled_only: bool) {
+        self.settled_only = settled_only;
     }
 
     /// How pixel pictures reach the terminal now.
@@ -247,14 +260,24 @@ impl Screen {
         // converging picture costs a slow link three frames more, not one per pass.
         let passes = self.accumulation.passes();
         let quadrupled = passes.is_power_of_two() && passes.trailing_zeros().is_multiple_of(2);
-        if !quadrupled && self.accumulation.wants_more() {
+        if (!quadrupled || self.settled_only) && self.accumulation.wants_more() {
             return Ok(0);
         }
         let options = EncodeOptions::new(app.colors, app.glyphs);
-        self.picture = encode_cells(&self.accumulation.mean(), pass.size, options);
+        let settled = encode_cells(&self.accumulation.mean(), pass.size, options);
+        // Over a slow link a cell is sent again only where it changes visibly.
+        self.picture = match self.settled_only {
+            true => settled.keeping_close(&self.picture, UNSEEN_CHANGE),
+            false => settled,
+        };
         app.report.passes = self.accumulation.passes();
+        app.report.refining = self.accumulation.wants_more();
         let grid = self.compose(app);
-        self.writer.draw(out, &grid)
+        let bytes = self.writer.draw(out, &grid)?;
+        if bytes > 0 {
+            app.report.bytes = bytes;
+        }
+        Ok(bytes)
     }
 
     /// The cells the picture covers, across and down.
@@ -273,6 +296,7 @@ impl Screen {
         app.report.stats = pass.rendered.stats;
         app.report.psnr_db = pass.rendered.psnr_db;
         app.report.passes = pixels.passes();
+        app.report.refining = pixels.refining();
     }
 
     fn refine_pixels(&mut self, app: &mut App, out: &mut impl Write) -> io::Result<usize> {
@@ -281,6 +305,7 @@ impl Screen {
         let pixels = self.pixels.as_mut().expect("in pixel mode");
         let ready = pixels.refine(&View::of(app), cells, supersampling, &mut self.framebuffer);
         app.report.passes = pixels.passes();
+        app.report.refining = pixels.refining();
         match ready {
             true => self.draw_over_pixels(app, out),
             false => Ok(0),
@@ -341,6 +366,7 @@ impl Screen {
         app.report.psnr_db = pass.rendered.psnr_db;
         self.accumulation.restart(pass.linear, pass.size);
         app.report.passes = 1;
+        app.report.refining = refines(app.view_mode) && self.accumulation.wants_more();
     }
 
     fn render_pass(&mut self, app: &App, sampling: Sampling) -> super::render::PicturePass {

@@ -117,7 +117,15 @@ fn segments(app: &App) -> Vec<Segment> {
             format!("picture {} B", si(report.picture_bytes)),
         ));
     } else if report.bytes > 0 {
-        list.push(segment(4, format!("{} B", si(report.bytes))));
+        let sent = si(report.bytes_sent.max(report.bytes as u64) as usize);
+        list.push(segment(4, format!("{} B, {sent} B sent", si(report.bytes))));
+    }
+    // Over a slow link the settled picture is seconds away: say so at every width.
+    if let Some(rate) = report.link_throughput {
+        list.insert(1, segment(1, format!("link {} B/s", si(rate as usize))));
+    }
+    if report.refining {
+        list.insert(1, segment(0, "refining".into()));
     }
     if let Some(db) = report.psnr_db {
         list.insert(2, segment(1, psnr_text(db)));

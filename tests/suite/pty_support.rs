@@ -54,14 +54,10 @@ impl Session {
         Session::start(command, (cols, rows), false)
     }
 
-    /// As `spawn`; with `answer_attributes`, the terminal answers the primary device attributes
-    /// query (DA1) as a VT220 without graphics, as every real terminal answers it, so the program
-    /// need not wait out its time-out for replies.
-    fn start(
-        command: CommandBuilder,
-        (cols, rows): (u16, u16),
-        answer_attributes: bool,
-    ) -> Session {
+    /// As `spawn`; with `answer_queries`, the terminal answers the primary device attributes
+    /// query (DA1) as a VT220 without graphics and the cursor position report, as every real
+    /// terminal answers them, so the program need not wait out its time-outs for replies.
+    fn start(command: CommandBuilder, (cols, rows): (u16, u16), answer_queries: bool) -> Session {
         let pty = native_pty_system()
             .openpty(PtySize {
                 rows,
@@ -89,15 +85,26 @@ impl Session {
         let answers = Arc::clone(&writer);
         std::thread::spawn(move || {
             let mut buffer = [0u8; 65536];
-            let mut asked = DeviceAttributesQuery::default();
+            let mut attributes = QueryFinder::new(QueryFinder::DEVICE_ATTRIBUTES);
+            let mut position = QueryFinder::new(QueryFinder::CURSOR_POSITION);
             while let Ok(n @ 1..) = reader.read(&mut buffer) {
-                if answer_attributes && asked.found_in(&buffer[..n]) {
-                    let mut answers = answers.lock().unwrap();
-                    let _ = answers
-                        .write_all(b"\x1b[?62;22c")
-                        .and_then(|()| answers.flush());
+                let piece = &buffer[..n];
+                let mut answer = Vec::new();
+                if answer_queries && attributes.found_in(piece) {
+                    answer.extend_from_slice(b"\x1b[?62;22c");
                 }
-                feed.lock().unwrap().process(&buffer[..n]);
+                let mut parser = feed.lock().unwrap();
+                parser.process(piece);
+                if answer_queries && position.found_in(piece) {
+                    // Where the cursor is once all that came before is drawn, as a terminal answers.
+                    let (row, col) = parser.screen().cursor_position();
+                    answer.extend_from_slice(format!("\x1b[{};{}R", row + 1, col + 1).as_bytes());
+                }
+                drop(parser);
+                if !answer.is_empty() {
+                    let mut answers = answers.lock().unwrap();
+                    let _ = answers.write_all(&answer).and_then(|()| answers.flush());
+                }
                 let mut kept = keep.lock().unwrap();
                 if kept.len() + n <= KEPT_OUTPUT {
                     kept.extend_from_slice(&buffer[..n]);
@@ -206,21 +213,30 @@ pub fn status_contains(text: &'static str) -> impl Fn(&vt100::Screen) -> bool {
     }
 }
 
-/// Finds `ESC [ c` in output read in pieces, so a query split between two reads is found too.
-#[derive(Default)]
-struct DeviceAttributesQuery {
+/// Finds a query (`ESC [ c`, `ESC [ 6 n`) in output read in pieces, so a query split between two
+/// reads is found too.
+struct QueryFinder {
+    query: &'static [u8],
     /// The last bytes of the previous piece.
     tail: Vec<u8>,
 }
 
-impl DeviceAttributesQuery {
-    const QUERY: &'static [u8] = b"\x1b[c";
+impl QueryFinder {
+    const DEVICE_ATTRIBUTES: &'static [u8] = b"\x1b[c";
+    const CURSOR_POSITION: &'static [u8] = b"\x1b[6n";
+
+    fn new(query: &'static [u8]) -> QueryFinder {
+        QueryFinder {
+            query,
+            tail: Vec::new(),
+        }
+    }
 
     fn found_in(&mut self, piece: &[u8]) -> bool {
         let mut seen = std::mem::take(&mut self.tail);
         seen.extend_from_slice(piece);
-        let found = seen.windows(Self::QUERY.len()).any(|w| w == Self::QUERY);
-        let keep = seen.len().min(Self::QUERY.len() - 1);
+        let found = seen.windows(self.query.len()).any(|w| w == self.query);
+        let keep = seen.len().min(self.query.len() - 1);
         self.tail = seen[seen.len() - keep..].to_vec();
         found
     }
