@@ -129,7 +129,7 @@ fn event_loop(
         if new_picture {
             pacer.whole_frame(bytes);
         }
-        landed(&mut pacer, app, &mut screen, bytes);
+        landed(&mut pacer, app, &mut screen, bytes, signals);
         // While the picture refines, input is only looked at between its passes: a key waits
         // for at most the pass in flight.
         let wait = match screen.refining(app) {
@@ -141,7 +141,7 @@ fn event_loop(
             suspend |= handle_pending_events(app, &mut screen, &mut input)?;
         } else {
             let bytes = screen.refine(app, &mut io::stdout().lock()).unwrap_or(0);
-            landed(&mut pacer, app, &mut screen, bytes);
+            landed(&mut pacer, app, &mut screen, bytes, signals);
         }
         if suspend && signals.received().is_none() {
             suspend_until_continued(app, &mut screen, mouse)?;
@@ -152,9 +152,16 @@ fn event_loop(
 
 /// Waits until the terminal has drawn the frame of `bytes` just written, and lets the link's
 /// speed decide how refinement proceeds and what the status line says of it.
-fn landed(pacer: &mut FramePacer, app: &mut App, screen: &mut Screen, bytes: usize) {
+fn landed(
+    pacer: &mut FramePacer,
+    app: &mut App,
+    screen: &mut Screen,
+    bytes: usize,
+    signals: &ShutdownSignals,
+) {
     let layout = screen.layout();
-    pacer.frame_sent(bytes, Instant::now(), (layout.cols, layout.rows));
+    let stop = || signals.received().is_some();
+    pacer.frame_sent(bytes, Instant::now(), (layout.cols, layout.rows), &stop);
     screen.send_settled_only(pacer.slow());
     app.set_link(pacer.bottleneck(), pacer.bytes_sent());
 }

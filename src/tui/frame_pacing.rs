@@ -23,8 +23,10 @@ const LONGEST_WAIT: Duration = Duration::from_secs(30);
 /// Frames smaller than this are too small to time a link by: the round trip dominates.
 const TIMED_FRAME_BYTES: usize = 16 * 1024;
 
-/// A frame that would take longer than this to cross the link makes it slow (see [`FramePacer::slow`]).
-const SLOW_FRAME: Duration = Duration::from_millis(150);
+/// A whole picture that takes the link longer than this makes it slow (see [`FramePacer::slow`]):
+/// refinement's passes then cost more to send than to render (all 64 take ~70 ms here), and a
+/// pass sent on the way only delays the settled picture.
+const SLOW_FRAME: Duration = Duration::from_millis(40);
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Answers {
@@ -69,15 +71,22 @@ impl FramePacer {
             self.answers = Answers::None;
             return;
         }
-        self.answers = match self.wait_for_answer((0, rows - 1)) {
+        self.answers = match self.wait_for_answer((0, rows - 1), &|| false) {
             true => Answers::Given,
             false => Answers::None,
         };
     }
 
     /// After `bytes` of a frame were written (from `sent` on) to a screen of `cols` × `rows`:
-    /// returns once the terminal has drawn them, or at once where it does not answer.
-    pub fn frame_sent(&mut self, bytes: usize, sent: Instant, (cols, rows): (u16, u16)) {
+    /// returns once the terminal has drawn them, at once where it does not answer, or soon after
+    /// `stop` says to (a shutdown signal).
+    pub fn frame_sent(
+        &mut self,
+        bytes: usize,
+        sent: Instant,
+        (cols, rows): (u16, u16),
+        stop: &dyn Fn() -> bool,
+    ) {
         if bytes == 0 {
             return;
         }
@@ -90,19 +99,19 @@ impl FramePacer {
         if ask_at(asked).is_err() {
             return;
         }
-        if self.wait_for_answer(asked) {
+        if self.wait_for_answer(asked, stop) {
             self.time(bytes, sent.elapsed());
         }
     }
 
     /// Waits for the answer to the question asked at `asked`; false after the time-out.
-    fn wait_for_answer(&self, asked: (u16, u16)) -> bool {
+    fn wait_for_answer(&self, asked: (u16, u16), stop: &dyn Fn() -> bool) -> bool {
         let limit = match self.answers {
             Answers::Unknown => FIRST_ANSWER,
             _ => LONGEST_WAIT,
         };
         let start = Instant::now();
-        while start.elapsed() < limit {
+        while start.elapsed() < limit && !stop() {
             // Each call asks again from the same place, so any answer from there will do.
             match crossterm::cursor::position() {
                 Ok(at) if at == asked => return true,

@@ -1,7 +1,7 @@
 //! The status line: what is shown and what it cost, shortened to fit by dropping the least
 //! important parts first.
 
-use super::app::{App, Message};
+use super::app::{App, FrameReport, Message};
 use super::material_controls::{ParamRow, ParamSlot};
 use crate::scene::{BumpSource, Material, Texturing};
 use crate::term::{ColorMode, GlyphSet, sanitize};
@@ -32,8 +32,15 @@ pub struct StatusLine {
 /// The status line for `app`, at most `width` characters, ending in `? help` from 40 up.
 pub fn status_line(app: &App, width: usize) -> StatusLine {
     let hint = width >= HELP_HINT_FROM;
+    // Whether the picture is still coming stands at the right, beside the hint, at every width
+    // that has one: over a slow link the settled picture can be seconds away.
+    let progress = progress_text(&app.report).filter(|_| hint);
+    let tail = match &progress {
+        Some(progress) => format!("{SEPARATOR}{progress}{SEPARATOR}{HELP_HINT}"),
+        None => format!("{SEPARATOR}{HELP_HINT}"),
+    };
     let room = match hint {
-        true => width - HELP_HINT.len() - SEPARATOR.chars().count(),
+        true => width - tail.chars().count(),
         false => width,
     };
     let mut segments = segments(app);
@@ -54,9 +61,19 @@ pub fn status_line(app: &App, width: usize) -> StatusLine {
     let error_chars = error_chars.min(text.chars().count());
     if hint {
         let pad = room - text.chars().count();
-        text = format!("{text}{}{SEPARATOR}{HELP_HINT}", " ".repeat(pad));
+        text = format!("{text}{}{tail}", " ".repeat(pad));
     }
     StatusLine { text, error_chars }
+}
+
+/// `refining` while more passes of the picture are coming, with the link's throughput where it
+/// holds them back.
+fn progress_text(report: &FrameReport) -> Option<String> {
+    match (report.refining, report.link_throughput) {
+        (false, _) => None,
+        (true, None) => Some("refining".into()),
+        (true, Some(rate)) => Some(format!("refining, link {} B/s", si(rate as usize))),
+    }
 }
 
 /// How an error shows: red where there is colour, bold where there is none.
@@ -120,13 +137,7 @@ fn segments(app: &App) -> Vec<Segment> {
         let sent = si(report.bytes_sent.max(report.bytes as u64) as usize);
         list.push(segment(4, format!("{} B, {sent} B sent", si(report.bytes))));
     }
-    // Over a slow link the settled picture is seconds away: say so at every width.
-    if let Some(rate) = report.link_throughput {
-        list.insert(1, segment(1, format!("link {} B/s", si(rate as usize))));
-    }
-    if report.refining {
-        list.insert(1, segment(0, "refining".into()));
-    }
+
     if let Some(db) = report.psnr_db {
         list.insert(2, segment(1, psnr_text(db)));
     }
@@ -284,5 +295,30 @@ mod tests {
         assert_eq!(truncate("abc", 0), "");
         assert_eq!(truncate("abc", 1), "…");
         assert_eq!(si(22_876), "22.9k");
+    }
+
+    #[test]
+    fn refining_and_a_slow_link_show_at_every_width_with_the_hint() {
+        let options = crate::tui::WorkbenchOptions {
+            scenes: vec!["sphere-on-plane-dimples".into()],
+            ..Default::default()
+        };
+        let mut app = App::new(&options, ColorMode::TrueColor).unwrap();
+        app.report.refining = true;
+        app.report.link_throughput = Some(250_000.0);
+        for width in [40, 80, 160] {
+            let line = status_line(&app, width).text;
+            assert!(
+                line.ends_with("refining, link 250.0k B/s │ ? help"),
+                "{width}: {line}"
+            );
+            assert_eq!(line.chars().count(), width);
+        }
+        app.report.refining = false;
+        assert!(!status_line(&app, 160).text.contains("refining"));
+        assert!(
+            !status_line(&app, 160).text.contains("link"),
+            "settled: nothing held back"
+        );
     }
 }
