@@ -126,6 +126,29 @@ fn run(args: &[&str]) -> Output {
 }
 
 fn start_sshd(dir: &Path, namespace: &str, port: u16) -> Child {
+    write_sshd_files(dir, port);
+    let _ = std::fs::create_dir_all("/run/sshd");
+    Command::new("ip")
+        .args([
+            "netns",
+            "exec",
+            namespace,
+            "/usr/sbin/sshd",
+            "-D",
+            "-e",
+            "-f",
+        ])
+        .arg(dir.join("sshd_config"))
+        .stdin(Stdio::null())
+        .stdout(Stdio::null())
+        .stderr(std::fs::File::create(dir.join("sshd.log")).unwrap())
+        .spawn()
+        .expect("sshd starts")
+}
+
+/// A host key, a user key allowed in, and an `sshd_config` in `dir` for an `sshd` listening on
+/// 127.0.0.1:`port`, logging in by that key alone.
+pub fn write_sshd_files(dir: &Path, port: u16) {
     for key in ["host_key", "user_key"] {
         let path = dir.join(key);
         run(&[
@@ -149,23 +172,6 @@ fn start_sshd(dir: &Path, namespace: &str, port: u16) -> Child {
         dir = dir.display()
     );
     std::fs::write(dir.join("sshd_config"), config).unwrap();
-    let _ = std::fs::create_dir_all("/run/sshd");
-    Command::new("ip")
-        .args([
-            "netns",
-            "exec",
-            namespace,
-            "/usr/sbin/sshd",
-            "-D",
-            "-e",
-            "-f",
-        ])
-        .arg(dir.join("sshd_config"))
-        .stdin(Stdio::null())
-        .stdout(Stdio::null())
-        .stderr(std::fs::File::create(dir.join("sshd.log")).unwrap())
-        .spawn()
-        .expect("sshd starts")
 }
 
 /// What the remote workbench's status line says of its picture.

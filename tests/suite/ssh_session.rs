@@ -12,6 +12,7 @@
 
 #![cfg(unix)]
 
+use crate::shaped_link::write_sshd_files;
 use crate::test_dir::TestDir;
 use crate::tmux_support::{DEADLINE, Tmux, eventually, require};
 use std::net::{Ipv4Addr, TcpListener, TcpStream};
@@ -32,15 +33,6 @@ impl Drop for Server {
     }
 }
 
-fn keygen(path: &Path) {
-    let status = Command::new("ssh-keygen")
-        .args(["-q", "-t", "ed25519", "-N", "", "-f"])
-        .arg(path)
-        .status()
-        .unwrap();
-    assert!(status.success(), "ssh-keygen failed");
-}
-
 fn user() -> String {
     let output = Command::new("id").arg("-un").output().unwrap();
     String::from_utf8(output.stdout).unwrap().trim().to_string()
@@ -55,18 +47,7 @@ fn free_port() -> u16 {
 }
 
 fn start_sshd(dir: &Path, port: u16) -> Server {
-    keygen(&dir.join("host_key"));
-    keygen(&dir.join("user_key"));
-    std::fs::copy(dir.join("user_key.pub"), dir.join("authorized_keys")).unwrap();
-    let config = format!(
-        "Port {port}\nListenAddress 127.0.0.1\nHostKey {dir}/host_key\nPidFile {dir}/sshd.pid\n\
-         AuthorizedKeysFile {dir}/authorized_keys\nStrictModes no\nUsePAM no\n\
-         PasswordAuthentication no\nKbdInteractiveAuthentication no\nPubkeyAuthentication yes\n\
-         PermitRootLogin prohibit-password\nAllowTcpForwarding no\nX11Forwarding no\n\
-         PrintMotd no\nPrintLastLog no\nLogLevel ERROR\n",
-        dir = dir.display()
-    );
-    std::fs::write(dir.join("sshd_config"), config).unwrap();
+    write_sshd_files(dir, port);
     // As root, sshd wants its privilege-separation directory.
     let _ = std::fs::create_dir_all("/run/sshd");
     let child = Command::new(SSHD)
