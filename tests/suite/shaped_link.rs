@@ -297,6 +297,32 @@ impl RemoteView {
         None
     }
 
+    /// `key` sent `count` times, `apart`; the time from the last until a new view shows: the
+    /// status line turns to `refining` from a settled picture (the one before, if its last pass
+    /// was still on the way) or from the moment of the key.
+    fn taps(&self, key: &str, count: u32, apart: Duration) -> Option<Duration> {
+        let mut shown = None;
+        for _ in 0..count {
+            let tap = Instant::now();
+            self.send(key);
+            let mut settled_since = self.shown() != Shown::Refining;
+            shown = None;
+            while tap.elapsed() < apart.max(STEP_LIMIT / 4) {
+                match self.shown() {
+                    Shown::Refining if settled_since => {
+                        shown = Some(tap.elapsed());
+                        break;
+                    }
+                    Shown::Refining => {}
+                    _ => settled_since = true,
+                }
+                std::thread::sleep(POLL);
+            }
+            std::thread::sleep(apart.saturating_sub(tap.elapsed()));
+        }
+        shown
+    }
+
     /// `key` sent every 30 ms for `held`, as a terminal repeats a held key.
     fn hold(&self, key: &str, held: Duration) -> Instant {
         let start = Instant::now();
@@ -325,6 +351,8 @@ pub struct Figures {
     pub held_settled: Option<Duration>,
     /// After `q` right after an arrow held 0.6 s.
     pub quit_after_held: Option<Duration>,
+    /// The fifth of five arrows a second apart, until its view shows.
+    pub fifth_tap_shown: Option<Duration>,
 }
 
 /// Drives the workbench over `link` through start-up, one arrow, a held arrow, and `q` after
@@ -343,6 +371,7 @@ pub fn measure(link: &ShapedLink, binary: &Path, scene: &str, size: (u16, u16)) 
     figures.arrow_settled = view.settled(arrow);
     let released = view.hold("Left", Duration::from_millis(600));
     figures.held_settled = view.settled(released);
+    figures.fifth_tap_shown = view.taps("Up", 5, Duration::from_secs(1));
     view.hold("Right", Duration::from_millis(600));
     let quit = Instant::now();
     view.send("q");
