@@ -380,4 +380,31 @@ fn picture_quality_of(scene: &str) {
             "",
         );
     }
+    app.set_colors(ColorMode::TrueColor);
+    slow_link_refinement(&mut app, &reference, size);
+}
+
+/// Refinement as a slow link gets it (the settled picture alone after the first, only its cells
+/// that move visibly): the settled picture's fidelity and its bytes beside the first frame's.
+fn slow_link_refinement(app: &mut App, reference: &[[u8; 3]], size: (usize, usize)) {
+    let (cols, rows) = (QUALITY_COLS as usize, QUALITY_ROWS as usize - 1);
+    let mut screen = Screen::new(QUALITY_COLS, QUALITY_ROWS);
+    screen.send_settled_only(true);
+    let mut bytes = Vec::new();
+    app.invalidate();
+    screen.draw(app, &mut bytes).unwrap();
+    let first = bytes.len();
+    let mut frames = 1;
+    while screen.refining(app) {
+        frames += usize::from(screen.refine(app, &mut bytes).unwrap() > 0);
+    }
+    let shown = shown_sub_pixels(&bytes, cols, rows);
+    println!(
+        "{:<10} over a slow link: settled {}; first frame {first} B, then {} B in {} frame(s) ({:.0} % of the first)",
+        "TrueColor",
+        fidelity(&shown, reference, size),
+        bytes.len() - first,
+        frames - 1,
+        100.0 * (bytes.len() - first) as f64 / first as f64
+    );
 }
