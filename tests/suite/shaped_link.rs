@@ -68,12 +68,14 @@ impl ShapedLink {
         link
     }
 
-    fn ssh_command(&self) -> String {
+    /// The ssh client's command line into the namespace's sshd; with `tty`, a remote terminal.
+    fn ssh_command(&self, tty: bool) -> String {
         format!(
-            "ip netns exec {namespace} ssh -tt -i {dir}/user_key -o StrictHostKeyChecking=no \
+            "ip netns exec {namespace} ssh{tty} -i {dir}/user_key -o StrictHostKeyChecking=no \
              -o UserKnownHostsFile=/dev/null -o BatchMode=yes -o LogLevel=ERROR -p {port} \
              root@127.0.0.1",
             namespace = self.namespace,
+            tty = if tty { " -tt" } else { "" },
             dir = self.dir.path().display(),
             port = self.port,
         )
@@ -82,7 +84,7 @@ impl ShapedLink {
     fn wait_until_listening(&self) {
         let start = Instant::now();
         loop {
-            let probe = format!("{} true", self.ssh_command().replace(" -tt", ""));
+            let probe = format!("{} true", self.ssh_command(false));
             let ok = Command::new("sh")
                 .args(["-c", &probe])
                 .stdin(Stdio::null())
@@ -214,7 +216,7 @@ impl RemoteView {
         };
         let command = format!(
             "{} 'exec {} view {scene} --colors truecolor --no-watch'",
-            link.ssh_command(),
+            link.ssh_command(true),
             binary.display()
         );
         let output = view.tmux(&[
