@@ -1,8 +1,9 @@
 //! The workbench over a slow SSH link (sshd in a network namespace shaped with `tc … tbf`, the
-//! real `ssh -tt` in tmux): from start, one arrow, an arrow held 0.6 s, five arrows a second apart
-//! and `q` after a held arrow, the time until the picture shows and settles, at 2 and 10 Mbit/s,
-//! at 160×50 and 80×24 cells. Medians of 3 runs, with their range. `BUMPWORK_BINARY=PATH`
-//! measures another build beside this one (say the last release), in the same run.
+//! real `ssh -tt` in tmux): from start, one arrow, an arrow held 0.6 s, five arrows a second
+//! apart, `q` after a held arrow and `q` while an arrow's view is on the way, the time until the
+//! picture shows and settles, at 2 and 10 Mbit/s, at 160×50 and 80×24 cells. Medians of 3 runs,
+//! with their range. `BUMPWORK_BINARY=PATH` measures another build beside this one (say the last
+//! release), in the same run.
 //!
 //! Needs root, `ip`, `tc`, `sshd`, `ssh` and `tmux`. Run: `cargo bench --bench slow_link`.
 
@@ -66,7 +67,7 @@ type Figure = fn(&Figures) -> Option<Duration>;
 
 fn report(label: &str, runs: &[Figures]) {
     println!("\n{label}");
-    let rows: [(&str, Figure); 7] = [
+    let rows: [(&str, Figure); 8] = [
         ("start-up: first picture", |f| f.first_picture),
         ("start-up: settled", |f| f.start_settled),
         ("one arrow: new view shown", |f| f.arrow_shown),
@@ -74,6 +75,7 @@ fn report(label: &str, runs: &[Figures]) {
         ("held arrow: settled after release", |f| f.held_settled),
         ("fifth of 5 arrows 1 s apart: shown", |f| f.fifth_tap_shown),
         ("q after a held arrow: ended", |f| f.quit_after_held),
+        ("q as an arrow's view comes: ended", |f| f.quit_mid_view),
     ];
     for (what, figure) in rows {
         let mut seconds: Vec<f64> = runs

@@ -35,6 +35,22 @@ pub fn encode_frame(
     options: FrameOptions,
     out: &mut Vec<u8>,
 ) {
+    encode_rows(previous, next, options, out, None);
+}
+
+/// What ends a frame cut short at one of its [`FrameWriter::cut_points`]: default colours, and
+/// the end of the synchronized update.
+pub const CUT_FRAME_END: &[u8] = b"\x1b[m\x1b[?2026l";
+
+/// [`encode_frame`], noting in `row_starts` where in `out` each row with a change begins
+/// (offset, row).
+fn encode_rows(
+    previous: Option<&CellGrid>,
+    next: &CellGrid,
+    options: FrameOptions,
+    out: &mut Vec<u8>,
+    mut row_starts: Option<&mut Vec<(usize, usize)>>,
+) {
     let previous = previous.filter(|p| p.cols() == next.cols() && p.rows() == next.rows());
     let changed =
         |x: usize, y: usize| previous.is_none_or(|p| !p.get(x, y).looks_same(next.get(x, y)));
@@ -50,13 +66,17 @@ pub fn encode_frame(
     for y in 0..next.rows() {
         let row = next.row(y);
         let mut x = 0;
+        let mut drew_row = false;
         while x < row.len() {
             if !changed(x, y) {
                 x += 1;
                 continue;
             }
+            if let Some(starts) = row_starts.as_deref_mut().filter(|_| !drew_row) {
+                starts.push((frame.out.len(), y));
+            }
+            drew_row = true;
             frame.go_to(row, x, y);
-            drew = true;
             let run = || {
                 row[x + 1..]
                     .iter()
@@ -74,6 +94,7 @@ pub fn encode_frame(
                 x += 1;
             }
         }
+        drew |= drew_row;
     }
     if !drew {
         frame.out.truncate(start);
@@ -253,7 +274,11 @@ fn forms(cell: Cell) -> [Option<(char, Need)>; 2] {
 pub struct FrameWriter {
     options: FrameOptions,
     shown: Option<CellGrid>,
+    /// What was on screen before the last frame, for the rows of a frame cut short.
+    before: Option<CellGrid>,
     scratch: Vec<u8>,
+    /// Where the last frame may be cut short (see [`FrameWriter::cut_points`]).
+    row_starts: Vec<(usize, usize)>,
 }
 
 impl FrameWriter {
@@ -265,7 +290,9 @@ impl FrameWriter {
                 repeat: false,
             },
             shown: None,
+            before: None,
             scratch: Vec::new(),
+            row_starts: Vec::new(),
         }
     }
 
@@ -309,6 +336,8 @@ impl FrameWriter {
         encode_frame(Some(under), grid, self.options, &mut part);
         self.scratch.extend_from_slice(unwrapped(&part));
         self.scratch.extend_from_slice(SYNC_END);
+        // A picture's sequences cannot be cut short.
+        self.row_starts.clear();
         self.send(out, grid)
     }
 
@@ -317,7 +346,15 @@ impl FrameWriter {
     /// the next frame is drawn in full.
     pub fn draw(&mut self, out: &mut impl Write, grid: &CellGrid) -> io::Result<usize> {
         self.scratch.clear();
-        encode_frame(self.shown.as_ref(), grid, self.options, &mut self.scratch);
+        self.row_starts.clear();
+        let starts = Some(&mut self.row_starts);
+        encode_rows(
+            self.shown.as_ref(),
+            grid,
+            self.options,
+            &mut self.scratch,
+            starts,
+        );
         if self.scratch.is_empty() {
             return Ok(0);
         }
@@ -331,10 +368,31 @@ impl FrameWriter {
             self.shown = None;
             return Err(error);
         }
+        std::mem::swap(&mut self.before, &mut self.shown);
         match &mut self.shown {
             Some(shown) => shown.clone_from(grid),
             None => self.shown = Some(grid.clone()),
         }
         Ok(self.scratch.len())
+    }
+
+    /// Where the frame last written may be cut short: for each row it changes, the offset in
+    /// its bytes where that row begins (whole escape sequences before it), and the row. A frame
+    /// cut at one of them ends with [`CUT_FRAME_END`]; none for a frame with a pixel picture.
+    pub fn cut_points(&self) -> &[(usize, usize)] {
+        &self.row_starts
+    }
+
+    /// The frame last written was cut short before grid row `row`: the rows from there on still
+    /// show what they showed before it.
+    pub fn cut_before_row(&mut self, row: usize) {
+        match (&mut self.shown, &self.before) {
+            (Some(shown), Some(before))
+                if (shown.cols(), shown.rows()) == (before.cols(), before.rows()) =>
+            {
+                shown.copy_rows_from(before, row)
+            }
+            _ => self.shown = None,
+        }
     }
 }

@@ -105,7 +105,6 @@ impl CellGrid {
         self.cells[y * self.cols + x] = cell;
     }
 
-    /// The cells of row `y`.
     /// This grid, but where `shown` (the grid on screen) has a cell within `levels` of this
     /// one's, that cell: what changes less than that is not worth sending.
     pub fn keeping_close(&self, shown: &CellGrid, levels: u8) -> CellGrid {
@@ -127,8 +126,15 @@ impl CellGrid {
         CellGrid { cells, ..*self }
     }
 
+    /// The cells of row `y`.
     pub fn row(&self, y: usize) -> &[Cell] {
         &self.cells[y * self.cols..(y + 1) * self.cols]
+    }
+
+    /// Copies `other`'s rows from `first` on into this grid of the same size.
+    pub fn copy_rows_from(&mut self, other: &CellGrid, first: usize) {
+        let start = (first * self.cols).min(self.cells.len());
+        self.cells[start..].copy_from_slice(&other.cells[start..]);
     }
 }
 

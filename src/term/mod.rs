@@ -67,7 +67,9 @@ mod split;
 mod terminfo;
 mod tmux_query;
 
-pub use ansi_writer::{FrameOptions, FrameWriter, SYNC_BEGIN, SYNC_END, encode_frame};
+pub use ansi_writer::{
+    CUT_FRAME_END, FrameOptions, FrameWriter, SYNC_BEGIN, SYNC_END, encode_frame,
+};
 pub use cell::{Cell, CellGrid};
 pub use color::Color;
 pub use color_mode::{

@@ -840,6 +840,11 @@ impl App {
         self.dirty = Dirty::ALL;
     }
 
+    /// Marks the text for redrawing: the screen sends whatever it has not yet sent.
+    pub fn redraw_text(&mut self) {
+        self.dirty.text = true;
+    }
+
     pub fn mark_drawn(&mut self) {
         self.dirty = Dirty {
             picture: false,

@@ -15,7 +15,7 @@ use crate::term::{
     ShutdownSignals, TerminalGuard, in_tmux, tmux_client_features, tmux_passes_through,
 };
 use crossterm::event;
-use std::io;
+use std::io::{self, Write};
 use std::path::Path;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -104,11 +104,20 @@ fn event_loop(
     let mut screen = Screen::new(cols, rows);
     screen.set_cell_aspect(cell_aspect(app.cell_size), app);
     screen.set_pixel_route(route, app);
-    let mut input = InputState::default();
     let mut pacer = FramePacer::default();
     pacer.probe((cols, rows));
+    let mut session = Session {
+        app,
+        screen,
+        input: InputState::default(),
+        pacer,
+        signals,
+        suspend: false,
+        frame: Vec::new(),
+    };
     let mut last_frame = Instant::now();
-    while !app.quit && signals.received().is_none() {
+    while !session.over() {
+        let app = &mut *session.app;
         app.reload_if_changed();
         app.poll_export();
         app.expire_message(Instant::now());
@@ -121,49 +130,128 @@ fn event_loop(
         if app.dirty.picture {
             last_frame = Instant::now();
         }
-        // Locked per frame, never across the wait: the signal watchdog needs stdout to restore
-        // the terminal when this loop is stuck in a poll on a hung-up tty. A failed write means
-        // the terminal is gone; the hang-up signal ends the loop.
-        let new_picture = app.dirty.picture;
-        let bytes = screen.draw(app, &mut io::stdout().lock()).unwrap_or(0);
-        if new_picture {
-            pacer.whole_frame(bytes);
-        }
-        landed(&mut pacer, app, &mut screen, bytes, signals);
+        session.draw()?;
         // While the picture refines, input is only looked at between its passes: a key waits
         // for at most the pass in flight.
-        let wait = match screen.refining(app) {
+        let wait = match session.screen.refining(session.app) {
             true => Duration::ZERO,
-            false => wait_time(app, last_frame),
+            false => wait_time(session.app, last_frame),
         };
-        let mut suspend = suspend_asked.swap(false, Ordering::SeqCst);
-        if event::poll(wait)? {
-            suspend |= handle_pending_events(app, &mut screen, &mut input)?;
-        } else {
-            let bytes = screen.refine(app, &mut io::stdout().lock()).unwrap_or(0);
-            landed(&mut pacer, app, &mut screen, bytes, signals);
+        session.suspend |= suspend_asked.swap(false, Ordering::SeqCst);
+        if !session.over() && !session.suspend {
+            if event::poll(wait)? {
+                session.handle_pending_events()?;
+            } else {
+                session.refine()?;
+            }
         }
-        if suspend && signals.received().is_none() {
-            suspend_until_continued(app, &mut screen, mouse)?;
+        if std::mem::take(&mut session.suspend) && signals.received().is_none() {
+            suspend_until_continued(session.app, &mut session.screen, mouse)?;
         }
     }
     Ok(())
 }
 
-/// Waits until the terminal has drawn the frame of `bytes` just written, and lets the link's
-/// speed decide how refinement proceeds and what the status line says of it.
-fn landed(
-    pacer: &mut FramePacer,
-    app: &mut App,
-    screen: &mut Screen,
-    bytes: usize,
-    signals: &ShutdownSignals,
-) {
-    let layout = screen.layout();
-    let stop = || signals.received().is_some();
-    pacer.frame_sent(bytes, Instant::now(), (layout.cols, layout.rows), &stop);
-    screen.send_settled_only(pacer.slow());
-    app.set_link(pacer.bottleneck(), pacer.bytes_sent());
+/// What the loop drives: the app, the screen showing it, and the link to the terminal.
+struct Session<'a> {
+    app: &'a mut App,
+    screen: Screen,
+    input: InputState,
+    pacer: FramePacer,
+    signals: &'a ShutdownSignals,
+    /// A suspend key was read.
+    suspend: bool,
+    /// The bytes of the frame going out.
+    frame: Vec<u8>,
+}
+
+impl Session<'_> {
+    /// Quitting, or a shutdown signal came.
+    fn over(&self) -> bool {
+        self.app.quit || self.signals.received().is_some()
+    }
+
+    /// Draws what changed.
+    fn draw(&mut self) -> io::Result<()> {
+        self.frame.clear();
+        let new_picture = self.app.dirty.picture;
+        // Into memory, so it cannot fail.
+        let _ = self.screen.draw(self.app, &mut self.frame);
+        if new_picture {
+            self.pacer.whole_frame(self.frame.len());
+        }
+        self.show(new_picture)
+    }
+
+    /// Renders one more pass of a refining picture, and draws it when it is due.
+    fn refine(&mut self) -> io::Result<()> {
+        self.frame.clear();
+        let _ = self.screen.refine(self.app, &mut self.frame);
+        self.show(false)
+    }
+
+    /// Sends the frame drawn, and waits until the terminal has drawn it. Input that comes
+    /// meanwhile is handled at once; it cuts a frame short when it quits or suspends, or, unless
+    /// the frame is a `new_picture` (a new view is always shown whole), when it changes the
+    /// picture the frame refines. The link's speed then decides how refinement proceeds and
+    /// what the status line says of it.
+    fn show(&mut self, new_picture: bool) -> io::Result<()> {
+        if self.frame.is_empty() {
+            return Ok(());
+        }
+        // Input may resize the screen while the frame goes out.
+        let cut_points = self.screen.cut_points().to_vec();
+        let (app, screen, input) = (&mut *self.app, &mut self.screen, &mut self.input);
+        let (signals, suspend) = (self.signals, &mut self.suspend);
+        let mut handle_input = |wait: Duration| -> io::Result<bool> {
+            if signals.received().is_none() && event::poll(wait)? {
+                *suspend |= handle_pending_events(app, screen, input)?;
+            }
+            let moved_past = !new_picture && app.dirty.picture;
+            Ok(app.quit || *suspend || signals.received().is_some() || moved_past)
+        };
+        let sent = self.pacer.send(
+            &self.frame,
+            &cut_points,
+            &mut write_to_terminal,
+            &mut handle_input,
+        );
+        let sent = match sent {
+            Ok(sent) => sent,
+            // The terminal is gone; the hang-up signal ends the loop.
+            Err(_) => {
+                self.screen.frame_lost();
+                return Ok(());
+            }
+        };
+        if let Some(row) = sent.cut_before {
+            self.screen.frame_cut(row, self.app);
+        }
+        if self.over() {
+            return Ok(());
+        }
+        let layout = self.screen.layout();
+        let signals = self.signals;
+        let stop = || signals.received().is_some();
+        let size = (layout.cols, layout.rows);
+        self.pacer.frame_sent(sent, size, &stop);
+        self.screen.send_settled_only(self.pacer.slow());
+        (self.app).set_link(self.pacer.bottleneck(), self.pacer.bytes_sent());
+        Ok(())
+    }
+
+    fn handle_pending_events(&mut self) -> io::Result<()> {
+        self.suspend |= handle_pending_events(self.app, &mut self.screen, &mut self.input)?;
+        Ok(())
+    }
+}
+
+/// Writes to the terminal and flushes. Locked per write, never across a wait: the signal
+/// watchdog needs stdout to restore the terminal when the loop is stuck on a hung-up tty.
+fn write_to_terminal(bytes: &[u8]) -> io::Result<()> {
+    let mut out = io::stdout().lock();
+    out.write_all(bytes)?;
+    out.flush()
 }
 
 /// A signal handler that is removed (the default action back) when this is dropped.

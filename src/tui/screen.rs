@@ -88,6 +88,8 @@ pub struct Screen {
     text_over_pixels: Vec<Cell>,
     /// Whether refinement sends only the settled picture, not the passes on the way (a slow link).
     settled_only: bool,
+    /// See [`Screen::cut_points`].
+    cut_points: Vec<(usize, usize)>,
 }
 
 impl Screen {
@@ -103,6 +105,7 @@ impl Screen {
             pixel_route: PixelRoute::default(),
             text_over_pixels: Vec::new(),
             settled_only: false,
+            cut_points: Vec::new(),
         }
     }
 
@@ -128,7 +131,7 @@ impl Screen {
 
     /// Follows the app's choice of picture: a pixel protocol or cells. Leaving kitty's pixels
     /// deletes its image. Returns the bytes written.
-    fn follow_graphics(&mut self, app: &mut App, out: &mut impl Write) -> io::Result<usize> {
+    fn follow_graphics(&mut self, app: &mut App, out: &mut Vec<u8>) -> io::Result<usize> {
         if self.pixels.as_ref().map(|p| p.protocol) == app.graphics {
             return Ok(0);
         }
@@ -179,7 +182,7 @@ impl Screen {
     }
 
     /// Draws what `app` marked as changed; returns the bytes written (0 when nothing changed).
-    pub fn draw(&mut self, app: &mut App, out: &mut impl Write) -> io::Result<usize> {
+    pub fn draw(&mut self, app: &mut App, out: &mut Vec<u8>) -> io::Result<usize> {
         let switched = self.follow_graphics(app, out)?;
         if !(app.dirty.picture || app.dirty.text) {
             return Ok(switched);
@@ -200,7 +203,7 @@ impl Screen {
             return self.draw_over_pixels(app, out);
         }
         let grid = self.compose(app);
-        let result = self.writer.draw(out, &grid);
+        let result = self.write_cells(out, &grid);
         app.mark_drawn();
         let bytes = result?;
         if bytes > 0 {
@@ -211,7 +214,7 @@ impl Screen {
 
     /// The status line alone, for a terminal that reports no size; a kitty image shown before
     /// is deleted (sixel and iTerm2 pictures are text the new frame overwrites).
-    fn draw_without_picture(&mut self, app: &mut App, out: &mut impl Write) -> io::Result<usize> {
+    fn draw_without_picture(&mut self, app: &mut App, out: &mut Vec<u8>) -> io::Result<usize> {
         let mut removed = 0;
         // Whether it was on screen is forgotten by the resize that brought this layout.
         if let Some(pixels) = self.pixels.as_mut() {
@@ -222,7 +225,7 @@ impl Screen {
         }
         self.picture = CellGrid::new(0, 0);
         let grid = self.compose(app);
-        let result = self.writer.draw(out, &grid);
+        let result = self.write_cells(out, &grid);
         app.mark_drawn();
         Ok(removed + result?)
     }
@@ -240,7 +243,7 @@ impl Screen {
 
     /// Renders one more pass into the picture and draws the cells it changed; returns the bytes
     /// written. Does nothing when `refining` is false.
-    pub fn refine(&mut self, app: &mut App, out: &mut impl Write) -> io::Result<usize> {
+    pub fn refine(&mut self, app: &mut App, out: &mut Vec<u8>) -> io::Result<usize> {
         if !self.refining(app) {
             return Ok(0);
         }
@@ -273,11 +276,39 @@ impl Screen {
         app.report.passes = self.accumulation.passes();
         app.report.refining = self.accumulation.wants_more();
         let grid = self.compose(app);
-        let bytes = self.writer.draw(out, &grid)?;
+        let bytes = self.write_cells(out, &grid)?;
         if bytes > 0 {
             app.report.bytes = bytes;
         }
         Ok(bytes)
+    }
+
+    /// Appends the changes to `grid` to `out`, noting where the frame may be cut short.
+    fn write_cells(&mut self, out: &mut Vec<u8>, grid: &CellGrid) -> io::Result<usize> {
+        let frame_start = out.len();
+        let bytes = self.writer.draw(out, grid)?;
+        self.cut_points.clear();
+        let points = self.writer.cut_points().iter();
+        (self.cut_points).extend(points.map(|&(at, row)| (frame_start + at, row)));
+        Ok(bytes)
+    }
+
+    /// Where the bytes last appended to a frame may be cut short: (offset in them, grid row)
+    /// where each changed row begins. Empty for a frame with a pixel picture.
+    pub fn cut_points(&self) -> &[(usize, usize)] {
+        &self.cut_points
+    }
+
+    /// The frame last drawn went out only up to grid row `row`: the rows from there on are
+    /// drawn with the next frame.
+    pub fn frame_cut(&mut self, row: usize, app: &mut App) {
+        self.writer.cut_before_row(row);
+        app.redraw_text();
+    }
+
+    /// The frame last drawn did not reach the terminal: the next one is drawn in full.
+    pub fn frame_lost(&mut self) {
+        self.writer.invalidate();
     }
 
     /// The cells the picture covers, across and down.
@@ -299,7 +330,7 @@ impl Screen {
         app.report.refining = pixels.refining();
     }
 
-    fn refine_pixels(&mut self, app: &mut App, out: &mut impl Write) -> io::Result<usize> {
+    fn refine_pixels(&mut self, app: &mut App, out: &mut Vec<u8>) -> io::Result<usize> {
         let cells = self.picture_cells();
         let supersampling = super::quality::terminal_supersampling(&app.quality_in_use);
         let pixels = self.pixels.as_mut().expect("in pixel mode");
@@ -315,7 +346,7 @@ impl Screen {
     /// Draws the text of the screen over the pixel picture, sending the picture first when the
     /// terminal does not show it yet, or shows it under text that has changed (sixel and iTerm2
     /// pictures live in the cells, so text drawn over them takes their place).
-    fn draw_over_pixels(&mut self, app: &mut App, out: &mut impl Write) -> io::Result<usize> {
+    fn draw_over_pixels(&mut self, app: &mut App, out: &mut Vec<u8>) -> io::Result<usize> {
         let pixels = self.pixels.as_ref().expect("in pixel mode");
         let send = !pixels.on_screen;
         // Before the status line is composed, so it shows the bytes of the picture it goes with.
@@ -325,6 +356,7 @@ impl Screen {
             .flat_map(|row| grid.row(row).iter().copied())
             .collect();
         let text_moved = over != self.text_over_pixels && pixels.protocol != Protocol::Kitty;
+        self.cut_points.clear();
         let result = if send || text_moved {
             let under = self.compose_under(app);
             let written = self.writer.draw_around(out, &under, pixels.image(), &grid);
@@ -334,7 +366,7 @@ impl Screen {
             self.pixels.as_mut().expect("in pixel mode").on_screen = written.is_ok();
             written
         } else {
-            self.writer.draw(out, &grid)
+            self.write_cells(out, &grid)
         };
         self.text_over_pixels = over;
         app.mark_drawn();

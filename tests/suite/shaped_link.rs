@@ -247,6 +247,15 @@ impl RemoteView {
         String::from_utf8_lossy(&self.tmux(&["capture-pane", "-p"]).stdout).into_owned()
     }
 
+    /// The screen with its colours, a line a row.
+    fn coloured_screen(&self) -> Vec<String> {
+        let capture = self.tmux(&["capture-pane", "-e", "-p"]).stdout;
+        String::from_utf8_lossy(&capture)
+            .lines()
+            .map(str::to_string)
+            .collect()
+    }
+
     fn shown(&self) -> Shown {
         let dead = self.tmux(&["display-message", "-p", "#{pane_dead}"]);
         if String::from_utf8_lossy(&dead.stdout).trim() != "0" {
@@ -299,24 +308,23 @@ impl RemoteView {
         None
     }
 
-    /// `key` sent `count` times, `apart`; the time from the last until a new view shows: the
-    /// status line turns to `refining` from a settled picture (the one before, if its last pass
-    /// was still on the way) or from the moment of the key.
+    /// `key` sent `count` times, `apart`; the time from the last until its new view shows: the
+    /// status line says `refining` and most picture rows differ from those at the moment of the
+    /// key. (A settled picture on the way at that moment may be cut short by the key, its status
+    /// line never sent; what of it lands after the key is a few rows.)
     fn taps(&self, key: &str, count: u32, apart: Duration) -> Option<Duration> {
         let mut shown = None;
         for _ in 0..count {
             let tap = Instant::now();
+            let before = self.coloured_screen();
             self.send(key);
-            let mut settled_since = self.shown() != Shown::Refining;
             shown = None;
             while tap.elapsed() < apart.max(STEP_LIMIT / 4) {
-                match self.shown() {
-                    Shown::Refining if settled_since => {
-                        shown = Some(tap.elapsed());
-                        break;
-                    }
-                    Shown::Refining => {}
-                    _ => settled_since = true,
+                if self.shown() == Shown::Refining
+                    && most_rows_differ(&before, &self.coloured_screen())
+                {
+                    shown = Some(tap.elapsed());
+                    break;
                 }
                 std::thread::sleep(POLL);
             }
@@ -336,6 +344,13 @@ impl RemoteView {
     }
 }
 
+/// Whether most picture rows (all but the status line) of two screens differ.
+fn most_rows_differ(before: &[String], after: &[String]) -> bool {
+    let rows = before.len().min(after.len()).saturating_sub(1);
+    let differing = (0..rows).filter(|&row| before[row] != after[row]).count();
+    differing * 2 > rows
+}
+
 impl Drop for RemoteView {
     fn drop(&mut self) {
         self.tmux(&["kill-server"]);
@@ -353,12 +368,15 @@ pub struct Figures {
     pub held_settled: Option<Duration>,
     /// After `q` right after an arrow held 0.6 s.
     pub quit_after_held: Option<Duration>,
+    /// After `q` sent 0.1 s after an arrow, while its new view is on the way (at 160×50 and
+    /// 2 Mbit/s; a smaller screen's may have landed).
+    pub quit_mid_view: Option<Duration>,
     /// The fifth of five arrows a second apart, until its view shows.
     pub fifth_tap_shown: Option<Duration>,
 }
 
-/// Drives the workbench over `link` through start-up, one arrow, a held arrow, and `q` after
-/// another held arrow.
+/// Drives the workbench over `link` through start-up, one arrow, a held arrow, five arrows, and
+/// `q` after another held arrow; then, started again, `q` while an arrow's view is on the way.
 pub fn measure(link: &ShapedLink, binary: &Path, scene: &str, size: (u16, u16)) -> Figures {
     let start = Instant::now();
     let view = RemoteView::start(link, binary, scene, size);
@@ -378,5 +396,15 @@ pub fn measure(link: &ShapedLink, binary: &Path, scene: &str, size: (u16, u16)) 
     let quit = Instant::now();
     view.send("q");
     figures.quit_after_held = view.until(quit, &[Shown::Ended]);
+    drop(view);
+    let start = Instant::now();
+    let view = RemoteView::start(link, binary, scene, size);
+    view.until(start, &[Shown::Refining, Shown::Settled]);
+    view.settled(start);
+    view.send("Right");
+    std::thread::sleep(Duration::from_millis(100));
+    let quit = Instant::now();
+    view.send("q");
+    figures.quit_mid_view = view.until(quit, &[Shown::Ended]);
     figures
 }

@@ -21,7 +21,8 @@ fn over_a_2_mbit_link_the_workbench_answers_at_once() {
     assert!(within(figures.arrow_shown, 1.2), "{figures:?}");
     assert!(within(figures.arrow_settled, 2.0), "{figures:?}");
     assert!(within(figures.held_settled, 3.0), "{figures:?}");
-    assert!(within(figures.fifth_tap_shown, 1.4), "{figures:?}");
-    assert!(within(figures.quit_after_held, 1.5), "{figures:?}");
+    assert!(within(figures.fifth_tap_shown, 1.2), "{figures:?}");
+    assert!(within(figures.quit_after_held, 0.6), "{figures:?}");
+    assert!(within(figures.quit_mid_view, 0.6), "{figures:?}");
     assert!(within(figures.start_settled, 2.5), "{figures:?}");
 }

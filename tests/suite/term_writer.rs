@@ -4,8 +4,8 @@
 use std::io::{self, Write};
 
 use bumpwork::term::{
-    Cell, CellGrid, Color, ColorMode, EncodeOptions, FrameOptions, FrameWriter, GlyphSet, Picture,
-    SYNC_BEGIN, SYNC_END, encode, encode_frame,
+    CUT_FRAME_END, Cell, CellGrid, Color, ColorMode, EncodeOptions, FrameOptions, FrameWriter,
+    GlyphSet, Picture, SYNC_BEGIN, SYNC_END, encode, encode_frame,
 };
 
 fn frame(previous: Option<&CellGrid>, next: &CellGrid, origin: (u16, u16)) -> Vec<u8> {
@@ -310,4 +310,42 @@ fn frame_writer_sends_diffs_and_recovers_from_a_failed_write() {
     let mut after = Vec::new();
     writer.draw(&mut after, &b).unwrap();
     assert_eq!(after, frame(None, &b, (0, 0)));
+}
+
+#[test]
+fn a_frame_cut_at_a_row_shows_the_rows_before_and_the_next_frame_sends_the_rest() {
+    let a = encoded(20, 10, 0.0, ColorMode::TrueColor, GlyphSet::HalfBlock);
+    let b = encoded(20, 10, 0.3, ColorMode::TrueColor, GlyphSet::HalfBlock);
+    let mut terminal = virtual_terminal(10, 20);
+    let mut writer = FrameWriter::new((0, 0));
+    let mut bytes = Vec::new();
+    writer.draw(&mut bytes, &a).unwrap();
+    terminal.process(&bytes);
+    bytes.clear();
+    let whole = writer.draw(&mut bytes, &b).unwrap();
+    let points = writer.cut_points().to_vec();
+    assert!(points.len() >= 4, "{} rows change", points.len());
+    assert!(
+        points
+            .windows(2)
+            .all(|w| w[0].0 < w[1].0 && w[0].1 < w[1].1)
+    );
+    let (at, row) = points[points.len() / 2];
+    let mut cut = bytes[..at].to_vec();
+    cut.extend_from_slice(CUT_FRAME_END);
+    terminal.process(&cut);
+    let mut expected = a.clone();
+    expected.copy_rows_from(&b, 0);
+    expected.copy_rows_from(&a, row);
+    assert_screen_shows(terminal.screen(), &expected, (0, 0));
+    writer.cut_before_row(row);
+    bytes.clear();
+    let rest = writer.draw(&mut bytes, &b).unwrap();
+    terminal.process(&bytes);
+    assert_screen_shows(terminal.screen(), &b, (0, 0));
+    // The rows from the cut on, with a fresh cursor move and colours: nothing before the cut.
+    assert!(
+        rest <= whole - at + 64,
+        "the rest ({rest} B) resends rows already drawn (whole {whole} B, cut at {at})"
+    );
 }
