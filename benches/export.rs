@@ -9,14 +9,14 @@
 mod bench_support;
 
 use bench_support::time_png_stills;
-use bumpwork::export::{StillRequest, write_png};
+use bumpwork::export::{PreparedStill, write_png};
 use bumpwork::measure::Timing;
 use bumpwork::quality::Quality;
 use bumpwork::raster::{PreparedScene, RenderTarget, Viewport};
 use bumpwork::scene::{BindingFile, MappingKind, load_scene_file, preset_file};
 use bumpwork::shade::ShaderMode;
 use bumpwork::shade::render_lit;
-use bumpwork::still::{Recipe, ResolveFilter, StillSettings};
+use bumpwork::still::{ResolveFilter, StillSettings};
 use bumpwork::surface::Tessellation;
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -74,19 +74,10 @@ fn main() {
         write_png(&framebuffer, &out).expect("png");
     });
     println!("  whole frame + write_png (peer): {}", whole.summary_ms());
+    let still = PreparedStill::from_prepared((&source, &text), prepared, &camera);
     for samples in [1, 16] {
         let settings = settings(samples);
-        let recipe = Recipe::capture(&source, &prepared.scene, &camera, &settings);
-        let request = StillRequest {
-            prepared: &prepared,
-            camera: &camera,
-            settings,
-            scene_text: &text,
-            recipe: &recipe,
-            frame: None,
-            sweep: None,
-        };
-        let timing = time_png_stills(&request, &out, runs());
+        let timing = time_png_stills(&still, settings, &out, runs());
         let ratio = timing.median.as_secs_f64() / whole.median.as_secs_f64();
         println!(
             "  still, {samples:>2} spp: {}  ({ratio:.2}x the whole-frame path)",

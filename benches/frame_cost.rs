@@ -66,9 +66,8 @@ fn stills(n: usize, samples: u32, contrast: Option<f32>) {
         }
     }
     let still = PeerStill::new(scene, text, pov_peer_settings(samples, contrast));
-    let request = still.request();
     let out = dir.join("still.png");
-    let timing = time_png_stills(&request, &out, n);
+    let timing = time_png_stills(&still.still, still.settings, &out, n);
     println!("{n} stills: {}", timing.summary_ms());
     let _ = std::fs::remove_dir_all(&dir);
 }

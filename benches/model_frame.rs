@@ -8,13 +8,13 @@
 mod bench_support;
 
 use bench_support::time_png_stills;
-use bumpwork::export::StillRequest;
+use bumpwork::export::PreparedStill;
 use bumpwork::measure::Timing;
 use bumpwork::quality::Quality;
 use bumpwork::raster::PreparedScene;
 use bumpwork::scene::{Scene, load_scene_file, preset, source_text};
 use bumpwork::shade::ShaderMode;
-use bumpwork::still::{Recipe, ResolveFilter, StillSettings};
+use bumpwork::still::{ResolveFilter, StillSettings};
 use bumpwork::surface::Tessellation;
 use bumpwork::term::{ColorChoice, ColorMode};
 use bumpwork::tui::{App, Screen, WorkbenchOptions, keymap};
@@ -89,17 +89,8 @@ fn still(scene: Scene, source: &str, text: &str, out: &Path) -> Timing {
         time: 0.0,
         mode: ShaderMode::Shaded,
     };
-    let recipe = Recipe::capture(source, &prepared.scene, &camera, &settings);
-    let request = StillRequest {
-        prepared: &prepared,
-        camera: &camera,
-        settings,
-        scene_text: text,
-        recipe: &recipe,
-        frame: None,
-        sweep: None,
-    };
-    time_png_stills(&request, out, RUNS)
+    let still = PreparedStill::from_prepared((source, text), prepared, &camera);
+    time_png_stills(&still, settings, out, RUNS)
 }
 
 /// Key press to finished frame, orbiting, at 200×60 cells.

@@ -17,13 +17,11 @@
 mod bench_support;
 
 use bench_support::{pov_peer_files, pov_peer_settings, write_native_pov_scene};
-use bumpwork::export::{StillFormat, StillRequest, write_pov, write_still};
+use bumpwork::export::{PreparedStill, StillFormat, StillPlace, write_pov};
 use bumpwork::measure::{Timing, ratio_by_round};
 use bumpwork::raster::{PreparedScene, Viewport};
 use bumpwork::scene::Camera;
-use bumpwork::still::{
-    BandBuffers, BandJob, Recipe, StillSettings, Supersampling, render_supersampled,
-};
+use bumpwork::still::{BandBuffers, BandJob, StillSettings, Supersampling, render_supersampled};
 use std::process::Command;
 use std::time::Duration;
 
@@ -60,16 +58,8 @@ fn main() {
         let dir = dir.clone();
         move || run_povray(&dir, scene, &[antialias], "pov.png")
     };
-    let request = |samples: u32, adaptive: Option<f32>| {
-        let settings = pov_peer_settings(samples, adaptive);
-        let recipe = Recipe::capture(
-            &scene_path.display().to_string(),
-            &prepared.scene,
-            &camera,
-            &settings,
-        );
-        (settings, recipe)
-    };
+    let request = pov_peer_settings;
+    let source = (scene_path.display().to_string(), text);
     let unshadowed = PreparedScene {
         scene: bumpwork::scene::Scene {
             shadows: false,
@@ -77,20 +67,22 @@ fn main() {
         },
         objects: prepared.objects.iter().map(clone_object).collect(),
     };
-    let ours_of = |prepared: &PreparedScene, (settings, recipe): &(StillSettings, Recipe)| {
-        let request = StillRequest {
-            prepared,
-            camera: &camera,
-            settings: *settings,
-            scene_text: &text,
-            recipe,
-            frame: None,
-            sweep: None,
-        };
+    let unshadowed = PreparedStill::from_prepared((&source.0, &source.1), unshadowed, &camera);
+    let prepared = PreparedStill::from_prepared((&source.0, &source.1), prepared, &camera);
+    let ours_of = |still: &PreparedStill, settings: &StillSettings| {
         let out = dir.join("ours.png");
-        write_still(&request, &out, StillFormat::Png, &mut |_| {}, &|| None).expect("still");
+        let destination = (out.as_path(), StillFormat::Png);
+        (still)
+            .write(
+                *settings,
+                StillPlace::default(),
+                destination,
+                &mut |_| {},
+                &|| None,
+            )
+            .expect("still");
     };
-    let ours = |request: &(StillSettings, Recipe)| ours_of(&prepared, request);
+    let ours = |settings: &StillSettings| ours_of(&prepared, settings);
     let report = |label: &str, pov: &[Duration], ours: &[Duration]| {
         let (ratio, least, most) = ratio_by_round(pov, ours);
         println!(
@@ -132,10 +124,10 @@ fn main() {
         100.0 * (1.0 - 1.0 / most),
     );
 
-    let errors = adaptive_errors(&prepared, &camera, 16);
+    let errors = adaptive_errors(prepared.prepared(), &camera, 16);
     // POV-Ray's `+A` takes 3 × 3 samples in a pixel it refines (its default `+R3`): the same
     // comparison with as many of ours.
-    let errors_9 = adaptive_errors(&prepared, &camera, 9);
+    let errors_9 = adaptive_errors(prepared.prepared(), &camera, 9);
     for (scene, label) in [("peer.pov", "our meshes"), ("native.pov", "native scene")] {
         let pov_aa_error = povray_error(&dir, scene);
         println!(

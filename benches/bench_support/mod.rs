@@ -1,7 +1,7 @@
 //! Scenes shared by the benchmarks.
 #![allow(dead_code)]
 
-use bumpwork::export::{StillFormat, StillRequest, write_still};
+use bumpwork::export::{PreparedStill, StillFormat, StillPlace};
 use bumpwork::measure::Timing;
 use bumpwork::quality::Quality;
 use bumpwork::scene::Camera;
@@ -144,52 +144,42 @@ pub fn pov_peer_settings(samples: u32, adaptive_samples: Option<f32>) -> StillSe
 
 /// The POV-Ray peer's scene (or a variant of it) prepared for a 1920×1080 still.
 pub struct PeerStill {
-    pub prepared: bumpwork::raster::PreparedScene,
-    pub camera: Camera,
+    pub still: PreparedStill,
     pub settings: StillSettings,
-    pub recipe: bumpwork::still::Recipe,
-    pub text: String,
 }
 
 impl PeerStill {
     /// `scene` (written as `text`) at `settings`.
     pub fn new(scene: Scene, text: String, settings: StillSettings) -> PeerStill {
         let camera = scene.camera.clone();
-        let prepared = settings
-            .prepare(scene, &camera)
+        let still = PreparedStill::new(("peer", &text), scene, &camera, &settings)
             .expect("prepared peer scene");
-        let recipe = bumpwork::still::Recipe::capture("peer", &prepared.scene, &camera, &settings);
-        PeerStill {
-            prepared,
-            camera,
-            settings,
-            recipe,
-            text,
-        }
-    }
-
-    pub fn request(&self) -> StillRequest<'_> {
-        StillRequest {
-            prepared: &self.prepared,
-            camera: &self.camera,
-            settings: self.settings,
-            scene_text: &self.text,
-            recipe: &self.recipe,
-            frame: None,
-            sweep: None,
-        }
+        PeerStill { still, settings }
     }
 
     /// Writes the still to `out` as `format`.
     pub fn write(&self, out: &Path, format: StillFormat) {
-        write_still(&self.request(), out, format, &mut |_| {}, &|| None).expect("still");
+        let place = StillPlace::default();
+        (self.still)
+            .write(self.settings, place, (out, format), &mut |_| {}, &|| None)
+            .expect("still");
     }
 }
 
-/// Writes `request` as a PNG still to `out` `runs` times after one unmeasured run; their times.
-pub fn time_png_stills(request: &StillRequest, out: &Path, runs: usize) -> Timing {
+/// Writes `still` with `settings` as a PNG to `out` `runs` times after one unmeasured run; their
+/// times.
+pub fn time_png_stills(
+    still: &PreparedStill,
+    settings: StillSettings,
+    out: &Path,
+    runs: usize,
+) -> Timing {
+    let destination = (out, StillFormat::Png);
     Timing::measure(1, runs, || {
-        write_still(request, out, StillFormat::Png, &mut |_| {}, &|| None).expect("still");
+        let place = StillPlace::default();
+        (still)
+            .write(settings, place, destination, &mut |_| {}, &|| None)
+            .expect("still");
     })
 }
 

@@ -6,13 +6,13 @@ use super::progress::RenderProgress;
 use super::shard::{Shard, parse_shard};
 use bumpwork::Error;
 use bumpwork::export::{
-    ContactSheet, SheetLayout, SheetPicture, StillFormat, StillRequest, check_destination,
-    read_png_rgb8, write_still,
+    ContactSheet, PreparedStill, SheetLayout, SheetPicture, StillFormat, StillPlace,
+    check_destination, read_png_rgb8,
 };
 use bumpwork::overrides::{Override, apply_to_quality, apply_where_known};
 use bumpwork::quality::Quality;
 use bumpwork::shade::ShaderMode;
-use bumpwork::still::{MAX_SAMPLES, Recipe, ResolveFilter, StillSettings};
+use bumpwork::still::{MAX_SAMPLES, ResolveFilter, StillSettings};
 use std::path::{Path, PathBuf};
 
 pub const SHEET_NAME: &str = "contact-sheet.png";
@@ -199,20 +199,14 @@ fn render_scene(
         time: 0.0,
         mode: ShaderMode::Shaded,
     };
-    let prepared = settings.prepare(scene, &camera)?;
-    let recipe = Recipe::capture(name, &prepared.scene, &camera, &settings);
     let scene_text = bumpwork::scene::source_text(name)?;
-    let request = StillRequest {
-        prepared: &prepared,
-        camera: &camera,
-        settings,
-        scene_text: &scene_text,
-        recipe: &recipe,
+    let prepared = PreparedStill::new((name, &scene_text), scene, &camera, &settings)?;
+    let place = StillPlace {
         frame: Some(place),
         sweep: None,
     };
-    write_still(&request, path, StillFormat::Png, progress, &|| {
-        interrupt.received()
-    })?;
+    let destination = (path, StillFormat::Png);
+    let interrupted = || interrupt.received();
+    prepared.write(settings, place, destination, progress, &interrupted)?;
     Ok(())
 }

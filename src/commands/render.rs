@@ -6,20 +6,16 @@ use super::progress::RenderProgress;
 use super::shard::{Shard, parse_shard};
 use bumpwork::Error;
 use bumpwork::diagnostic::sanitize_lines;
-use bumpwork::export::metadata::{ANIMATION, RECIPE, SCENE, SOFTWARE, read_png_text, text_of};
+use bumpwork::export::metadata::{ANIMATION, RECIPE, SCENE, SOFTWARE};
 use bumpwork::export::{
-    AnimationFile, AnimationFormat, GIF_MAX_FPS, STANDARD_OUTPUT, StillFormat, StillRequest,
-    check_destination, render_rows, write_still,
+    AnimationFile, AnimationFormat, GIF_MAX_FPS, PreparedStill, STANDARD_OUTPUT, StillFormat,
+    StillPlace, StillStart, check_destination,
 };
 use bumpwork::overrides::{Override, apply_to_quality, apply_to_scene};
 use bumpwork::quality::Quality;
-use bumpwork::raster::PreparedScene;
 use bumpwork::scene::Camera;
-use bumpwork::scene::{KnobSetting, Scene};
 use bumpwork::shade::ShaderMode;
-use bumpwork::still::{
-    MAX_DENSITY, MAX_SAMPLES, MAX_TIME_SECONDS, Recipe, ResolveFilter, StillSettings,
-};
+use bumpwork::still::{MAX_DENSITY, MAX_SAMPLES, MAX_TIME_SECONDS, ResolveFilter, StillSettings};
 use bumpwork::watch::ReloadOutcome;
 use std::path::{Path, PathBuf};
 
@@ -138,9 +134,12 @@ pub fn run(args: RenderArgs) -> Result<(), Error> {
         return watch_and_render(&args, &output, format, &interrupt);
     }
     let start = match &args.from {
-        Some(still) => from_still(still, args.read_outside)?,
-        None => from_source(args.scene.as_deref().expect("clap requires a scene"))?,
+        Some(still) => StillStart::from_still(still, args.read_outside)?,
+        None => StillStart::from_source(args.scene.as_deref().expect("clap requires a scene"))?,
     };
+    for warning in &start.warnings {
+        eprintln!("bumpwork: warning: {}", sanitize_lines(warning));
+    }
     render_start(&args, &start, &output, format, &interrupt)
 }
 
@@ -158,7 +157,7 @@ impl RenderArgs {
 /// sequence).
 fn render_start(
     args: &RenderArgs,
-    start: &Start,
+    start: &StillStart,
     output: &Path,
     format: StillFormat,
     interrupt: &Interrupt,
@@ -177,36 +176,31 @@ fn render_start(
         eprintln!("bumpwork: this shard has none of the sequence's frames; nothing to render");
         return Ok(());
     }
-    let prepared = settings.prepare(scene, &camera)?;
+    let source = (start.source.as_str(), start.scene_text.as_str());
+    let prepared = PreparedStill::new(source, scene, &camera, &settings)?;
     if args.time_range.is_some() {
-        warn_if_still(&prepared.scene, frames.len());
+        warn_if_still(prepared.scene(), frames.len());
     }
     if let Some(animation) = format.animation() {
         let destination = (output, animation);
-        return render_animation(
-            args,
-            start,
-            &prepared,
-            (&frames, settings),
-            destination,
-            interrupt,
-        );
+        return render_animation(args, &prepared, (&frames, settings), destination, interrupt);
     }
     let existing = existing_files(&frames, args.no_clobber)?;
     for frame in &frames {
-        let (time, path) = (frame.time, frame.path.as_path());
-        let settings = StillSettings { time, ..settings };
-        let recipe = Recipe::capture(&start.source, &prepared.scene, &camera, &settings);
-        let request = StillRequest {
-            prepared: &prepared,
-            camera: &camera,
-            settings,
-            scene_text: &start.scene_text,
-            recipe: &recipe,
+        let settings = StillSettings {
+            time: frame.time,
+            ..settings
+        };
+        let place = StillPlace {
             frame: frame.place,
             sweep: None,
         };
-        render_one(&request, path, format, interrupt)?;
+        render_one(
+            &prepared,
+            (settings, place),
+            (&frame.path, format),
+            interrupt,
+        )?;
     }
     if frames.len() > 1 && existing > 0 {
         eprintln!(
@@ -222,8 +216,7 @@ fn render_start(
 /// finished, the first frame's recipe and the sequence's times in the file.
 fn render_animation(
     args: &RenderArgs,
-    start: &Start,
-    prepared: &PreparedScene,
+    prepared: &PreparedStill,
     (frames, settings): (&[Frame], StillSettings),
     (output, format): (&Path, AnimationFormat),
     interrupt: &Interrupt,
@@ -235,20 +228,12 @@ fn render_animation(
         )));
     }
     let fps = args.fps.expect("checked: an animation has a time range");
-    // The scene was prepared with the options' camera.
-    let camera = &prepared.scene.camera;
-    let recipe_of = |time| {
-        let settings = StillSettings { time, ..settings };
-        (
-            Recipe::capture(&start.source, &prepared.scene, camera, &settings),
-            settings,
-        )
-    };
-    let (first, _) = recipe_of(frames[0].time);
+    let at = |time| StillSettings { time, ..settings };
+    let first = prepared.recipe(&at(frames[0].time));
     let (time_start, time_end) = args.time_range.expect("checked");
     let texts = [
         (SOFTWARE, first.program.clone()),
-        (SCENE, start.scene_text.clone()),
+        (SCENE, prepared.scene_text().to_string()),
         (RECIPE, first.to_toml()),
         (
             ANIMATION,
@@ -263,18 +248,9 @@ fn render_animation(
     let mut progress = RenderProgress::new(&output.display().to_string());
     let mut flattened = 0;
     for (i, frame) in frames.iter().enumerate() {
-        let (recipe, settings) = recipe_of(frame.time);
-        let request = StillRequest {
-            prepared,
-            camera,
-            settings,
-            scene_text: &start.scene_text,
-            recipe: &recipe,
-            frame: frame.place,
-            sweep: None,
-        };
         let mut report = |f: f64| progress.update((i as f64 + f) / frames.len() as f64);
-        let (stats, rgb) = render_rows(&request, output, &mut report, &|| interrupt.received())?;
+        let interrupted = || interrupt.received();
+        let (stats, rgb) = prepared.rows(at(frame.time), output, &mut report, &interrupted)?;
         flattened += stats.flattened;
         file.add_frame(&rgb)?;
     }
@@ -379,7 +355,7 @@ fn watch_and_render(
     };
     render_start(
         args,
-        &Start::of_source(name, scene)?,
+        &StillStart::of_scene(name, scene)?,
         output,
         format,
         interrupt,
@@ -392,7 +368,7 @@ fn watch_and_render(
     while interrupt.received().is_none() {
         match reloader.poll() {
             Some(ReloadOutcome::Reloaded(reload)) => {
-                let rendered = Start::of_source(name, reload.scene)
+                let rendered = StillStart::of_scene(name, reload.scene)
                     .and_then(|start| render_start(args, &start, output, format, interrupt));
                 match rendered {
                     Ok(()) => eprintln!("bumpwork: rendered {shown} again"),
@@ -525,110 +501,9 @@ fn refuse_to_overwrite_sources(output: &Path) -> Result<(), Error> {
     Ok(())
 }
 
-/// Where a render starts: the scene, its text and source, and the settings before options.
-pub(super) struct Start {
-    pub source: String,
-    pub scene_text: String,
-    pub scene: Scene,
-    pub settings: StillSettings,
-    /// The scene file's `[quality]` settings, for a `--quality` preset to take (none from a
-    /// still: its recipe's quality has them already).
-    pub quality_table: Vec<KnobSetting>,
-}
-
-pub(super) fn from_source(name: &str) -> Result<Start, Error> {
-    Start::of_source(name, bumpwork::scene::load_source(name)?)
-}
-
-impl Start {
-    /// `scene`, loaded from `name`.
-    fn of_source(name: &str, scene: Scene) -> Result<Start, Error> {
-        Ok(Start {
-            source: name.to_string(),
-            scene_text: bumpwork::scene::source_text(name)?,
-            settings: scene_settings(&scene)?,
-            quality_table: scene.quality.clone(),
-            scene,
-        })
-    }
-}
-
-/// A render's settings before any option: 800 × 600, shaded, the scene's time and the default
-/// quality with the scene file's `[quality]` settings.
-fn scene_settings(scene: &Scene) -> Result<StillSettings, Error> {
-    Ok(StillSettings {
-        size: (800, 600),
-        quality: Quality::default()
-            .with_settings(&scene.quality)
-            .map_err(Error::Diagnostic)?,
-        resolve: ResolveFilter::default(),
-        time: scene.time,
-        mode: ShaderMode::Shaded,
-    })
-}
-
-fn from_still(still: &Path, read_outside: bool) -> Result<Start, Error> {
-    let texts = read_png_text(still)?;
-    let origin = format!("{} ({RECIPE})", still.display());
-    let recipe = Recipe::parse(text_of(&texts, RECIPE, still)?, &origin)?;
-    let scene_text = text_of(&texts, SCENE, still)?.to_string();
-    // Files are looked for beside the still, unless the user trusts it to name its own.
-    let base = if read_outside {
-        recipe.source_directory()
-    } else {
-        let base = still_directory(still)?;
-        confine_to_directory(&recipe.files_read(&scene_text, &base)?, still, &base)?;
-        base
-    };
-    for change in recipe.changed_files(&base) {
-        eprintln!("bumpwork: warning: {change}; the picture may differ");
-    }
-    if recipe.program != bumpwork::PROGRAM {
-        eprintln!(
-            "bumpwork: warning: the still was made by {}, this is {}",
-            bumpwork::diagnostic::sanitize(&recipe.program),
-            bumpwork::PROGRAM
-        );
-    }
-    let settings = recipe.settings().map_err(|m| {
-        Error::Diagnostic(format!("{}: {m}", bumpwork::diagnostic::sanitize(&origin)))
-    })?;
-    Ok(Start {
-        scene: recipe.scene(&scene_text, &base)?,
-        source: recipe.source,
-        scene_text,
-        settings,
-        quality_table: Vec::new(),
-    })
-}
-
-/// The still's directory, links resolved.
-fn still_directory(still: &Path) -> Result<PathBuf, Error> {
-    let parent = still.parent().filter(|p| !p.as_os_str().is_empty());
-    std::fs::canonicalize(parent.unwrap_or(Path::new(".")))
-        .map_err(|e| Error::read(still, bumpwork::bounded_read::io_words(&e)))
-}
-
-/// Refuses a file outside the still's `directory` (links followed), which a crafted still could
-/// otherwise use to read and quote any file the user can read.
-fn confine_to_directory(files: &[PathBuf], still: &Path, directory: &Path) -> Result<(), Error> {
-    for file in files {
-        let resolved = std::fs::canonicalize(file).unwrap_or_else(|_| file.clone());
-        if !resolved.starts_with(directory) {
-            return Err(Error::InvalidArgument(format!(
-                "the still {} names {}, outside its directory {}; add --read-outside to read it",
-                super::sanitized(&still.display().to_string()),
-                super::sanitized(&file.display().to_string()),
-                super::sanitized(&directory.display().to_string()),
-            )));
-        }
-    }
-    Ok(())
-}
-
 /// The start's settings with the command line's options over them; a `--quality` preset takes
 /// the scene file's `[quality]` settings over it, as the default preset does.
-fn override_settings(start: &Start, args: &RenderArgs) -> Result<StillSettings, Error> {
+fn override_settings(start: &StillStart, args: &RenderArgs) -> Result<StillSettings, Error> {
     let base = start.settings;
     let mut quality = match args.quality {
         Some(preset) => preset
@@ -712,39 +587,27 @@ fn numbered(output: &Path, index: u64, digits: usize) -> PathBuf {
     output.with_file_name(name)
 }
 
+/// Writes one still of `prepared` with a progress bar, and says what it has to warn of.
 pub(super) fn render_one(
-    request: &StillRequest,
-    path: &Path,
-    format: StillFormat,
+    prepared: &PreparedStill,
+    (settings, place): (StillSettings, StillPlace),
+    (path, format): (&Path, StillFormat),
     interrupt: &Interrupt,
 ) -> Result<(), Error> {
-    if format == StillFormat::Pov {
-        let settings = &request.settings;
-        let warnings = bumpwork::export::write_pov(
-            request.prepared,
-            request.camera,
-            settings.size,
-            settings.time,
-            path,
-        )?;
-        for warning in warnings {
-            eprintln!(
-                "bumpwork: warning: {}",
-                bumpwork::diagnostic::sanitize_lines(&warning.to_string())
-            );
-        }
-        return Ok(());
-    }
     let mut progress = RenderProgress::new(&path.display().to_string());
-    let stats = write_still(
-        request,
-        path,
-        format,
+    let written = prepared.write(
+        settings,
+        place,
+        (path, format),
         &mut |fraction| progress.update(fraction),
         &|| interrupt.received(),
     );
     progress.finish();
-    let stats = stats?;
+    let written = written?;
+    for warning in written.warnings {
+        eprintln!("bumpwork: warning: {}", sanitize_lines(&warning));
+    }
+    let stats = written.stats;
     if stats.flattened > 0 {
         eprintln!(
             "bumpwork: warning: {} of {} fragments had no finite bump or colour value and were drawn flat",

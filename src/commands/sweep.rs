@@ -4,15 +4,15 @@
 //! makes the sheet and index once every shard has run.
 
 use super::interrupt::Interrupt;
-use super::render::{Start, from_source, render_one};
+use super::render::render_one;
 use super::shard::{Shard, parse_shard};
 use bumpwork::Error;
-use bumpwork::export::{StillFormat, StillRequest, check_destination};
+use bumpwork::export::{PreparedStill, StillFormat, StillPlace, StillStart, check_destination};
 use bumpwork::overrides::{Override, apply_to_quality, apply_to_scene};
 use bumpwork::quality::Quality;
 use bumpwork::scene::Scene;
 use bumpwork::shade::ShaderMode;
-use bumpwork::still::{MAX_SAMPLES, Recipe, ResolveFilter, StillSettings};
+use bumpwork::still::{MAX_SAMPLES, ResolveFilter, StillSettings};
 use bumpwork::sweep::{Axis, combination, count, values_text};
 use std::path::{Path, PathBuf};
 
@@ -66,7 +66,7 @@ fn still_path(directory: &Path, index: u64, count: u64) -> PathBuf {
 
 pub fn run(args: SweepArgs) -> Result<(), Error> {
     let total = count(&args.vary).map_err(Error::InvalidArgument)?;
-    let start = from_source(&args.scene)?;
+    let start = StillStart::from_source(&args.scene)?;
     let quality = base_quality(&args, &start)?;
     let shard = args.shard.unwrap_or(Shard::WHOLE);
     let mine: Vec<u64> = (0..total).filter(|&i| shard.takes(i)).collect();
@@ -103,7 +103,7 @@ pub fn run(args: SweepArgs) -> Result<(), Error> {
 
 /// The quality before any `--set`: the preset (with the scene file's `[quality]` over it) and
 /// `--samples`.
-fn base_quality(args: &SweepArgs, start: &Start) -> Result<Quality, Error> {
+fn base_quality(args: &SweepArgs, start: &StillStart) -> Result<Quality, Error> {
     let mut quality = match args.quality {
         Some(preset) => preset
             .with_settings(&start.quality_table)
@@ -128,7 +128,7 @@ struct SweepStill {
 /// value no object takes, or a quality it makes invalid, is an error naming the `--vary`.
 fn sweep_still(
     args: &SweepArgs,
-    start: &Start,
+    start: &StillStart,
     quality: Quality,
     index: u64,
 ) -> Result<SweepStill, Error> {
@@ -156,7 +156,7 @@ fn sweep_still(
 
 fn render_still(
     args: &SweepArgs,
-    start: &Start,
+    start: &StillStart,
     quality: Quality,
     (index, total): (u64, u64),
     path: &Path,
@@ -168,19 +168,19 @@ fn render_still(
         values,
     } = sweep_still(args, start, quality, index)?;
     let camera = scene.camera.clone();
-    let prepared = settings.prepare(scene, &camera)?;
-    let recipe = Recipe::capture(&start.source, &prepared.scene, &camera, &settings);
+    let source = (start.source.as_str(), start.scene_text.as_str());
+    let prepared = PreparedStill::new(source, scene, &camera, &settings)?;
     let values = values_text(&values);
-    let request = StillRequest {
-        prepared: &prepared,
-        camera: &camera,
-        settings,
-        scene_text: &start.scene_text,
-        recipe: &recipe,
+    let place = StillPlace {
         frame: Some((index, total)),
         sweep: Some(&values),
     };
-    render_one(&request, path, StillFormat::Png, interrupt)
+    render_one(
+        &prepared,
+        (settings, place),
+        (path, StillFormat::Png),
+        interrupt,
+    )
 }
 
 /// The sheet and index once the whole sweep is rendered; a shard says what is left to do.

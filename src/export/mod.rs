@@ -12,6 +12,7 @@ mod png_image_data;
 mod pov_scene;
 mod ppm_file;
 mod still_file;
+mod still_start;
 mod writeback;
 
 pub use animation_file::{AnimationFile, AnimationFormat, GIF_MAX_FPS};
@@ -24,4 +25,5 @@ pub use output_file::{OutputFile, STANDARD_OUTPUT, check_destination, write_whol
 pub use png_file::{PngStill, read_png_rgb8, write_png, write_png_with_text};
 pub use pov_scene::{BAKE_SIDE, pov, rgb, write_pov, write_pov_header};
 pub use ppm_file::PpmStill;
-pub use still_file::{StillFormat, StillRequest, render_rows, write_still};
+pub use still_file::{PreparedStill, StillFormat, StillPlace, StillWritten};
+pub use still_start::StillStart;

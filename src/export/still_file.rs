@@ -5,7 +5,7 @@ use super::metadata::{FRAME, RECIPE, SCENE, SOFTWARE, SWEEP};
 use super::{PngStill, PpmStill};
 use crate::Error;
 use crate::raster::{FrameStats, PreparedScene, Viewport};
-use crate::scene::Camera;
+use crate::scene::{Camera, Scene};
 use crate::still::{
     BAND_BUDGET_BYTES, BandJob, Recipe, RowSink, StillSettings, StillStop, stream_still,
 };
@@ -38,15 +38,20 @@ impl StillFormat {
     }
 }
 
-/// What to render and what to record about it.
-pub struct StillRequest<'a> {
-    /// The scene as `settings.quality` prepares it for this camera and size.
-    pub prepared: &'a PreparedScene,
-    pub camera: &'a Camera,
-    pub settings: StillSettings,
-    /// The scene as text and the recipe, for the PNG's metadata.
-    pub scene_text: &'a str,
-    pub recipe: &'a Recipe,
+/// A scene prepared once for its stills (a still, the frames of a sequence, a sweep's still),
+/// with what each still records of where it came from.
+pub struct PreparedStill {
+    /// The scene as the settings' quality prepares it for this camera and size.
+    prepared: PreparedScene,
+    camera: Camera,
+    /// The scene's name or path, and its text, for each still's recipe.
+    source: String,
+    scene_text: String,
+}
+
+/// Which still of a set this is, kept in its PNG.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct StillPlace<'a> {
     /// For a frame of a sequence: its index (from 0) and the sequence's length, kept in the
     /// PNG's `bumpwork-frame` text so `bumpwork sheet` can tell which frames are missing.
     pub frame: Option<(u64, u64)>,
@@ -55,9 +60,138 @@ pub struct StillRequest<'a> {
     pub sweep: Option<&'a str>,
 }
 
-/// Renders `request` into `path`. `progress` hears the fraction done; `interrupted` is asked between
-/// passes and, when it names a signal, the render stops and no file is left.
-pub fn write_still(
+/// What writing a still has to tell: its statistics (none for a POV-Ray scene) and warnings.
+#[derive(Debug, Default)]
+pub struct StillWritten {
+    pub stats: FrameStats,
+    pub warnings: Vec<String>,
+}
+
+impl PreparedStill {
+    /// Prepares `scene` from `source` (text `scene_text`) for stills seen by `camera` at the
+    /// size and quality of `settings`, within the memory budget.
+    pub fn new(
+        (source, scene_text): (&str, &str),
+        scene: Scene,
+        camera: &Camera,
+        settings: &StillSettings,
+    ) -> Result<PreparedStill, Error> {
+        Ok(PreparedStill {
+            prepared: settings.prepare(scene, camera)?,
+            camera: camera.clone(),
+            source: source.to_string(),
+            scene_text: scene_text.to_string(),
+        })
+    }
+
+    /// A scene prepared already (say at a tessellation of its own), seen by `camera`.
+    pub fn from_prepared(
+        (source, scene_text): (&str, &str),
+        prepared: PreparedScene,
+        camera: &Camera,
+    ) -> PreparedStill {
+        PreparedStill {
+            prepared,
+            camera: camera.clone(),
+            source: source.to_string(),
+            scene_text: scene_text.to_string(),
+        }
+    }
+
+    /// The scene as prepared.
+    pub fn scene(&self) -> &Scene {
+        &self.prepared.scene
+    }
+
+    /// The scene with its meshes.
+    pub fn prepared(&self) -> &PreparedScene {
+        &self.prepared
+    }
+
+    /// The scene's text, as each still records it.
+    pub fn scene_text(&self) -> &str {
+        &self.scene_text
+    }
+
+    /// The recipe of a still with `settings`: what `render --from` makes again.
+    pub fn recipe(&self, settings: &StillSettings) -> Recipe {
+        Recipe::capture(&self.source, &self.prepared.scene, &self.camera, settings)
+    }
+
+    /// Renders a still with `settings` (its size the prepared one) into `path` as `format`.
+    /// `progress` hears the fraction done; `interrupted` is asked between passes and, when it
+    /// names a signal, the render stops and no file is left.
+    pub fn write(
+        &self,
+        settings: StillSettings,
+        place: StillPlace,
+        (path, format): (&Path, StillFormat),
+        progress: &mut dyn FnMut(f64),
+        interrupted: &dyn Fn() -> Option<i32>,
+    ) -> Result<StillWritten, Error> {
+        if format == StillFormat::Pov {
+            let (size, time) = (settings.size, settings.time);
+            let warnings = super::write_pov(&self.prepared, &self.camera, size, time, path)?;
+            return Ok(StillWritten {
+                stats: FrameStats::default(),
+                warnings,
+            });
+        }
+        let recipe = self.recipe(&settings);
+        let request = self.request(settings, &recipe, place);
+        let stats = write_still(&request, path, format, progress, interrupted)?;
+        Ok(StillWritten {
+            stats,
+            warnings: Vec::new(),
+        })
+    }
+
+    /// Renders a still with `settings` into memory: its 8-bit sRGB rows, 3 bytes a pixel, top row
+    /// first (an animation's frame; the caller checks the memory). `path` names the file in
+    /// messages.
+    pub fn rows(
+        &self,
+        settings: StillSettings,
+        path: &Path,
+        progress: &mut dyn FnMut(f64),
+        interrupted: &dyn Fn() -> Option<i32>,
+    ) -> Result<(FrameStats, Vec<u8>), Error> {
+        let recipe = self.recipe(&settings);
+        let request = self.request(settings, &recipe, StillPlace::default());
+        render_rows(&request, path, progress, interrupted)
+    }
+
+    fn request<'a>(
+        &'a self,
+        settings: StillSettings,
+        recipe: &'a Recipe,
+        place: StillPlace<'a>,
+    ) -> StillRequest<'a> {
+        StillRequest {
+            prepared: &self.prepared,
+            camera: &self.camera,
+            settings,
+            scene_text: &self.scene_text,
+            recipe,
+            frame: place.frame,
+            sweep: place.sweep,
+        }
+    }
+}
+
+/// What to render and what to record about it.
+struct StillRequest<'a> {
+    prepared: &'a PreparedScene,
+    camera: &'a Camera,
+    settings: StillSettings,
+    scene_text: &'a str,
+    recipe: &'a Recipe,
+    frame: Option<(u64, u64)>,
+    sweep: Option<&'a str>,
+}
+
+/// Renders `request` into `path`.
+fn write_still(
     request: &StillRequest,
     path: &Path,
     format: StillFormat,
@@ -107,9 +241,8 @@ impl RowSink for RowsInMemory {
     }
 }
 
-/// Renders `request` into memory: its 8-bit sRGB rows, 3 bytes a pixel, top row first (an
-/// animation's frame; the caller checks the memory). `path` names the file in messages.
-pub fn render_rows(
+/// Renders `request` into memory.
+fn render_rows(
     request: &StillRequest,
     path: &Path,
     progress: &mut dyn FnMut(f64),

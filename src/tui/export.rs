@@ -6,11 +6,11 @@ use super::app::App;
 use super::render::{View, empty_framebuffer, render_frame};
 use super::view_mode::ViewMode;
 use crate::Error;
-use crate::export::{StillFormat, StillRequest, write_png, write_still};
+use crate::export::{PreparedStill, StillFormat, StillPlace, write_png};
 use crate::quality::Quality;
 use crate::scene::Camera;
 use crate::scene::Scene;
-use crate::still::{Recipe, ResolveFilter, StillSettings};
+use crate::still::{ResolveFilter, StillSettings};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, AtomicU32, Ordering};
@@ -120,28 +120,14 @@ fn export(order: ExportOrder, cancel: &AtomicBool, progress: &AtomicU32) -> Resu
     if !carries_recipe(order.mode) {
         return export_picture(order);
     }
-    let prepared = order.settings.prepare(order.scene, &order.camera)?;
-    let recipe = Recipe::capture(
-        &order.source,
-        &prepared.scene,
-        &order.camera,
-        &order.settings,
-    );
     let scene_text = crate::scene::source_text(&order.source)?;
-    let request = StillRequest {
-        prepared: &prepared,
-        camera: &order.camera,
-        settings: order.settings,
-        scene_text: &scene_text,
-        recipe: &recipe,
-        frame: None,
-        sweep: None,
-    };
+    let source = (order.source.as_str(), scene_text.as_str());
+    let prepared = PreparedStill::new(source, order.scene, &order.camera, &order.settings)?;
     let interrupted = || cancel.load(Ordering::Relaxed).then_some(0);
-    write_still(
-        &request,
-        &order.path,
-        StillFormat::Png,
+    prepared.write(
+        order.settings,
+        StillPlace::default(),
+        (&order.path, StillFormat::Png),
         &mut |done| progress.store((done.clamp(0.0, 1.0) * 1000.0) as u32, Ordering::Relaxed),
         &interrupted,
     )?;
