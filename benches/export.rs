@@ -52,8 +52,8 @@ fn settings(samples: u32) -> StillSettings {
 }
 
 fn main() {
-    let dir = std::env::temp_dir().join(format!("bumpwork-bench-export-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
+    let temp = tempfile::tempdir().expect("a temporary directory");
+    let dir = temp.path().to_path_buf();
     let scene_path = write_scene(&dir);
     let source = scene_path.display().to_string();
     let scene = load_scene_file(&scene_path).expect("bench scene");
@@ -85,7 +85,6 @@ fn main() {
         );
     }
     peak_memory(&scene_path, &dir);
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// Peak resident memory of the binary exporting 7680×4320 at 16 samples.

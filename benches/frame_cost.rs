@@ -52,8 +52,8 @@ fn frames(prepared: &PreparedScene, camera: &Camera, shader: &impl FragmentShade
 /// `n` 1080p PNG stills of the POV-Ray peer's scene at `samples` per pixel (adaptive at
 /// `contrast` if given), after one that settles the machine; prints their wall times.
 fn stills(n: usize, samples: u32, contrast: Option<f32>) {
-    let dir = std::env::temp_dir().join(format!("bumpwork-still-cost-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
+    let temp = tempfile::tempdir().expect("a temporary directory");
+    let dir = temp.path().to_path_buf();
     let (_, text, mut scene) = pov_peer_files(&dir);
     if std::env::var_os("BUMPWORK_NO_SHADOWS").is_some() {
         scene.shadows = false;
@@ -69,15 +69,13 @@ fn stills(n: usize, samples: u32, contrast: Option<f32>) {
     let out = dir.join("still.png");
     let timing = time_png_stills(&still.still, still.settings, &out, n);
     println!("{n} stills: {}", timing.summary_ms());
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// The POV-Ray peer's scene, prepared at the interactive quality it is benchmarked at.
 fn pov_peer_scene() -> (PreparedScene, Camera, Quality) {
-    let dir = std::env::temp_dir().join(format!("bumpwork-cost-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
+    let temp = tempfile::tempdir().expect("a temporary directory");
+    let dir = temp.path().to_path_buf();
     let scene = load_scene_file(&write_pov_peer_scene(&dir)).expect("peer scene");
-    let _ = std::fs::remove_dir_all(&dir);
     let camera = scene.camera.clone();
     let quality = Quality::interactive();
     let prepared = quality.prepare(scene, &camera, VIEWPORT, 0).unwrap();

@@ -115,8 +115,8 @@ fn orbit_step(scene: &str) -> Timing {
 }
 
 fn main() {
-    let dir = std::env::temp_dir().join(format!("bumpwork-bench-model-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
+    let temp = tempfile::tempdir().expect("a temporary directory");
+    let dir = temp.path().to_path_buf();
     let scene_path = write_scene(&dir);
     let load = Timing::measure(1, RUNS, || {
         load_scene_file(&scene_path).expect("model scene");
@@ -156,5 +156,4 @@ fn main() {
     let peer_orbit = orbit_step(name);
     println!("  orbit step at 200x60 cells: model {}", ms(&model_orbit));
     println!("                              {name} {}", ms(&peer_orbit));
-    let _ = std::fs::remove_dir_all(&dir);
 }

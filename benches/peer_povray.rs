@@ -39,8 +39,8 @@ fn main() {
         println!("povray is not installed (Debian package `povray`): peer benchmark skipped");
         return;
     }
-    let dir = std::env::temp_dir().join(format!("bumpwork-bench-pov-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
+    let temp = tempfile::tempdir().expect("a temporary directory");
+    let dir = temp.path().to_path_buf();
     let (scene_path, text, scene) = pov_peer_files(&dir);
     let camera = scene.camera.clone();
     let base = pov_peer_settings(1, None);
@@ -179,7 +179,6 @@ fn main() {
             }
         }
     }
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// A prepared object again (its mesh copied), for a scene that differs only in its settings.

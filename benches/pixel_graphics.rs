@@ -140,7 +140,8 @@ fn encoders(rgb: &[u8], size: (u32, u32)) {
 /// chafa's kitty and sixel output of the same pixels stretched over the same cells (wall time,
 /// process start and PNG decoding included; chafa picks its own pixel size for the cells).
 fn chafa(rgb: &[u8], (w, h): (u32, u32)) {
-    let path = std::env::temp_dir().join(format!("bumpwork-pixels-{}.png", std::process::id()));
+    let temp = tempfile::tempdir().expect("a temporary directory");
+    let path = temp.path().join("picture.png");
     let file = std::fs::File::create(&path).unwrap();
     let mut encoder = png::Encoder::new(std::io::BufWriter::new(file), w, h);
     encoder.set_color(png::ColorType::Rgb);
@@ -177,7 +178,6 @@ fn chafa(rgb: &[u8], (w, h): (u32, u32)) {
             Some(why) => println!("chafa   {format:<7} not measured: {}", why.trim()),
         }
     }
-    let _ = std::fs::remove_file(&path);
 }
 
 /// The picture size a kitty (`s=`, `v=`) or sixel (`"1;1;W;H`) sequence declares.

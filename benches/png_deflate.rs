@@ -25,14 +25,13 @@ fn runs() -> usize {
 
 /// The peer's still, as 8-bit RGB rows.
 fn still_rows() -> Vec<u8> {
-    let dir = std::env::temp_dir().join(format!("bumpwork-png-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
+    let temp = tempfile::tempdir().expect("a temporary directory");
+    let dir = temp.path().to_path_buf();
     let (_, text, scene) = pov_peer_files(&dir);
     let out = dir.join("still.png");
     PeerStill::new(scene, text, pov_peer_settings(1, None)).write(&out, StillFormat::Png);
-    let rows = image::open(&out).expect("still").to_rgb8().into_raw();
-    let _ = std::fs::remove_dir_all(&dir);
-    rows
+
+    image::open(&out).expect("still").to_rgb8().into_raw()
 }
 
 fn png(rows: &[u8], filter: png::Filter, deflate: png::DeflateCompression) -> Vec<u8> {
@@ -116,21 +115,18 @@ fn main() {
     }
     // In memory where the system has it (tmpfs), as the png crate's files above are.
     let shm = std::path::Path::new("/dev/shm");
-    let memory = if shm.is_dir() {
-        shm.to_path_buf()
-    } else {
-        std::env::temp_dir()
+    let temp = match shm.is_dir() {
+        true => tempfile::tempdir_in(shm),
+        false => tempfile::tempdir(),
     };
-    let dir = memory.join(format!("bumpwork-png-ours-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    let out = dir.join("still.png");
+    let temp = temp.expect("a temporary directory");
+    let out = temp.path().join("still.png");
     let timing = Timing::measure(1, runs(), || {
         let mut png = bumpwork::export::PngStill::create(&out, SIZE, &[]).expect("create");
         bumpwork::still::RowSink::write_rows(&mut png, &rows).expect("rows");
         png.finish().expect("finish");
     });
     let bytes = std::fs::metadata(&out).expect("written").len();
-    let _ = std::fs::remove_dir_all(&dir);
     println!(
         "  {:<42} {}  {bytes:>9} B",
         "bumpwork's stills (a file in /dev/shm)",

@@ -74,9 +74,9 @@ fn one_save(reloader: &Reloader, file: &Path, period: u32) -> (Duration, Duratio
 }
 
 fn temporary_dir() -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("bumpwork-reload-bench-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+    let temp = tempfile::tempdir().expect("a temporary directory");
+
+    temp.path().to_path_buf()
 }
 
 fn main() {
@@ -99,7 +99,6 @@ fn main() {
         std::thread::sleep(Duration::from_millis(50));
     }
     drop(reloader);
-    let _ = std::fs::remove_dir_all(&dir);
 
     let ms = |d: Duration| d.as_secs_f64() * 1e3;
     let report = |what: &str, t: Timing| {

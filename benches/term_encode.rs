@@ -189,7 +189,8 @@ fn bench_chafa() {
     }
     let size = GlyphSet::HalfBlock.picture_size(COLS, ROWS);
     let pixels = sphere_picture(size.0, size.1, 1.0, ORBIT_STEP);
-    let path = std::env::temp_dir().join("bumpwork-term-bench-sphere.png");
+    let temp = tempfile::tempdir().expect("a temporary directory");
+    let path = temp.path().join("sphere.png");
     if let Err(error) = write_png(&path, &pixels, size.0, size.1) {
         println!(
             "chafa: skipped, could not write {}: {error}",
@@ -252,7 +253,6 @@ fn bench_chafa() {
             Err(error) => println!("{colors:<8} {dither:<8} failed to run: {error}"),
         }
     }
-    let _ = std::fs::remove_file(&path);
 }
 
 fn main() {

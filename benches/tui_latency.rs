@@ -128,12 +128,12 @@ fn compare_with_chafa(app: &App) {
     );
     let mut ours = Vec::new();
     encode_frame(None, &grid, FrameOptions::default(), &mut ours);
-    let path = std::env::temp_dir().join(format!("bumpwork-tui-bench-{}.png", std::process::id()));
+    let temp = tempfile::tempdir().expect("a temporary directory");
+    let path = temp.path().join("picture.png");
     bumpwork::export::write_png(&framebuffer, &path).expect("temp PNG");
     let start = Instant::now();
     let chafa = run_chafa(&path, (cols, rows), "full");
     let elapsed = start.elapsed();
-    let _ = std::fs::remove_file(&path);
     println!("\nsame {width}x{height} picture, {cols}x{rows} cells, full frame:");
     println!("bumpwork      {:>8} B", ours.len());
     match chafa {
@@ -309,10 +309,10 @@ fn chafa_sub_pixels(
         *pixel =
             Vec3::from_array(rgb.map(|v| bumpwork::texture::srgb_to_linear(f32::from(v) / 255.0)));
     }
-    let path = std::env::temp_dir().join(format!("bumpwork-quality-{}.png", std::process::id()));
+    let temp = tempfile::tempdir().ok()?;
+    let path = temp.path().join("picture.png");
     bumpwork::export::write_png(&framebuffer, &path).ok()?;
     let output = run_chafa(&path, (cols, rows), colours);
-    let _ = std::fs::remove_file(&path);
     let output = output.ok().filter(|o| o.status.success())?;
     // chafa ends lines with LF alone; a terminal's line discipline adds the carriage return.
     let lines = String::from_utf8_lossy(&output.stdout).replace('\n', "\r\n");

@@ -78,8 +78,8 @@ fn psnr(a: &[[u8; 3]], b: &[[u8; 3]]) -> f64 {
 }
 
 fn main() {
-    let dir = std::env::temp_dir().join(format!("bumpwork-limit-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
+    let temp = tempfile::tempdir().expect("a temporary directory");
+    let dir = temp.path().to_path_buf();
     let (_, _, full) = pov_peer_files(&dir);
     if let Some(frames) = kernel_only() {
         let kernel = PeerKernel::new(&full, SIZE);
@@ -102,7 +102,6 @@ fn main() {
         );
         report(&steps, &time_parts(&steps, &dir));
     }
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 fn pixel_count() -> usize {

@@ -85,8 +85,8 @@ mod tests {
 
     #[test]
     fn a_pattern_file_is_shown_on_every_bumped_object_and_errors_name_the_place() {
-        let dir = std::env::temp_dir().join(format!("bumpwork-source-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
+        let dir = tempfile::tempdir().expect("a temporary directory");
+        let dir = dir.path();
         let good = dir.join("bumps.pat");
         std::fs::write(
             &good,
@@ -103,6 +103,5 @@ mod tests {
         std::fs::write(&bad, "height = u + )\n").unwrap();
         let message = load_source(bad.to_str().unwrap()).unwrap_err().to_string();
         assert!(message.contains("bad.pat:1:"), "{message}");
-        std::fs::remove_dir_all(&dir).unwrap();
     }
 }

@@ -199,12 +199,11 @@ mod tests {
 
     #[test]
     fn names_are_unique_and_safe() {
-        let dir = std::env::temp_dir().join(format!("bumpwork-export-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
-        let first = unique_path(&dir, "a", "png");
+        let dir = tempfile::tempdir().expect("a temporary directory");
+        let dir = dir.path();
+        let first = unique_path(dir, "a", "png");
         std::fs::write(&first, b"").unwrap();
-        assert_ne!(unique_path(&dir, "a", "png"), first);
+        assert_ne!(unique_path(dir, "a", "png"), first);
         assert_eq!(slug("../x y\u{1b}"), "---x-y-");
-        std::fs::remove_dir_all(&dir).unwrap();
     }
 }

@@ -50,8 +50,8 @@ mod tests {
 
     #[test]
     fn same_bytes_same_snapshot_and_missing_differs_from_empty() {
-        let dir = std::env::temp_dir().join(format!("bumpwork-snapshot-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
+        let dir = tempfile::tempdir().expect("a temporary directory");
+        let dir = dir.path();
         let file = dir.join("a.pat");
         let files = [file.clone()];
         std::fs::write(&file, "height = u").unwrap();
@@ -63,6 +63,5 @@ mod tests {
         assert_ne!(empty, first);
         std::fs::remove_file(&file).unwrap();
         assert_ne!(Snapshot::take(&files), empty);
-        std::fs::remove_dir_all(&dir).unwrap();
     }
 }

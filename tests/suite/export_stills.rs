@@ -121,6 +121,7 @@ fn from_applies_pattern_parameters_and_warns_when_a_pattern_file_changed() {
     assert!(Path::new(&recipe.files[0].path).is_absolute());
 
     // Rendered again from elsewhere, the scene's relative pattern path still resolves.
+    let elsewhere = tempfile::tempdir().expect("a temporary directory");
     let out = Command::new(env!("CARGO_BIN_EXE_bumpwork"))
         .args([
             "render",
@@ -129,7 +130,7 @@ fn from_applies_pattern_parameters_and_warns_when_a_pattern_file_changed() {
             "-o",
             again.to_str().unwrap(),
         ])
-        .current_dir(std::env::temp_dir())
+        .current_dir(elsewhere.path())
         .output()
         .unwrap();
     assert!(out.status.success(), "{}", stderr(&out));

@@ -13,9 +13,8 @@ const TITLE: &str = "pwned";
 #[ignore = "needs tmux; bash .ci/run installs it and runs the ignored tests"]
 fn escapes_from_files_reach_the_screen_only_as_text() {
     require(&["tmux"]);
-    let dir = std::env::temp_dir().join(format!("bumpwork-hostile-tui-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = tempfile::tempdir().expect("a temporary directory");
+    let dir = dir.path();
     // OSC 0 sets the title, ESC ( 0 switches to line drawing, BEL rings.
     let name = format!("t\x1b]0;{TITLE}\x07\x1b(0q.pat");
     let file = dir.join(&name);
@@ -60,5 +59,4 @@ fn escapes_from_files_reach_the_screen_only_as_text() {
             == "1"),
         "the workbench did not quit"
     );
-    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -154,8 +154,9 @@ fn unreadable_and_oversized_files_are_errors() {
             .to_string()
             .starts_with("/nonexistent/dir/x.pat: cannot read")
     );
-    let dir = std::env::temp_dir().join(format!("bumpwork-pattern-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = tempfile::tempdir().expect("a temporary directory");
+    let dir = dir.path();
+    std::fs::create_dir_all(dir).unwrap();
     let big = dir.join("big.pat");
     std::fs::write(&big, "#".repeat(MAX_SOURCE_BYTES + 1)).unwrap();
     assert!(
@@ -168,7 +169,6 @@ fn unreadable_and_oversized_files_are_errors() {
     std::fs::write(&binary, b"height = u\n# \xff\xfe").unwrap();
     let e = Pattern::load(&binary).unwrap_err();
     assert_eq!((e.line, e.column), (2, 3));
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 #[test]

@@ -54,17 +54,17 @@ fn scene(camera: &str, objects: &str) -> Scene {
 
 /// A scene file (and any files it names) in a fresh directory, for image and pattern files.
 fn scene_in_dir(name: &str, camera: &str, objects: &str, files: &[(&str, &[u8])]) -> Scene {
-    let dir = std::env::temp_dir().join(format!("bumpwork-ref-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = tempfile::Builder::new()
+        .prefix(&format!("bumpwork-ref-{name}-"))
+        .tempdir()
+        .expect("a temporary directory");
+    let dir = dir.path();
     for (file, contents) in files {
         std::fs::write(dir.join(file), contents).unwrap();
     }
     let path: PathBuf = dir.join("scene.toml");
     std::fs::write(&path, scene_text(camera, objects)).unwrap();
-    let scene = bumpwork::scene::load_scene_file(&path).unwrap();
-    let _ = std::fs::remove_dir_all(&dir);
-    scene
+    bumpwork::scene::load_scene_file(&path).unwrap()
 }
 
 const DIMPLED_SPHERE: &str = "[[object]]\nsurface = { sphere = { center = [0, 0, 0], radius = 100 } }\n\

@@ -28,13 +28,13 @@ fn presets_print_as_files_that_read_back_identically() {
 
 #[test]
 fn oversized_scene_files_are_refused_before_parsing() {
-    let path = std::env::temp_dir().join(format!("bumpwork-huge-{}.toml", std::process::id()));
+    let dir = tempfile::tempdir().expect("a temporary directory");
+    let path = dir.path().join("huge.toml");
     std::fs::write(
         &path,
         vec![b'#'; (bumpwork::scene::MAX_SCENE_FILE_BYTES + 10) as usize],
     )
     .unwrap();
     let error = load_scene_file(&path).unwrap_err().to_string();
-    std::fs::remove_file(&path).unwrap();
     assert!(error.contains("larger than the limit"), "{error}");
 }

@@ -161,9 +161,8 @@ fn killing_the_ssh_client_hangs_up_the_remote_workbench() {
 #[ignore = "needs sshd, ssh and tmux; bash .ci/run installs them and runs the ignored tests"]
 fn a_vanished_terminal_ends_the_workbench_without_a_hang_up_signal() {
     require(&[SSHD, "ssh", "ssh-keygen", "tmux"]);
-    let status_file =
-        std::env::temp_dir().join(format!("bumpwork-ssh-status-{}", std::process::id()));
-    let _ = std::fs::remove_file(&status_file);
+    let dir = tempfile::tempdir().expect("a temporary directory");
+    let status_file = dir.path().join("status");
     session("trap", |binary| {
         format!(
             "trap : HUP; {} view plane-dimples sphere-on-plane-dimples --no-watch; echo $? > {}",

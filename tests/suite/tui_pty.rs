@@ -26,8 +26,8 @@ fn picture(screen: &vt100::Screen) -> Vec<(vt100::Color, vt100::Color)> {
 
 #[test]
 fn the_workbench_runs_in_a_real_terminal_and_gives_it_back() {
-    let dir = std::env::temp_dir().join(format!("bumpwork-pty-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = tempfile::tempdir().expect("a temporary directory");
+    let dir = dir.path();
     // The shell reports the exit status and the line discipline after the workbench ends.
     let mut command = CommandBuilder::new("sh");
     command.args([
@@ -35,7 +35,7 @@ fn the_workbench_runs_in_a_real_terminal_and_gives_it_back() {
         "\"$0\" view plane-dimples sphere-on-plane-dimples; echo \"exit=$?\"; stty -a; echo DONE",
         env!("CARGO_BIN_EXE_bumpwork"),
     ]);
-    command.cwd(&dir);
+    command.cwd(dir);
     command.env("TERM", "xterm-256color");
     command.env("COLORTERM", "truecolor");
     command.env_remove("NO_COLOR");
@@ -67,7 +67,7 @@ fn the_workbench_runs_in_a_real_terminal_and_gives_it_back() {
 
     session.send("e");
     session.wait_for("the export to finish", status_contains("exported"));
-    let exported: Vec<_> = std::fs::read_dir(&dir)
+    let exported: Vec<_> = std::fs::read_dir(dir)
         .unwrap()
         .filter_map(|e| e.ok())
         .filter(|e| e.path().extension().is_some_and(|x| x == "png"))
@@ -92,7 +92,6 @@ fn the_workbench_runs_in_a_real_terminal_and_gives_it_back() {
     assert!(text.contains(" icanon") && text.contains(" echo"), "{text}");
     assert!(!text.contains("-icanon"), "{text}");
     drop(parser);
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 /// `--export-dir` sends the export key's stills there, not to the current directory.

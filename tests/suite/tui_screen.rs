@@ -101,12 +101,12 @@ fn every_view_mode_glyph_set_and_colour_mode_draws() {
     }
 }
 
-/// An empty directory of this test process's own, named `name`.
-fn fresh_dir(name: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("bumpwork-tui-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+/// An empty directory of its own, named after `name`, removed when dropped.
+fn fresh_dir(name: &str) -> tempfile::TempDir {
+    tempfile::Builder::new()
+        .prefix(&format!("bumpwork-tui-{name}-"))
+        .tempdir()
+        .expect("a temporary directory")
 }
 
 /// Waits for the export the app started and returns its final status message.
@@ -125,7 +125,8 @@ fn finished_export_message(app: &mut App) -> String {
 
 #[test]
 fn a_wireframe_export_is_a_picture_and_says_it_carries_no_recipe() {
-    let dir = fresh_dir("wire");
+    let temp = fresh_dir("wire");
+    let dir = temp.path().to_path_buf();
     let mut app = app_exporting(&dir, (48, 32), 4);
     while app.view_mode() != ViewMode::Wireframe {
         app.apply(Action::NextViewMode);
@@ -145,12 +146,12 @@ fn a_wireframe_export_is_a_picture_and_says_it_carries_no_recipe() {
             .iter()
             .all(|(k, _)| k != RECIPE)
     );
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 #[test]
 fn the_export_key_writes_the_live_view_in_the_background_and_from_makes_it_again() {
-    let dir = fresh_dir("export");
+    let temp = fresh_dir("export");
+    let dir = temp.path().to_path_buf();
     let mut app = app_exporting(&dir, (64, 36), 4);
     // Live edits a still must carry: the camera, a light, a pattern parameter, the bump.
     app.apply(Action::Orbit(0.3, 0.1));
@@ -200,18 +201,17 @@ fn the_export_key_writes_the_live_view_in_the_background_and_from_makes_it_again
         String::from_utf8_lossy(&out.stderr)
     );
     assert_eq!(read_png_rgb8(&again).unwrap(), read_png_rgb8(path).unwrap());
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 #[test]
 fn quitting_during_an_export_leaves_no_file() {
-    let dir = fresh_dir("cancel");
+    let temp = fresh_dir("cancel");
+    let dir = temp.path().to_path_buf();
     let mut app = app_exporting(&dir, (4000, 3000), 64);
     app.apply(Action::Export);
     std::thread::sleep(Duration::from_millis(200));
     drop(app);
     assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 0);
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 #[test]
@@ -242,7 +242,8 @@ fn material_keys_edit_the_bump_and_redraw() {
 
 #[test]
 fn an_edited_pattern_file_reloads_and_a_broken_one_keeps_the_view_and_shows_where() {
-    let dir = fresh_dir("reload");
+    let temp = fresh_dir("reload");
+    let dir = temp.path().to_path_buf();
     let path = dir.join("live.pat");
     std::fs::write(
         &path,
@@ -286,12 +287,12 @@ fn an_edited_pattern_file_reloads_and_a_broken_one_keeps_the_view_and_shows_wher
     std::fs::write(&path, "height = cos(v / 7)\n").unwrap();
     wait_for(&mut app, &|m| *m == Message::Info("reloaded".into()));
     assert!(!draw(&mut screen, &mut app).is_empty());
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 #[test]
 fn with_watching_off_an_edited_file_is_not_reloaded() {
-    let dir = fresh_dir("nowatch");
+    let temp = fresh_dir("nowatch");
+    let dir = temp.path().to_path_buf();
     let path = dir.join("still.pat");
     std::fs::write(&path, "height = sin(u / 20)\n").unwrap();
     let options = WorkbenchOptions {
@@ -307,7 +308,6 @@ fn with_watching_off_an_edited_file_is_not_reloaded() {
         app.reload_if_changed();
     }
     assert_eq!(*app.message(), Message::None);
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 #[test]
@@ -432,7 +432,8 @@ fn psnr(a: &[u8], b: &[u8]) -> f64 {
 
 #[test]
 fn the_saved_scene_renders_what_the_export_key_exports() {
-    let dir = fresh_dir("save");
+    let temp = fresh_dir("save");
+    let dir = temp.path().to_path_buf();
     let mut app = app_exporting(&dir, (64, 36), 4);
     app.apply(Action::NextScene);
     // The same live edits as an export carries: camera, light, parameter, bump, quality, time.
@@ -510,5 +511,4 @@ fn the_saved_scene_renders_what_the_export_key_exports() {
         panic!("{:?}", app.message());
     };
     assert_ne!(again, text);
-    std::fs::remove_dir_all(&dir).unwrap();
 }
