@@ -2,6 +2,7 @@
 
 pub mod bench;
 pub mod bounded_read;
+pub mod content_hash;
 pub mod diagnostic;
 mod error;
 pub mod export;

@@ -4,6 +4,7 @@
 
 use super::samples::{ResolveFilter, Supersampling};
 use crate::Error;
+use crate::content_hash::{fnv1a64, hash_file};
 use crate::quality::Quality;
 use crate::quality::check_quality;
 use crate::scene::Camera;
@@ -502,80 +503,12 @@ fn file_names(material: &Material) -> Vec<String> {
     bump.into_iter().chain(texture).collect()
 }
 
-/// The FNV-1a hash of a regular file, streamed. A recipe names files from a PNG anyone may have
-/// made: a device (`/dev/zero`), a pipe or a huge file is refused, not read forever.
-/// Files over the image memory limit (`texture::Limits`, which `BUMPWORK_MEMORY_MIB` sets) are
-/// refused too: no pattern or image the renderer reads is larger.
-fn hash_file(path: &Path) -> std::io::Result<u64> {
-    use std::io::{BufRead, BufReader, Error, ErrorKind, Read};
-    let max_bytes = crate::texture::Limits::default().max_bytes;
-    let file = crate::bounded_read::open_regular(path)
-        .map_err(|e| Error::new(ErrorKind::InvalidInput, e.to_string()))?;
-    let metadata = file.metadata()?;
-    if metadata.len() > max_bytes {
-        return Err(Error::new(
-            ErrorKind::InvalidInput,
-            format!("larger than {} MiB", max_bytes >> 20),
-        ));
-    }
-    let mut reader = BufReader::with_capacity(1 << 16, file.take(max_bytes));
-    let mut hash = FNV_OFFSET;
-    loop {
-        let chunk = reader.fill_buf()?;
-        if chunk.is_empty() {
-            return Ok(hash);
-        }
-        hash = fnv1a64_from(hash, chunk);
-        let n = chunk.len();
-        reader.consume(n);
-    }
-}
-
 /// A recipe's text by its hash, `fnv1a64:` and 16 hex digits: stills with the same hash were
 /// made from the same scene, settings and file contents.
 pub fn recipe_hash(recipe_text: &str) -> String {
-    format!(
-        "fnv1a64:{}",
-        hex(fnv1a64_from(FNV_OFFSET, recipe_text.as_bytes()))
-    )
-}
-
-const FNV_OFFSET: u64 = 0xcbf2_9ce4_8422_2325;
-
-/// FNV-1a, 64 bits, continued from `hash` (`FNV_OFFSET` to start) over more bytes: stable across
-/// builds and platforms (unlike std's hasher), enough to notice an edited file.
-fn fnv1a64_from(hash: u64, bytes: &[u8]) -> u64 {
-    bytes.iter().fold(hash, |hash, &b| {
-        (hash ^ b as u64).wrapping_mul(0x0100_0000_01b3)
-    })
+    format!("fnv1a64:{}", hex(fnv1a64(recipe_text.as_bytes())))
 }
 
 fn hex(value: u64) -> String {
     format!("{value:016x}")
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn fnv1a64(bytes: &[u8]) -> u64 {
-        fnv1a64_from(FNV_OFFSET, bytes)
-    }
-
-    #[test]
-    fn fnv1a64_matches_the_published_test_vectors() {
-        assert_eq!(fnv1a64(b""), 0xcbf2_9ce4_8422_2325);
-        assert_eq!(fnv1a64(b"a"), 0xaf63_dc4c_8601_ec8c);
-        assert_eq!(fnv1a64(b"foobar"), 0x8594_4171_f739_67e8);
-    }
-
-    #[test]
-    fn a_streamed_file_hashes_as_its_bytes_and_devices_are_refused() {
-        let bytes: Vec<u8> = (0..200_000u32).map(|i| (i * 7 % 251) as u8).collect();
-        let file = tempfile::NamedTempFile::new().unwrap();
-        std::fs::write(file.path(), &bytes).unwrap();
-        assert_eq!(hash_file(file.path()).unwrap(), fnv1a64(&bytes));
-        #[cfg(unix)]
-        assert!(hash_file(Path::new("/dev/zero")).is_err());
-    }
 }

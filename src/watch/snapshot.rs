@@ -1,7 +1,6 @@
 //! Content hashes of a scene's files, to tell a real change from a save of the same bytes.
 
-use std::hash::{DefaultHasher, Hasher};
-use std::io::Read;
+use crate::content_hash::{fnv1a64, hash_file};
 use std::path::{Path, PathBuf};
 
 /// The content of a set of files, by hash, to tell a real change from a save of the same bytes.
@@ -15,31 +14,17 @@ impl Snapshot {
     }
 }
 
-/// Hashes what a load would read: a regular file up to the image limit, the largest any load
-/// takes. Anything else (a FIFO, a device, a file past the limit) hashes as its kind and size,
-/// so the watcher never blocks or reads forever, and the load that follows says what is wrong.
+/// The hash of what a load would read (see [`hash_file`]); a missing file has none. Anything
+/// a load refuses (a FIFO, a device, a file past the limit) hashes as the reason with the
+/// file's size, so the watcher never blocks or reads forever, and the load that follows says
+/// what is wrong.
 fn content_hash(path: &Path) -> Option<u64> {
-    let limit = crate::texture::Limits::default().max_bytes;
-    let mut hasher = DefaultHasher::new();
-    let file = match crate::bounded_read::open_regular(path) {
-        Ok(file) => file,
-        Err(failure) if failure.is_missing() => return None,
-        Err(failure) => {
-            hasher.write(failure.to_string().as_bytes());
-            return Some(hasher.finish());
-        }
-    };
-    let length = file.metadata().ok()?.len();
-    hasher.write_u64(length);
-    if length > limit {
-        return Some(hasher.finish());
-    }
-    let mut file = file.take(limit);
-    let mut buffer = vec![0; 64 * 1024];
-    loop {
-        match file.read(&mut buffer).ok()? {
-            0 => return Some(hasher.finish()),
-            n => hasher.write(&buffer[..n]),
+    match hash_file(path) {
+        Ok(hash) => Some(hash),
+        Err(error) if error.kind() == std::io::ErrorKind::NotFound => None,
+        Err(error) => {
+            let size = path.metadata().map_or(0, |m| m.len());
+            Some(fnv1a64(format!("{error} {size}").as_bytes()))
         }
     }
 }
