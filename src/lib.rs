@@ -1,5 +1,6 @@
 //! bumpwork: a CPU rasterizer and terminal workbench for Blinn bump maps and texture maps.
 
+pub mod area_average;
 pub mod bench;
 pub mod bounded_read;
 pub mod content_hash;

@@ -3,6 +3,7 @@
 use std::ops::{Add, Mul};
 
 use super::texel_grid::TexelGrid;
+use crate::area_average::area_weights;
 
 /// What can be averaged: linear texels (`Vec4`) and heights (`f32`).
 pub trait Averageable: Copy + Default + Add<Output = Self> + Mul<f32, Output = Self> {}
@@ -56,13 +57,13 @@ fn downsample<T: Averageable>(src: &TexelGrid<T>) -> Option<TexelGrid<T>> {
         return None;
     }
     let (w, h) = (half(src.width()), half(src.height()));
-    let columns = box_taps(src.width(), w);
-    let rows = box_taps(src.height(), h);
+    let columns = area_weights(src.width() as usize, w as usize);
+    let rows = area_weights(src.height() as usize, h as usize);
     Some(TexelGrid::from_fn(w, h, |x, y| {
         let mut sum = T::default();
         for &(j, wy) in &rows[y as usize] {
             for &(i, wx) in &columns[x as usize] {
-                sum = sum + src.at(i, j) * (wx * wy);
+                sum = sum + src.at(i as u32, j as u32) * (wx * wy);
             }
         }
         sum
@@ -71,26 +72,6 @@ fn downsample<T: Averageable>(src: &TexelGrid<T>) -> Option<TexelGrid<T>> {
 
 fn half(side: u32) -> u32 {
     (side / 2).max(1)
-}
-
-/// For each destination texel, the source texels it covers and their weights:
-/// destination `x` spans source `[x·r, (x+1)·r)` with `r = src / dst`.
-fn box_taps(src: u32, dst: u32) -> Vec<Vec<(u32, f32)>> {
-    let ratio = f64::from(src) / f64::from(dst);
-    (0..dst)
-        .map(|x| {
-            let (start, end) = (f64::from(x) * ratio, f64::from(x + 1) * ratio);
-            let first = start.floor() as u32;
-            let last = (end.ceil() as u32).min(src);
-            (first..last)
-                .map(|i| {
-                    let overlap = end.min(f64::from(i + 1)) - start.max(f64::from(i));
-                    (i, (overlap / ratio) as f32)
-                })
-                .filter(|&(_, w)| w > 0.0)
-                .collect()
-        })
-        .collect()
 }
 
 #[cfg(test)]
@@ -127,15 +108,5 @@ mod tests {
                 .len(),
             1
         );
-    }
-
-    #[test]
-    fn weights_sum_to_one() {
-        for (src, dst) in [(2, 1), (3, 1), (9, 4), (1, 1)] {
-            for taps in box_taps(src, dst) {
-                let total: f32 = taps.iter().map(|t| t.1).sum();
-                assert!((total - 1.0).abs() < 1e-6, "{src}->{dst}: {taps:?}");
-            }
-        }
     }
 }

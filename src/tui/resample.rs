@@ -2,6 +2,7 @@
 //! in square pixels, while quadrant and sextant cells have tall sub-pixels, and fine quality
 //! supersamples.
 
+use crate::area_average::area_weights;
 use crate::raster::{Framebuffer, encode_srgb8};
 use glam::Vec3;
 
@@ -45,44 +46,9 @@ pub fn resample_linear(framebuffer: &Framebuffer, width: usize, height: usize) -
     out
 }
 
-/// For each destination index, the source indices it covers and their weights (summing to 1).
-fn area_weights(source: usize, destination: usize) -> Vec<Vec<(usize, f32)>> {
-    if source == 0 {
-        return vec![Vec::new(); destination];
-    }
-    let scale = source as f64 / destination as f64;
-    (0..destination)
-        .map(|d| {
-            let (start, end) = (d as f64 * scale, (d + 1) as f64 * scale);
-            let first = start.floor() as usize;
-            let last = (end.ceil() as usize).clamp(first + 1, source);
-            (first..last)
-                .map(|s| {
-                    let overlap = (end.min(s as f64 + 1.0) - start.max(s as f64)).max(0.0);
-                    (s, (overlap / scale) as f32)
-                })
-                .filter(|&(_, w)| w > 0.0)
-                .collect()
-        })
-        .collect()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn weights_cover_each_destination_exactly_once() {
-        for (source, destination) in [(4, 3), (4, 2), (3, 3), (7, 5), (2, 5)] {
-            for weights in area_weights(source, destination) {
-                let sum: f32 = weights.iter().map(|&(_, w)| w).sum();
-                assert!(
-                    (sum - 1.0).abs() < 1e-5,
-                    "{source}->{destination}: {weights:?}"
-                );
-            }
-        }
-    }
 
     #[test]
     fn averaging_two_rows_mixes_in_linear_light() {
