@@ -1,8 +1,7 @@
 //! PNG encoders and deflate backends on the POV-Ray peer's 1920×1080 one-sample still: the
 //! png crate's settings (filter and deflate, each one-filter choice with fdeflate too) on the
-//! still's rows, bumpwork's own writer (the png crate's adaptive choice and fast compression,
-//! its filters worked out in one pass, written as a still is, to a file in memory where the
-//! system has /dev/shm), and the deflate backends alone on the same rows Up-filtered:
+//! still's rows, bumpwork's stills (the png crate's stream writer, adaptive filter and fast
+//! compression, written as a still is, to a file in memory where the system has /dev/shm), and the deflate backends alone on the same rows Up-filtered:
 //! fdeflate (what `Compression::Fast` uses), miniz_oxide and zlib-rs (flate2's two Rust
 //! backends; this bench builds flate2 with zlib-rs, so the png crate's levels run on zlib-rs
 //! here and on miniz_oxide in the program). One thread, medians of BUMPWORK_BENCH_RUNS (7)

@@ -7,7 +7,6 @@ mod map_png;
 pub mod metadata;
 mod output_file;
 mod png_file;
-mod png_filter;
 mod png_image_data;
 mod pov_scene;
 mod ppm_file;

@@ -19,22 +19,12 @@ impl PngStill {
     /// Starts `path` as a `width` × `height` RGB PNG carrying `texts` (keyword, UTF-8 text).
     pub fn create(
         path: &Path,
-        (width, height): (u32, u32),
+        size: (u32, u32),
         texts: &[(&str, String)],
     ) -> Result<PngStill, Error> {
         let (file, handle) = OutputFile::create(path)?;
-        let fail = |e: png::EncodingError| Error::write(path, e);
-        let mut encoder = png::Encoder::new(WritebackFile::new(handle), width, height);
-        encoder.set_color(png::ColorType::Rgb);
-        encoder.set_depth(png::BitDepth::Eight);
-        encoder.set_source_srgb(png::SrgbRenderingIntent::Perceptual);
-        for (keyword, text) in texts {
-            encoder
-                .add_itxt_chunk(keyword.to_string(), text.clone())
-                .map_err(fail)?;
-        }
-        let writer = encoder.write_header().map_err(fail)?;
-        let rows = ImageData::new(writer, width, height).map_err(|e| Error::write(path, e))?;
+        let rows = ImageData::new(WritebackFile::new(handle), size, texts)
+            .map_err(|e| Error::write(path, e))?;
         Ok(PngStill { file, rows })
     }
 

@@ -1,9 +1,8 @@
-//! The image data of a PNG after its header: rows of 8-bit RGB in, top first, filtered as the
-//! png crate's adaptive filter does (`png_filter`, in AVX2 where there), deflated by fdeflate
-//! as its fast compression does, and written out as image-data chunks of `CHUNK_BYTES`; then
-//! the image's end. The files are the png crate's to the byte.
+//! The image data of a PNG: the header and text chunks, then rows of 8-bit RGB in, top first,
+//! through the png crate's stream writer with its adaptive filter and fast (fdeflate)
+//! compression, in image-data chunks of `CHUNK_BYTES`; then the image's end. Every failed write
+//! is reported, the image's end too, which the png crate writes when its writer is dropped.
 
-use super::png_filter::{FilterPath, RowFilter};
 use std::io::Write;
 use std::sync::{Arc, Mutex, PoisonError};
 
@@ -13,21 +12,16 @@ use std::sync::{Arc, Mutex, PoisonError};
 /// its last row while the other core idles.
 const CHUNK_BYTES: usize = 1 << 17;
 
-/// A PNG's image data being written, after its header.
-pub(super) struct ImageData<W: Write> {
-    filter: RowFilter,
-    deflate: fdeflate::Compressor<ImageDataChunks<W>>,
+/// A PNG being written into `W`, its rows streamed in.
+pub(super) struct ImageData<W: Write + 'static> {
+    rows: png::StreamWriter<'static, Recorded<W>>,
     failure: WriteFailure,
-    /// The start of a row whose rest has not come yet.
-    partial: Vec<u8>,
     row_len: usize,
-    rows_left: u32,
+    bytes_left: usize,
     height: u32,
 }
 
-/// The first write that failed under the compressor, if any. fdeflate takes its writer for
-/// good and unwraps some of its writes, so the writer under it never fails: it keeps the
-/// failure here, drops what comes after, and the rows ask here.
+/// The first write that failed, if any: the png crate drops the error of the image's end.
 type WriteFailure = Arc<Mutex<Option<String>>>;
 
 fn failed(failure: &WriteFailure) -> Option<String> {
@@ -37,126 +31,85 @@ fn failed(failure: &WriteFailure) -> Option<String> {
         .clone()
 }
 
-impl<W: Write> ImageData<W> {
+impl<W: Write + 'static> ImageData<W> {
+    /// Starts a `width` × `height` 8-bit sRGB PNG in `out` carrying `texts` (keyword, UTF-8
+    /// text).
     pub(super) fn new(
-        png: png::Writer<W>,
-        width: u32,
-        height: u32,
+        out: W,
+        (width, height): (u32, u32),
+        texts: &[(&str, String)],
     ) -> Result<ImageData<W>, String> {
         let failure = WriteFailure::default();
-        let chunks = ImageDataChunks {
-            png,
-            buffer: Vec::with_capacity(2 * CHUNK_BYTES),
+        let out = Recorded {
+            inner: out,
             failure: failure.clone(),
         };
+        let mut encoder = png::Encoder::new(out, width, height);
+        encoder.set_color(png::ColorType::Rgb);
+        encoder.set_depth(png::BitDepth::Eight);
+        encoder.set_source_srgb(png::SrgbRenderingIntent::Perceptual);
+        encoder.set_compression(png::Compression::Fast);
+        for (keyword, text) in texts {
+            (encoder.add_itxt_chunk(keyword.to_string(), text.clone()))
+                .map_err(|e| e.to_string())?;
+        }
+        let rows = (encoder.write_header())
+            .and_then(|writer| writer.into_stream_writer_with_size(CHUNK_BYTES))
+            .map_err(|e| failed(&failure).unwrap_or_else(|| e.to_string()))?;
+        let row_len = 3 * width as usize;
         Ok(ImageData {
-            filter: RowFilter::new(width as usize, FilterPath::detect()),
-            deflate: fdeflate::Compressor::new(chunks).map_err(|e| e.to_string())?,
+            rows,
             failure,
-            partial: Vec::new(),
-            row_len: 3 * width as usize,
-            rows_left: height,
+            row_len,
+            bytes_left: row_len * height as usize,
             height,
         })
     }
 
     /// Takes rows of 8-bit RGB, top first; a write may end within a row.
-    pub(super) fn write(&mut self, mut rgb: &[u8]) -> Result<(), String> {
-        if !self.partial.is_empty() {
-            let wanted = (self.row_len - self.partial.len()).min(rgb.len());
-            self.partial.extend_from_slice(&rgb[..wanted]);
-            rgb = &rgb[wanted..];
-            if self.partial.len() < self.row_len {
-                return Ok(());
-            }
-            let row = std::mem::take(&mut self.partial);
-            self.row(&row)?;
-            self.partial = row;
-            self.partial.clear();
-        }
-        let mut rows = rgb.chunks_exact(self.row_len.max(1));
-        for row in &mut rows {
-            self.row(row)?;
-        }
-        self.partial.extend_from_slice(rows.remainder());
-        Ok(())
-    }
-
-    fn row(&mut self, row: &[u8]) -> Result<(), String> {
-        if self.rows_left == 0 {
+    pub(super) fn write(&mut self, rgb: &[u8]) -> Result<(), String> {
+        if rgb.len() > self.bytes_left {
             return Err(format!("more than the image's {} rows", self.height));
         }
-        self.rows_left -= 1;
-        let filtered = self.filter.filter(row);
-        // The type byte on its own, as the png crate writes it: fdeflate's output depends on
-        // where its inputs are cut.
-        let (kind, bytes) = filtered.split_at(1);
-        for part in [kind, bytes] {
-            self.deflate.write_data(part).map_err(|e| e.to_string())?;
-        }
-        failed(&self.failure).map_or(Ok(()), Err)
+        self.bytes_left -= rgb.len();
+        (self.rows.write_all(rgb)).map_err(|e| failed(&self.failure).unwrap_or(e.to_string()))
     }
 
     /// Ends the image data and the file (its last chunk and the image's end).
     pub(super) fn finish(self) -> Result<(), String> {
-        if self.rows_left > 0 || !self.partial.is_empty() {
-            let whole = self.height - self.rows_left;
+        if self.bytes_left > 0 {
+            let written = self.height as usize - self.bytes_left.div_ceil(self.row_len.max(1));
             return Err(format!(
-                "{whole} of the image's {} rows were written",
+                "{written} of the image's {} rows were written",
                 self.height
             ));
         }
-        let chunks = self.deflate.finish().map_err(|e| e.to_string())?;
-        if let Some(failure) = failed(&self.failure) {
-            return Err(failure);
-        }
-        let ImageDataChunks {
-            mut png, buffer, ..
-        } = chunks;
-        if !buffer.is_empty() {
-            png.write_chunk(png::chunk::IDAT, &buffer)
-                .map_err(|e| e.to_string())?;
-        }
-        png.finish().map_err(|e| e.to_string())
+        let finished = self.rows.finish().map_err(|e| e.to_string());
+        failed(&self.failure).map_or(finished, Err)
     }
 }
 
-/// Compressed image data cut into chunks of `CHUNK_BYTES` (the last one shorter).
-struct ImageDataChunks<W: Write> {
-    png: png::Writer<W>,
-    buffer: Vec<u8>,
+/// A writer that keeps its first failure.
+struct Recorded<W: Write> {
+    inner: W,
     failure: WriteFailure,
 }
 
-impl<W: Write> Write for ImageDataChunks<W> {
-    #[inline]
-    fn write(&mut self, data: &[u8]) -> std::io::Result<usize> {
-        self.buffer.extend_from_slice(data);
-        if self.buffer.len() >= CHUNK_BYTES {
-            self.write_whole_chunks();
-        }
-        Ok(data.len())
-    }
-
-    fn flush(&mut self) -> std::io::Result<()> {
-        Ok(())
+impl<W: Write> Recorded<W> {
+    fn record(&self, error: std::io::Error) -> std::io::Error {
+        let mut failure = self.failure.lock().unwrap_or_else(PoisonError::into_inner);
+        failure.get_or_insert_with(|| error.to_string());
+        error
     }
 }
 
-impl<W: Write> ImageDataChunks<W> {
-    #[inline(never)]
-    fn write_whole_chunks(&mut self) {
-        let mut failure = self.failure.lock().unwrap_or_else(PoisonError::into_inner);
-        let whole = self.buffer.len() / CHUNK_BYTES * CHUNK_BYTES;
-        if failure.is_none() {
-            for chunk in self.buffer[..whole].chunks_exact(CHUNK_BYTES) {
-                if let Err(error) = self.png.write_chunk(png::chunk::IDAT, chunk) {
-                    *failure = Some(error.to_string());
-                    break;
-                }
-            }
-        }
-        self.buffer.drain(..whole);
+impl<W: Write> Write for Recorded<W> {
+    fn write(&mut self, data: &[u8]) -> std::io::Result<usize> {
+        self.inner.write(data).map_err(|e| self.record(e))
+    }
+
+    fn flush(&mut self) -> std::io::Result<()> {
+        self.inner.flush().map_err(|e| self.record(e))
     }
 }
 
@@ -216,37 +169,12 @@ mod tests {
             written: written.clone(),
             room,
         };
-        let mut encoder = png::Encoder::new(disk, size.0, size.1);
-        encoder.set_color(png::ColorType::Rgb);
-        let result = encoder
-            .write_header()
-            .map_err(|e| e.to_string())
-            .and_then(|png| ImageData::new(png, size.0, size.1))
-            .and_then(|mut rows| {
-                rgb.chunks(piece).try_for_each(|piece| rows.write(piece))?;
-                rows.finish()
-            });
+        let result = ImageData::new(disk, size, &[]).and_then(|mut rows| {
+            rgb.chunks(piece).try_for_each(|piece| rows.write(piece))?;
+            rows.finish()
+        });
         let bytes = written.lock().unwrap().clone();
         (result, bytes)
-    }
-
-    /// The same image as the png crate writes it with its adaptive filter and fast compression.
-    fn png_crate_file(size: (u32, u32), rgb: &[u8]) -> Vec<u8> {
-        let written = Arc::new(Mutex::new(Vec::new()));
-        let disk = FillsUp {
-            written: written.clone(),
-            room: usize::MAX,
-        };
-        let mut encoder = png::Encoder::new(disk, size.0, size.1);
-        encoder.set_color(png::ColorType::Rgb);
-        encoder.set_compression(png::Compression::Fast);
-        let mut stream = encoder
-            .write_header()
-            .and_then(|w| w.into_stream_writer_with_size(CHUNK_BYTES))
-            .unwrap();
-        stream.write_all(rgb).unwrap();
-        stream.finish().unwrap();
-        written.lock().unwrap().clone()
     }
 
     const SIZE: (u32, u32) = (300, 200);
@@ -263,24 +191,6 @@ mod tests {
             let mut decoded = vec![0; reader.output_buffer_size().unwrap()];
             reader.next_frame(&mut decoded).unwrap();
             assert!(decoded == rgb, "in writes of {piece} bytes");
-        }
-    }
-
-    #[test]
-    fn the_file_is_the_one_the_png_crate_writes() {
-        for size in [SIZE, (1, 1), (11, 3), (640, 480)] {
-            let rgb = rows(size.0, size.1);
-            let (result, ours) = stream(size, &rgb, 4096, usize::MAX);
-            assert_eq!(result, Ok(()));
-            let theirs = png_crate_file(size, &rgb);
-            let chunks = theirs.windows(4).filter(|w| w == b"IDAT").count();
-            assert!(size.0 < 640 || chunks > 1, "several image-data chunks");
-            assert!(
-                ours == theirs,
-                "{size:?}: {} against {} bytes",
-                ours.len(),
-                theirs.len()
-            );
         }
     }
 
