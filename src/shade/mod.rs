@@ -3,13 +3,17 @@
 
 mod bake;
 mod bump;
+mod bump_stage;
+mod colour_stage;
 mod exact_coverage;
 mod exact_point;
 mod gradient;
 mod lanes;
+mod light_stage;
 mod lighting;
 mod pattern_batch;
 mod scene_shader;
+mod shade_scratch;
 mod shader_mode;
 mod shadowing;
 mod vertex_normals;
@@ -22,7 +26,8 @@ pub use exact_coverage::{Neighbours, Reach, ReachShape, nearest_true_hit};
 pub use exact_point::{ExactPoints, ExactScratch, SurfacePointSource, exact_fragments};
 pub use gradient::GradientMethod;
 pub use lighting::{FrameLights, blinn_phong, facing_sign};
-pub use scene_shader::{LitShader, ShadeScratch, render_lit};
+pub use scene_shader::{LitShader, render_lit};
+pub use shade_scratch::ShadeScratch;
 pub use shader_mode::ShaderMode;
 pub use shadowing::Shadowing;
 pub use vertex_normals::{Interpolated, VertexNormals};

@@ -2,30 +2,27 @@
 //! frame, the texture or material colour, the bumped normal, then lighting (or a view mode).
 //! Work the scene does not need is skipped: no texture, no sampling; no bump, no perturbation.
 
-use super::bump::{
-    NormalForm, blinn_normals, blinn_normals_on_flat, bumped_normal, full_normals_in_closed_form,
-};
+use super::bump::NormalForm;
+use super::bump_stage::BumpStage;
+use super::colour_stage::base_colors;
 use super::exact_coverage::Neighbours;
-use super::exact_point::{ExactScratch, SurfacePointSource, exact_fragments, true_hit_derivatives};
-use super::gradient::{GradientMethod, central_difference, shifted_fragments};
-use super::lighting::{
-    FrameLights, Reach, RelativeLight, blinn_phong_many, faces_light, facing_sign,
-};
-use super::pattern_batch::{PatternBatch, Sites};
+use super::exact_point::{SurfacePointSource, exact_fragments, true_hit_derivatives};
+use super::gradient::GradientMethod;
+use super::light_stage::LightStage;
+use super::lighting::{FrameLights, Reach, facing_sign};
+use super::shade_scratch::ShadeScratch;
 use super::shader_mode::ShaderMode;
 use super::shadowing::Shadowing;
 use super::vertex_normals::VertexNormals;
-use crate::pattern::{OutputKind, Precision};
+use crate::pattern::Precision;
 use crate::raster::{
     Fragment, FragmentShader, FrameObject, FrameStats, Framebuffer, PreparedScene, RenderTarget,
     SampleRays,
 };
 use crate::scene::Camera;
-use crate::scene::{BumpSource, Material, Scene, Texturing};
-use crate::surface::{Frame, Frames, ModelSurface, Surface, Vectors};
-use crate::texture::{Footprint, HeightSample, Mapping, SurfacePoint, SurfaceUv, Texel, Wrap};
-use glam::{Mat2, Vec2, Vec3, Vec4};
-use std::borrow::Cow;
+use crate::scene::{BumpSource, Scene, Texturing};
+use crate::surface::{Frames, ModelSurface, Surface, Vectors};
+use glam::Vec3;
 use std::ops::Range;
 use std::sync::Arc;
 
@@ -77,84 +74,6 @@ impl LitShader {
             surface_point: SurfacePointSource::Interpolated,
         }
     }
-}
-
-/// Zeroes `reach` where the light is behind the seen side of the geometric surface (facing
-/// unit `normals` at camera-relative `points`), or the side cannot be told (a NaN normal).
-fn stop_at_terminator(light: &RelativeLight, points: &[Vec3], normals: &[Vec3], reach: &mut [f32]) {
-    // One loop per kind of light, compiled for the widest SIMD: with the light's kind matched
-    // inside it, the loop stayed scalar.
-    #[inline(always)]
-    fn stop(points: &[Vec3], normals: &[Vec3], reach: &mut [f32], way: impl Fn(Vec3) -> Vec3) {
-        for ((reach, &p), &n) in reach.iter_mut().zip(points).zip(normals) {
-            *reach = if faces_light(n, way(p)) { *reach } else { 0.0 };
-        }
-    }
-    crate::simd::widest(
-        #[inline(always)]
-        || match *light {
-            RelativeLight::Point { position, .. } => stop(points, normals, reach, |p| position - p),
-            RelativeLight::Directional { towards, .. } => stop(points, normals, reach, |_| towards),
-        },
-    );
-}
-
-/// Per-thread working memory, reused for every batch.
-#[derive(Default)]
-pub struct ShadeScratch {
-    /// The batch's fragments moved to their true surfaces (`SurfacePointSource::Exact`).
-    exact: ExactScratch,
-    /// Fragment indices grouped by object.
-    order: Vec<u32>,
-    group_starts: Vec<usize>,
-    frames: Frames,
-    colors: Vec<Vec3>,
-    /// Camera-relative positions (for shadows and lighting), facing normals to light, and the
-    /// lit colours.
-    points: Vec<Vec3>,
-    normals: Vec<Vec3>,
-    lit: Vec<Vec3>,
-    /// Per light, per fragment, the fraction of the light reaching it; empty without shadows.
-    reach: Vec<f32>,
-    /// The fragments' facing geometric normals, for shadows.
-    shadow_normals: Vec<Vec3>,
-    heights: Vec<f32>,
-    gradients: Vec<Vec2>,
-    patterns: PatternBatch,
-    texture: TextureBatch,
-    height_lookups: HeightLookups,
-    /// Inputs and outputs of shifted height evaluations (central differences, the seed lattice).
-    shifted: Shifted,
-}
-
-/// A batch's image lookups: texture coordinates, footprints (when the filter reads them) and
-/// the texels.
-#[derive(Default)]
-struct TextureBatch {
-    st: Vec<Vec2>,
-    footprints: Vec<Footprint>,
-    texels: Vec<Texel>,
-}
-
-/// A batch's bump-map lookups: texture coordinates, footprints, the mapping's Jacobians and
-/// the samples.
-#[derive(Default)]
-struct HeightLookups {
-    st: Vec<Vec2>,
-    footprints: Vec<Footprint>,
-    jacobians: Vec<Mat2>,
-    samples: Vec<HeightSample>,
-}
-
-#[derive(Default)]
-struct Shifted {
-    fragments: Vec<Fragment>,
-    identity: Vec<u32>,
-    frames: Frames,
-    heights: Vec<f32>,
-    gradients: Vec<Vec2>,
-    /// Heights at +u, −u, +v, −v.
-    around: [Vec<f32>; 4],
 }
 
 impl FragmentShader for LitShader {
@@ -308,8 +227,10 @@ impl LitShader {
                 &mut scratch.frames,
             );
         }
-        let mut flattened = self.base_colors(object, fragments, group, scratch);
-        flattened += self.bump_gradients(object, fragments, group, scratch);
+        let mut flattened = base_colors(self.time, object, fragments, group, scratch);
+        flattened += self
+            .bump_stage()
+            .gradients(object, fragments, group, scratch);
         let (points, origin) = (&mut scratch.points, object.origin);
         points.clear();
         origin_plus(origin, &scratch.frames.p, points);
@@ -321,9 +242,10 @@ impl LitShader {
         let unbumped = material.bump.is_none();
         // Where the only thing that stops light is the terminator, and the lit normal is the
         // geometric one, the lighting loop tests it: no pass of its own.
-        let terminator_in_lighting = unbumped && self.terminators && !self.any_light_casts();
+        let light = self.light_stage();
+        let terminator_in_lighting = unbumped && self.terminators && !light.any_light_casts();
         if self.mode == ShaderMode::Shaded && !terminator_in_lighting {
-            self.light_reach(object_index, constant_normal, scratch);
+            light.reach(object_index, constant_normal, scratch);
         }
         if self.mode == ShaderMode::Shaded && unbumped {
             // The frames' own normals, read straight into the lighting's lanes.
@@ -338,11 +260,14 @@ impl LitShader {
                 true => Reach::Terminator,
                 false => Reach::Rows(&scratch.reach),
             };
-            self.lighting(material, group, &scratch.colors, reach)
-                .light(surface, &mut scratch.lit, out);
+            light.group(material, group, &scratch.colors, reach).light(
+                surface,
+                &mut scratch.lit,
+                out,
+            );
             return flattened;
         }
-        self.lighting_inputs(object, fragments, group, constant_normal, scratch);
+        light.normals(object, fragments, group, constant_normal, scratch);
         if self.mode == ShaderMode::Shaded {
             let (points, normals) = (&scratch.points, &scratch.normals);
             let surface = |range: Range<usize>| {
@@ -350,8 +275,11 @@ impl LitShader {
                 points.zip(normals[range].iter().copied())
             };
             let reach = Reach::Rows(&scratch.reach);
-            self.lighting(material, group, &scratch.colors, reach)
-                .light(surface, &mut scratch.lit, out);
+            light.group(material, group, &scratch.colors, reach).light(
+                surface,
+                &mut scratch.lit,
+                out,
+            );
         } else {
             for (k, &i) in group.iter().enumerate() {
                 // Without a bump there are no heights: the surface is at height 0.
@@ -363,119 +291,19 @@ impl LitShader {
         flattened
     }
 
-    /// Whether any light casts shadows in this frame.
-    fn any_light_casts(&self) -> bool {
-        let lights = self.lights.lights.len();
-        let shadows = self.shadows.as_ref();
-        shadows.is_some_and(|shadows| (0..lights).any(|light| shadows.casts(light)))
+    fn bump_stage(&self) -> BumpStage {
+        BumpStage {
+            time: self.time,
+            gradient: self.gradient,
+        }
     }
 
-    fn lighting<'a>(
-        &'a self,
-        material: &'a Material,
-        group: &'a [u32],
-        colors: &'a [Vec3],
-        reach: Reach<'a>,
-    ) -> GroupLighting<'a> {
-        GroupLighting {
+    fn light_stage(&self) -> LightStage<'_> {
+        LightStage {
             lights: &self.lights,
-            material,
-            group,
-            colors,
-            reach,
-        }
-    }
-
-    /// How much of each light reaches the group's fragments (at `scratch.points`), into
-    /// `scratch.reach` (left empty when lights reach every fragment whole: no terminators).
-    /// Shadows and terminators follow the geometric surface, not the bumps. `constant_normal` is
-    /// every frame's normal, if they share one.
-    fn light_reach(
-        &self,
-        object_index: usize,
-        constant_normal: Option<Vec3>,
-        scratch: &mut ShadeScratch,
-    ) {
-        scratch.reach.clear();
-        if !self.terminators || self.lights.lights.is_empty() {
-            return;
-        }
-        let (points, normals) = (&scratch.points, &mut scratch.shadow_normals);
-        normals.clear();
-        let facing = |p: Vec3, n: Vec3| n * facing_sign(p, n);
-        match constant_normal {
-            Some(n) => normals.extend(points.iter().map(|&p| facing(p, n))),
-            None => {
-                let frames = points.iter().zip(scratch.frames.n.range(0..points.len()));
-                normals.extend(frames.map(|(&p, n)| facing(p, n)));
-            }
-        }
-        let count = points.len();
-        scratch.reach.resize(self.lights.lights.len() * count, 1.0);
-        let per_light = scratch.reach.chunks_mut(count.max(1));
-        for ((index, light), reach) in self.lights.lights.iter().enumerate().zip(per_light) {
-            let shadows = self.shadows.as_ref().filter(|s| s.casts(index));
-            if let Some(shadows) = shadows {
-                shadows.reaching(index, object_index, points, normals, reach);
-            }
-            stop_at_terminator(light, points, normals, reach);
-        }
-    }
-
-    /// Facing (bumped) normals of the group at `scratch.points`, into `scratch.normals`
-    /// (shading without a bump reads them from the frames instead). `constant_normal` is every
-    /// frame's normal, if they share one.
-    fn lighting_inputs(
-        &self,
-        object: &FrameObject,
-        fragments: &[Fragment],
-        group: &[u32],
-        constant_normal: Option<Vec3>,
-        scratch: &mut ShadeScratch,
-    ) {
-        let surface = &object.prepared.surface;
-        let bumped = object.prepared.material.bump.is_some();
-        // Every normal is written below: resized, not cleared.
-        let (points, normals) = (&scratch.points, &mut scratch.normals);
-        normals.resize(group.len(), Vec3::ZERO);
-        let (frames, heights, gradients) = (&scratch.frames, &scratch.heights, &scratch.gradients);
-        let blinn_when_flat =
-            bumped && matches!(self.normal_form, NormalForm::Blinn | NormalForm::Full);
-        if let (true, Some(frame), Some(n)) = (blinn_when_flat, frames.first(), constant_normal) {
-            // On a flat surface the full normal is Blinn's (see `bumped_normal`).
-            blinn_normals_on_flat(&frame, heights, gradients, normals);
-            let facing = normals.iter_mut().zip(points);
-            facing.for_each(|(normal, &p)| *normal *= facing_sign(p, n));
-            return;
-        }
-        // Normals worked out as a batch (or `false`: one by one below).
-        let batched = match self.normal_form {
-            _ if !bumped => false,
-            NormalForm::Blinn => {
-                blinn_normals(frames, heights, gradients, normals);
-                true
-            }
-            NormalForm::Full => {
-                full_normals_in_closed_form(surface, frames, heights, gradients, normals)
-            }
-            NormalForm::Seed => false,
-        };
-        if batched || !bumped {
-            let geometric = scratch.frames.n.range(0..group.len());
-            for ((&p, normal), n) in points.iter().zip(normals.iter_mut()).zip(geometric) {
-                let shown = if batched { *normal } else { n };
-                *normal = shown * facing_sign(p, n);
-            }
-            return;
-        }
-        let frames = group.iter().zip(scratch.frames.iter());
-        let outputs = points.iter().zip(normals);
-        for (k, ((&i, frame), (&p, normal))) in frames.zip(outputs).enumerate() {
-            let (b, gradient) = (scratch.heights[k], scratch.gradients[k]);
-            let uv = fragments[i as usize].uv;
-            let (form, (bu, bv)) = (self.normal_form, gradient.into());
-            let n = bumped_normal(surface, uv, &frame, b, bu, bv, form);
-            *normal = n * facing_sign(p, frame.n);
+            shadows: self.shadows.as_deref(),
+            terminators: self.terminators,
+            normal_form: self.normal_form,
         }
     }
 
@@ -495,305 +323,6 @@ impl LitShader {
             ShaderMode::Depth => Vec3::splat((-fragment.depth / self.depth_scale).exp2()),
         }
     }
-
-    /// The diffuse colour of each fragment of the group, into `scratch.colors`.
-    fn base_colors(
-        &self,
-        object: &FrameObject,
-        fragments: &[Fragment],
-        group: &[u32],
-        scratch: &mut ShadeScratch,
-    ) -> usize {
-        let material = &object.prepared.material;
-        scratch.colors.clear();
-        match &material.texture {
-            None => {
-                scratch.colors.resize(group.len(), material.color);
-                0
-            }
-            Some(Texturing::Pattern(binding)) => {
-                scratch.colors.resize(group.len(), material.color);
-                let at = Sites {
-                    fragments,
-                    group,
-                    frames: &scratch.frames,
-                };
-                let patterns = &mut scratch.patterns;
-                patterns.colors(binding, at, self.time, &mut scratch.colors)
-            }
-            Some(Texturing::Image(image)) => {
-                let surface = &object.prepared.surface;
-                let mapping = mapping_on(&image.mapping, surface, image.sampler.wrap_s);
-                let point = self.surface_point(fragments, group, &scratch.frames);
-                let texture = &mut scratch.texture;
-                // Every coordinate (and footprint, if wanted) is written below: resized, not
-                // cleared, and written in place (a push per fragment stalled on the list's length).
-                let wants_footprint = image.sampler.filter.uses_footprint();
-                texture.st.resize(group.len(), Vec2::ZERO);
-                let footprints = if wants_footprint { group.len() } else { 0 };
-                texture.footprints.resize(footprints, Footprint::POINT);
-                mapping.map_each(group.len(), point, |k, mapped| {
-                    texture.st[k] = mapped.st;
-                    if wants_footprint {
-                        let fragment = &fragments[group[k] as usize];
-                        texture.footprints[k] = mapped.footprint(fragment.duv_dx, fragment.duv_dy);
-                    }
-                });
-                // Every texel is written by the sampler: resized, not cleared.
-                texture.texels.resize(group.len(), Texel::ZERO);
-                let (st, footprints) = (&texture.st, &texture.footprints);
-                image
-                    .texture
-                    .sample_many(&image.sampler, st, footprints, &mut texture.texels);
-                // The material's colour held by value, not read through the material at each
-                // texel.
-                let base = material.color.extend(0.0);
-                let over = texture
-                    .texels
-                    .iter()
-                    .map(|texel| over_material(*texel, base));
-                scratch.colors.extend(over);
-                0
-            }
-        }
-    }
-
-    /// The bump height and its (u,v) gradient per fragment, by the shader's gradient method,
-    /// into `scratch.heights` and `scratch.gradients` (zero without a bump).
-    fn bump_gradients(
-        &self,
-        object: &FrameObject,
-        fragments: &[Fragment],
-        group: &[u32],
-        scratch: &mut ShadeScratch,
-    ) -> usize {
-        let Some(bump) = &object.prepared.material.bump else {
-            scratch.heights.clear();
-            scratch.gradients.clear();
-            return 0;
-        };
-        let gives_slope = matches!(&bump.source,
-            BumpSource::Pattern(b) if b.pattern.output() == OutputKind::Slope);
-        let flattened = match self.gradient {
-            GradientMethod::SeedLattice => {
-                let shifted = &mut scratch.shifted;
-                shifted_fragments(fragments, group, Vec2::floor, &mut shifted.fragments);
-                let base = (&scratch.frames, fragments, group);
-                let flattened = self.shifted_bump(
-                    object,
-                    shifted,
-                    base,
-                    (&mut scratch.patterns, &mut scratch.height_lookups),
-                );
-                std::mem::swap(&mut scratch.heights, &mut shifted.heights);
-                std::mem::swap(&mut scratch.gradients, &mut shifted.gradients);
-                flattened
-            }
-            GradientMethod::CentralDifference { step } if !gives_slope => {
-                let flattened = self.bump_samples(object, fragments, group, scratch);
-                self.central_gradients(object, fragments, group, step, scratch);
-                flattened
-            }
-            _ => self.bump_samples(object, fragments, group, scratch),
-        };
-        let scale = bump.scale();
-        for (h, g) in scratch.heights.iter_mut().zip(&mut scratch.gradients) {
-            *h *= scale;
-            *g *= scale;
-        }
-        flattened
-    }
-
-    /// Replaces `scratch.gradients` by central differences of heights a `step` away.
-    fn central_gradients(
-        &self,
-        object: &FrameObject,
-        fragments: &[Fragment],
-        group: &[u32],
-        step: f32,
-        scratch: &mut ShadeScratch,
-    ) {
-        let shifts = [
-            Vec2::new(step, 0.0),
-            Vec2::new(-step, 0.0),
-            Vec2::new(0.0, step),
-            Vec2::new(0.0, -step),
-        ];
-        let shifted = &mut scratch.shifted;
-        for (k, shift) in shifts.into_iter().enumerate() {
-            shifted_fragments(fragments, group, |uv| uv + shift, &mut shifted.fragments);
-            let work = (&mut scratch.patterns, &mut scratch.height_lookups);
-            let base = (&scratch.frames, fragments, group);
-            self.shifted_bump(object, shifted, base, work);
-            std::mem::swap(&mut shifted.around[k], &mut shifted.heights);
-        }
-        let around = &shifted.around;
-        for (k, g) in scratch.gradients.iter_mut().enumerate() {
-            let heights = [around[0][k], around[1][k], around[2][k], around[3][k]];
-            *g = central_difference(heights, step);
-        }
-    }
-
-    /// Heights and exact gradients at `shifted.fragments` (each with its own surface frame),
-    /// into `shifted.heights` and `shifted.gradients`.
-    fn shifted_bump(
-        &self,
-        object: &FrameObject,
-        shifted: &mut Shifted,
-        base: (&Frames, &[Fragment], &[u32]),
-        (patterns, height_lookups): (&mut PatternBatch, &mut HeightLookups),
-    ) -> usize {
-        let surface = &object.prepared.surface;
-        let n = shifted.fragments.len();
-        shifted.identity.clear();
-        shifted.identity.extend(0..n as u32);
-        shifted.frames.clear();
-        let fragments = &shifted.fragments;
-        match surface {
-            // A model's (u,v) name no point: its shifted frames step along its unshifted ones.
-            Surface::Model(_) => {
-                let (frames, originals, group) = base;
-                shifted.frames.extend((0..n).map(|k| {
-                    let step = fragments[k].uv - originals[group[k] as usize].uv;
-                    let frame = frames.at(k);
-                    Frame {
-                        p: frame.p + frame.pu * step.x + frame.pv * step.y,
-                        ..frame
-                    }
-                }));
-            }
-            _ => surface.frames(n, |k| fragments[k].uv, &mut shifted.frames),
-        }
-        let mut output = BumpOutput {
-            frames: &shifted.frames,
-            patterns,
-            height_lookups,
-            heights: &mut shifted.heights,
-            gradients: &mut shifted.gradients,
-        };
-        self.evaluate_bump(object, &shifted.fragments, &shifted.identity, &mut output)
-    }
-
-    /// Unscaled heights and exact gradients of the group at its own (u,v).
-    fn bump_samples(
-        &self,
-        object: &FrameObject,
-        fragments: &[Fragment],
-        group: &[u32],
-        scratch: &mut ShadeScratch,
-    ) -> usize {
-        let mut output = BumpOutput {
-            frames: &scratch.frames,
-            patterns: &mut scratch.patterns,
-            height_lookups: &mut scratch.height_lookups,
-            heights: &mut scratch.heights,
-            gradients: &mut scratch.gradients,
-        };
-        self.evaluate_bump(object, fragments, group, &mut output)
-    }
-
-    /// The bump source's height and exact (u,v) gradient, before the bump's strength.
-    fn evaluate_bump(
-        &self,
-        object: &FrameObject,
-        fragments: &[Fragment],
-        group: &[u32],
-        output: &mut BumpOutput,
-    ) -> usize {
-        let Some(bump) = &object.prepared.material.bump else {
-            reset(output.heights, group.len(), 0.0);
-            reset(output.gradients, group.len(), Vec2::ZERO);
-            return 0;
-        };
-        // Both sources write every height and gradient: resized, not cleared.
-        output.heights.resize(group.len(), 0.0);
-        output.gradients.resize(group.len(), Vec2::ZERO);
-        match &bump.source {
-            BumpSource::Pattern(binding) => {
-                let at = Sites {
-                    fragments,
-                    group,
-                    frames: output.frames,
-                };
-                let (heights, gradients) = (&mut *output.heights, &mut *output.gradients);
-                output
-                    .patterns
-                    .bump(binding, at, self.time, heights, gradients)
-            }
-            BumpSource::Image(image) => {
-                let surface = &object.prepared.surface;
-                let mapping = mapping_on(&image.mapping, surface, image.wrap_s);
-                let point = self.surface_point(fragments, group, output.frames);
-                let lookups = &mut *output.height_lookups;
-                // Every entry is written below: resized, not cleared.
-                lookups.st.resize(group.len(), Vec2::ZERO);
-                lookups.footprints.resize(group.len(), Footprint::POINT);
-                lookups.jacobians.resize(group.len(), Mat2::ZERO);
-                mapping.map_each(group.len(), point, |k, mapped| {
-                    let fragment = &fragments[group[k] as usize];
-                    lookups.st[k] = mapped.st;
-                    lookups.footprints[k] = mapped.footprint(fragment.duv_dx, fragment.duv_dy);
-                    lookups.jacobians[k] = mapped.jacobian;
-                });
-                lookups.samples.resize(group.len(), HeightSample::default());
-                let wraps = (image.wrap_s, image.wrap_t);
-                let (st, footprints) = (&lookups.st, &lookups.footprints);
-                (image.map).sample_gradient_many(st, footprints, wraps, &mut lookups.samples);
-                let samples = lookups.samples.iter().zip(&lookups.jacobians);
-                for ((height, gradient), (sample, &jacobian)) in output
-                    .heights
-                    .iter_mut()
-                    .zip(output.gradients.iter_mut())
-                    .zip(samples)
-                {
-                    *height = sample.height;
-                    *gradient = sample.surface_gradient(jacobian);
-                }
-                0
-            }
-            BumpSource::NormalMap(map) => {
-                let point = self.surface_point(fragments, group, output.frames);
-                let each = output.heights.iter_mut().zip(output.gradients.iter_mut());
-                for (k, (height, gradient)) in each.enumerate() {
-                    *height = 0.0;
-                    *gradient = map.gradient(&point(k));
-                }
-                0
-            }
-        }
-    }
-
-    /// What a mapping sees of the k-th fragment of the group (`frames` in the group's order).
-    fn surface_point<'a>(
-        &self,
-        fragments: &'a [Fragment],
-        group: &'a [u32],
-        frames: &'a Frames,
-    ) -> impl Fn(usize) -> SurfacePoint + 'a {
-        let time = self.time as f32;
-        let frames = frames.slices();
-        let group = &group[..frames.len];
-        #[inline(always)]
-        move |k| {
-            let frame = frames.at(k);
-            SurfacePoint {
-                p: frame.p,
-                pu: frame.pu,
-                pv: frame.pv,
-                uv: fragments[group[k] as usize].uv,
-                time,
-            }
-        }
-    }
-}
-
-/// Where one bump evaluation reads its frames and writes its results.
-struct BumpOutput<'a> {
-    frames: &'a Frames,
-    patterns: &'a mut PatternBatch,
-    height_lookups: &'a mut HeightLookups,
-    heights: &'a mut Vec<f32>,
-    gradients: &'a mut Vec<Vec2>,
 }
 
 /// Moves `group`'s fragments (chart (u,v) and derivatives) and their `frames` to the model's
@@ -815,87 +344,11 @@ fn to_texture_space(
     }
 }
 
-/// An image's mapping in its cheapest exact form on `surface`. A spherical mapping about a
-/// sphere's centre (pole +y, front +z: what scene files bind) reads back the sphere's own
-/// parameters: φ = u·π/360 − π/2 and θ = v·π/360, so s = ½ + φ/2π = u/720 + ¼ and
-/// t = θ/π = v/360, and the per-fragment atan2, acos, hypot and Jacobian (a third of a textured
-/// sphere's instructions) become one multiply-add with a constant Jacobian (the analytic one;
-/// the general form holds ∂s/∂u finite within 10⁻⁴ of the poles). s then spans [¼, 5/4): the
-/// same texels under the repeat wrap spherical mappings use on s; other wraps keep the general form.
-fn mapping_on<'a>(mapping: &'a Mapping, surface: &Surface, wrap_s: Wrap) -> Cow<'a, Mapping> {
-    match (mapping, surface) {
-        (Mapping::Spherical(m), Surface::Sphere(_))
-            if wrap_s == Wrap::Repeat && m.is_upright_about_anchor() =>
-        {
-            Cow::Owned(Mapping::SurfaceUv(SurfaceUv {
-                scale: Vec2::new(1.0 / 720.0, 1.0 / 360.0),
-                offset: Vec2::new(0.25, 0.0),
-            }))
-        }
-        _ => Cow::Borrowed(mapping),
-    }
-}
-
-/// What lighting one group takes: the lights, the material, the group's fragments and their
-/// base colours.
-struct GroupLighting<'a> {
-    lights: &'a FrameLights,
-    material: &'a Material,
-    group: &'a [u32],
-    colors: &'a [Vec3],
-    reach: Reach<'a>,
-}
-
-impl GroupLighting<'_> {
-    /// Lights the group in one batch into `out`, from the points and normals `surface` gives:
-    /// straight into `out` when the group's fragments are consecutive (as a one-object batch's
-    /// are), else through `lit` and a scatter.
-    fn light<Pairs: Iterator<Item = (Vec3, Vec3)>>(
-        &self,
-        surface: impl Fn(Range<usize>) -> Pairs,
-        lit: &mut Vec<Vec3>,
-        out: &mut [Vec3],
-    ) {
-        let (lights, material, colors, reach) =
-            (self.lights, self.material, self.colors, self.reach);
-        if let Some(range) = consecutive(self.group) {
-            blinn_phong_many(lights, material, colors, surface, reach, &mut out[range]);
-            return;
-        }
-        lit.resize(self.group.len(), Vec3::ZERO);
-        blinn_phong_many(lights, material, colors, surface, reach, lit);
-        for (&i, &color) in self.group.iter().zip(lit.iter()) {
-            out[i as usize] = color;
-        }
-    }
-}
-
-/// The range `group` lists, when its indices are consecutive. A group ascends without repeats
-/// (`group_by_object` orders it so): then its ends alone tell.
-fn consecutive(group: &[u32]) -> Option<Range<usize>> {
-    debug_assert!(group.windows(2).all(|pair| pair[0] < pair[1]), "ascending");
-    let (first, last) = (*group.first()? as usize, *group.last()? as usize);
-    (last - first + 1 == group.len()).then_some(first..last + 1)
-}
-
-/// A premultiplied texel over the material's colour `base` (its fourth lane unused): where the
-/// image is transparent the material shows through. In four lanes, the same arithmetic per
-/// channel as `texel.xyz + colour * (1 - alpha)` in three.
-#[inline(always)]
-fn over_material(texel: Texel, base: Vec4) -> Vec3 {
-    (texel + base * Vec4::splat(1.0 - texel.w)).truncate()
-}
-
 /// `origin + p` for every point `p`, appended to `points`.
 fn origin_plus(origin: Vec3, p: &Vectors, points: &mut Vec<Vec3>) {
     let [x, y, z] = p.coordinates();
     let each = x.iter().zip(y).zip(z);
     points.extend(each.map(|((&x, &y), &z)| origin + Vec3::new(x, y, z)));
-}
-
-fn reset<T: Copy>(values: &mut Vec<T>, len: usize, value: T) {
-    values.clear();
-    values.resize(len, value);
 }
 
 /// Swaps the exact position and normal of each frame for the tessellation's interpolated ones
@@ -968,6 +421,9 @@ pub fn render_lit(prepared: &PreparedScene, target: &RenderTarget) -> (Framebuff
 mod tests {
     use super::*;
     use crate::raster::{PreparedScene, RenderTarget, Viewport, frame_objects, render_pass};
+    use crate::shade::colour_stage::over_material;
+    use crate::texture::{Mapping, SurfaceUv, Texel, Wrap};
+    use glam::{Vec2, Vec4};
 
     /// A frame rendered into a new framebuffer.
     fn render_with(
@@ -1055,15 +511,6 @@ mod tests {
             },
             chosen_live: false,
         })
-    }
-
-    #[test]
-    fn a_group_is_consecutive_when_its_ends_span_it() {
-        assert_eq!(consecutive(&[3, 4, 5]), Some(3..6));
-        assert_eq!(consecutive(&[7]), Some(7..8));
-        assert_eq!(consecutive(&[3, 5, 6]), None);
-        assert_eq!(consecutive(&[0, 1, 3]), None);
-        assert_eq!(consecutive(&[]), None);
     }
 
     /// The shader skips derivatives only where nothing it reads needs them, object by object:
