@@ -1,10 +1,14 @@
 //! The workbench's state and how each action changes it. Drawing reads this state; nothing here
 //! touches the terminal. Changes mark what must be redrawn, so an idle screen costs nothing.
 
+mod scene_files;
+mod scene_switching;
+
 use super::action::Action;
 use super::clock::Clock;
 use super::diagnostic_box::DiagnosticBox;
 use super::export::ExportJob;
+use super::frame_report::FrameReport;
 use super::help::Help;
 use super::image_shelf::ImageShelf;
 use super::kept_scene::KeptScene;
@@ -19,19 +23,20 @@ use super::param_panel::ParamPanel;
 use super::quality::QualityPreset;
 use super::scene_picker::ScenePicker;
 use super::scene_setup::{check_settings, dress, first_bumped_object, prepare, shelf_for};
+use super::status_message::{INFO_LIFETIME, Message};
 use super::view_mode::ViewMode;
 use crate::Error;
 use crate::overrides::Override;
 use crate::quality::Quality;
-use crate::raster::{FrameStats, PreparedScene};
+use crate::raster::PreparedScene;
 use crate::scene::Camera;
 use crate::scene::{Material, MaterialChoice, Scene};
 use crate::shadow::ShadowCache;
 use crate::surface::Surface;
 use crate::term::graphics::Protocol;
 use crate::term::{ColorMode, GlyphSet};
+use crate::watch::Reloader;
 use crate::watch::open_watched;
-use crate::watch::{ReloadOutcome, Reloader};
 use crossterm::event::KeyEvent;
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
@@ -100,38 +105,6 @@ type Cycle = fn(&mut Material, &Surface, i32, &mut ImageShelf) -> Result<String,
 
 /// How long the object `o` moves to stays marked in the picture.
 const MARK_LIFETIME: Duration = Duration::from_millis(1500);
-
-/// How long an `Info` message stays in the status line.
-pub const INFO_LIFETIME: Duration = Duration::from_secs(5);
-
-/// The reload state or the last error, shown in the status line.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub enum Message {
-    #[default]
-    None,
-    Info(String),
-    Error(String),
-}
-
-/// What the last frame cost.
-#[derive(Clone, Copy, Debug, Default)]
-pub struct FrameReport {
-    pub render_time: Duration,
-    pub stats: FrameStats,
-    pub bytes: usize,
-    /// PSNR against the reference, when the error view drew the frame.
-    pub psnr_db: Option<f64>,
-    /// Passes averaged into the picture on screen (progressive refinement).
-    pub passes: u32,
-    /// Bytes of the last picture sent as pixels.
-    pub picture_bytes: usize,
-    /// Whether more passes of this picture are coming.
-    pub refining: bool,
-    /// Every byte written to the terminal.
-    pub bytes_sent: u64,
-    /// The link's measured throughput in bytes per second, while it holds the frames back.
-    pub link_throughput: Option<f64>,
-}
 
 /// What must be redrawn: the picture (re-render) or only the text around it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -561,81 +534,6 @@ impl App {
         true
     }
 
-    pub fn switch_scene(&mut self, step: i32) {
-        let count = self.scenes.len() as i32;
-        let index = (self.scene_index as i32 + step).rem_euclid(count) as usize;
-        self.show_scene(index);
-    }
-
-    /// The scene at `index` of `pickable_scenes`, added to the scenes Tab goes through if it
-    /// is a built-in not among them.
-    fn go_to_picked(&mut self, index: usize) {
-        let Some(name) = self.pickable_scenes().into_iter().nth(index) else {
-            return;
-        };
-        let index = match self.scenes.iter().position(|s| *s == name) {
-            Some(index) => index,
-            None => {
-                self.scenes.push(name);
-                self.kept.push(None);
-                self.scenes.len() - 1
-            }
-        };
-        self.show_scene(index);
-    }
-
-    /// Shows scene `index` as it was left, or fresh from its source the first time; the scene
-    /// left is kept as it is.
-    fn show_scene(&mut self, index: usize) {
-        if index == self.scene_index {
-            return;
-        }
-        let next = match self.kept[index].take() {
-            Some(kept) => kept,
-            None => match self.open_fresh(index) {
-                Ok(fresh) => fresh,
-                Err(e) => return self.show_error(&e),
-            },
-        };
-        let left = self.swap_in(next);
-        self.kept[self.scene_index] = Some(left);
-        self.scene_index = index;
-        self.close(OverlayKind::Diagnostic);
-        self.tell(Message::None);
-        self.dirty = Dirty::ALL;
-    }
-
-    /// Scene `index` as its source gives it, with the `--set` settings.
-    fn open_fresh(&self, index: usize) -> Result<KeptScene, Error> {
-        let (mut scene, reloader) = open_watched(&self.scenes[index], self.watch)?;
-        dress(&self.settings, &self.choice, &mut scene)?;
-        let (prepared, quality_in_use) = prepare(scene, self.quality, &self.settings)?;
-        Ok(KeptScene {
-            images: shelf_for(&prepared.scene, &self.scenes[index]),
-            object: first_bumped_object(&prepared.scene),
-            param: 0,
-            orbit: Orbit::from_camera(&prepared.scene.camera),
-            quality: self.quality,
-            quality_in_use,
-            reloader,
-            prepared,
-        })
-    }
-
-    /// Puts `next` on show; returns what was.
-    fn swap_in(&mut self, next: KeptScene) -> KeptScene {
-        KeptScene {
-            prepared: std::mem::replace(&mut self.prepared, next.prepared),
-            orbit: std::mem::replace(&mut self.orbit, next.orbit),
-            object: std::mem::replace(&mut self.object, next.object),
-            param: std::mem::replace(&mut self.param, next.param),
-            quality: std::mem::replace(&mut self.quality, next.quality),
-            quality_in_use: std::mem::replace(&mut self.quality_in_use, next.quality_in_use),
-            images: std::mem::replace(&mut self.images, next.images),
-            reloader: std::mem::replace(&mut self.reloader, next.reloader),
-        }
-    }
-
     /// `q`: quits, but while an export is under way first says once what that cancels.
     fn quit_unless_busy(&mut self) {
         match &self.export_job {
@@ -661,95 +559,6 @@ impl App {
                 .push(Box::new(DiagnosticBox { message: text }));
         }
         self.tell(Message::Error(first));
-    }
-
-    /// Takes what the file watcher found: a changed scene replaces the shown one (keeping the
-    /// camera, view, selection and live parameter values); a failed one keeps the last good view
-    /// and shows the error.
-    pub fn reload_if_changed(&mut self) {
-        let Some(reloader) = &self.reloader else {
-            return;
-        };
-        let outcomes: Vec<ReloadOutcome> = std::iter::from_fn(|| reloader.poll()).collect();
-        for outcome in outcomes {
-            self.dirty.text = true;
-            match outcome {
-                ReloadOutcome::Reloaded(reload) => {
-                    let mut reload = reload;
-                    if let Err(e) = dress(&self.settings, &self.choice, &mut reload.scene) {
-                        self.show_error(&e);
-                        continue;
-                    }
-                    let (scene, kept) = reload.keep_live_params_telling(&self.prepared.scene);
-                    match prepare(scene, self.quality, &self.settings) {
-                        Ok((prepared, quality)) => {
-                            let source = &self.scenes[self.scene_index];
-                            self.images = shelf_for(&prepared.scene, source);
-                            self.prepared = prepared;
-                            self.quality_in_use = quality;
-                            let last = self.prepared.objects.len().saturating_sub(1);
-                            self.object = self.object.min(last);
-                            self.tell(Message::Info(reloaded_message(&kept)));
-                            self.close(OverlayKind::Diagnostic);
-                            self.dirty.picture = true;
-                        }
-                        Err(e) => self.show_error(&e),
-                    }
-                }
-                ReloadOutcome::Failed(error) => {
-                    self.tell(Message::Error(error.first_line().to_string()));
-                    self.close(OverlayKind::Diagnostic);
-                    let message = error.message;
-                    self.overlays.push(Box::new(DiagnosticBox { message }));
-                }
-                ReloadOutcome::Unchanged => {}
-            }
-        }
-    }
-
-    /// Writes the view (camera, lights, live material values) as a new scene file beside the
-    /// exports, never over an existing file.
-    fn save_scene(&mut self) {
-        let source = &self.scenes[self.scene_index];
-        let stem = format!("bumpwork-{}", super::export::slug(&self.scene().name));
-        let path = super::export::unique_path(&self.export_dir, &stem, "toml");
-        let exported = Quality {
-            samples: self.export_samples,
-            ..self.quality_in_use
-        };
-        let (scene, camera, time) = (&self.prepared.scene, self.camera(), self.clock.time());
-        let saved = crate::still::saved_view(source, scene, &camera, &exported, time)
-            .and_then(|file| write_new_file(&path, file.to_toml().as_bytes()));
-        self.tell(match saved {
-            Ok(()) => Message::Info(format!("saved the view as {}", path.display())),
-            Err(e) => Message::Error(e.to_string()),
-        });
-    }
-
-    /// The current scene as its source gives it, with the `--set` settings.
-    fn scene_as_saved(&self) -> Result<Scene, Error> {
-        let mut scene = crate::scene::load_source(&self.scenes[self.scene_index])?;
-        dress(&self.settings, &self.choice, &mut scene)?;
-        Ok(scene)
-    }
-
-    /// The scene's materials as its source gives them; the lights and the camera stay.
-    fn drop_live_values(&mut self) {
-        let fresh = self.scene_as_saved().and_then(|mut scene| {
-            scene.lights = self.prepared.scene.lights.clone();
-            prepare(scene, self.quality, &self.settings)
-        });
-        match fresh {
-            Ok((prepared, quality)) => {
-                self.prepared = prepared;
-                self.quality_in_use = quality;
-                self.object = self
-                    .object
-                    .min(self.prepared.objects.len().saturating_sub(1));
-                self.tell(Message::Info("the file's values again".into()));
-            }
-            Err(e) => self.show_error(&e),
-        }
     }
 
     /// Pauses or runs the clock, saying so, and saying when nothing shown moves with it.
@@ -851,30 +660,6 @@ impl App {
             text: false,
         };
     }
-}
-
-/// Writes `bytes` to `path` whole or not at all.
-fn write_new_file(path: &std::path::Path, bytes: &[u8]) -> Result<(), Error> {
-    use std::io::Write;
-    let (output, mut file) = crate::export::OutputFile::create(path)?;
-    file.write_all(bytes)
-        .map_err(|e| Error::write(path, crate::bounded_read::io_words(&e)))?;
-    output.commit()
-}
-
-/// "reloaded", and the live values that stayed over the file's new ones.
-fn reloaded_message(kept: &[crate::watch::KeptValue]) -> String {
-    if kept.is_empty() {
-        return "reloaded".into();
-    }
-    let values: Vec<String> = kept
-        .iter()
-        .map(|k| format!("{}={:.3} (the file says {:.3})", k.param, k.live, k.file))
-        .collect();
-    format!(
-        "reloaded; kept the live {}; x takes the file's values",
-        values.join(", ")
-    )
 }
 
 fn next_glyphs(glyphs: GlyphSet) -> GlyphSet {

@@ -1,9 +1,10 @@
 //! The message log (`M`): every message of the run, the start-up note included, newest last,
 //! errors marked.
 
-use super::app::{App, Message};
+use super::app::App;
 use super::overlay::{Overlay, OverlayKind, Reply};
 use super::popup::{centered, clamp_scroll, draw_box, scrolled};
+use super::status_message::Message;
 use crossterm::event::{KeyCode, KeyEvent};
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;

@@ -13,6 +13,7 @@ mod error_view;
 mod event_loop;
 mod export;
 mod frame_pacing;
+mod frame_report;
 mod help;
 mod image_shelf;
 mod input;
@@ -35,12 +36,14 @@ mod scene_picker;
 mod scene_setup;
 mod screen;
 mod status;
+mod status_message;
 mod view_mode;
 mod wireframe;
 
 pub use action::Action;
-pub use app::{App, Dirty, FrameReport, INFO_LIFETIME, Message};
+pub use app::{App, Dirty};
 pub use event_loop::run;
+pub use frame_report::FrameReport;
 pub use options::WorkbenchOptions;
 pub use orbit::Orbit;
 pub use overlay::OverlayKind;
@@ -52,4 +55,5 @@ pub use render::{
     render_picture_pass,
 };
 pub use screen::{Layout, Screen};
+pub use status_message::{INFO_LIFETIME, Message};
 pub use view_mode::{RenderedFrame, ViewMode};

@@ -1,8 +1,10 @@
 //! The status line: what is shown and what it cost, shortened to fit by dropping the least
 //! important parts first.
 
-use super::app::{App, FrameReport, Message};
+use super::app::App;
+use super::frame_report::FrameReport;
 use super::material_controls::{ParamRow, ParamSlot};
+use super::status_message::Message;
 use crate::scene::{BumpSource, Material, Texturing};
 use crate::term::{ColorMode, GlyphSet, sanitize};
 
