@@ -389,39 +389,30 @@ mod tests {
         assert_eq!(out, frame);
     }
 
+    /// `frame` sent by `pacer` with input that must not be looked at: what went out, and in
+    /// how many writes.
+    fn sent_without_input(pacer: &FramePacer, frame: &[u8]) -> (Sent, usize) {
+        let mut writes = 0;
+        let cut_points = [(0, 0), (frame.len() / 2, 1)];
+        let mut write = |_: &[u8]| {
+            writes += 1;
+            Ok(())
+        };
+        let mut input = |_| panic!("input looked at");
+        let sent = pacer.send(frame, &cut_points, &mut write, &mut input);
+        (sent.unwrap(), writes)
+    }
+
     #[test]
     fn where_the_link_keeps_up_a_frame_goes_out_in_one_write_without_looking_at_input() {
-        let frame = vec![b'x'; 100_000];
-        let mut writes = 0;
-        let sent = FramePacer::default()
-            .send(
-                &frame,
-                &[(0, 0), (50_000, 1)],
-                &mut |_| {
-                    writes += 1;
-                    Ok(())
-                },
-                &mut |_| panic!("input looked at"),
-            )
-            .unwrap();
+        let (sent, writes) = sent_without_input(&FramePacer::default(), &[b'x'; 100_000]);
         assert_eq!((sent.bytes, sent.cut_before, writes), (100_000, None, 1));
     }
 
     #[test]
     fn a_frame_the_link_carries_quickly_goes_out_whole_even_over_a_slow_link() {
-        let frame = vec![b'x'; 20_000]; // 80 ms at 250 kB/s
-        let mut writes = 0;
-        let sent = slow_pacer()
-            .send(
-                &frame,
-                &[(0, 0), (10_000, 1)],
-                &mut |_| {
-                    writes += 1;
-                    Ok(())
-                },
-                &mut |_| panic!("input looked at"),
-            )
-            .unwrap();
+        // 80 ms at 250 kB/s.
+        let (sent, writes) = sent_without_input(&slow_pacer(), &[b'x'; 20_000]);
         assert_eq!((sent.bytes, writes), (20_000, 1));
     }
 
