@@ -221,24 +221,7 @@ pub fn render(
     let Some(last) = targets.last() else {
         return FrameStats::default();
     };
-    assert!(
-        refinement
-            .as_ref()
-            .is_none_or(|r| r.rule.first_decided_pass() < targets.len()),
-        "a refinement starts at one of the group's passes"
-    );
-    let shared = |t: &RenderTarget| {
-        t.viewport == last.viewport
-            && std::ptr::eq(t.camera, last.camera)
-            && t.mask.map(<[bool]>::as_ptr) == last.mask.map(<[bool]>::as_ptr)
-            && (t.window.full, t.window.x0, t.window.y0)
-                == (last.window.full, last.window.x0, last.window.y0)
-            && t.interpolation == last.interpolation
-    };
-    assert!(
-        targets.iter().all(shared),
-        "passes rendered together share viewport, camera, mask, window and interpolation"
-    );
+    assert_renderable_together(targets, refinement.as_ref());
     let (framebuffer, finished_strips) = match output {
         FrameOutput::Framebuffer(framebuffer) => (Some(framebuffer), None),
         FrameOutput::FramebufferAndStrips(framebuffer, strips) => (Some(framebuffer), Some(strips)),
@@ -293,15 +276,7 @@ pub fn render(
             (strips, known)
         }
     };
-    let mut refined: Vec<&mut [bool]> = match refinement {
-        Some(refinement) => {
-            let pixels = viewport.width as usize * viewport.height as usize;
-            crate::huge_pages::resize_for_overwrite(refinement.refined, pixels);
-            let rows = (STRIP_ROWS * viewport.width).max(1) as usize;
-            refinement.refined.chunks_mut(rows).collect()
-        }
-        None => Vec::new(),
-    };
+    let mut refined = refined_strips(refinement, viewport);
     refined.resize_with(strips.len(), || &mut []);
     let strips: Vec<_> = strips
         .into_iter()
@@ -330,6 +305,43 @@ pub fn render(
         fragments,
         flattened,
     }
+}
+
+/// Checks that `targets` can be rendered as one group: they share the last one's viewport,
+/// camera, mask, window and interpolation, and a refinement decides at one of them.
+fn assert_renderable_together(targets: &[RenderTarget], refinement: Option<&Refinement>) {
+    let last = targets.last().expect("a pass");
+    assert!(
+        refinement.is_none_or(|r| r.rule.first_decided_pass() < targets.len()),
+        "a refinement starts at one of the group's passes"
+    );
+    let shared = |t: &RenderTarget| {
+        t.viewport == last.viewport
+            && std::ptr::eq(t.camera, last.camera)
+            && t.mask.map(<[bool]>::as_ptr) == last.mask.map(<[bool]>::as_ptr)
+            && (t.window.full, t.window.x0, t.window.y0)
+                == (last.window.full, last.window.x0, last.window.y0)
+            && t.interpolation == last.interpolation
+    };
+    assert!(
+        targets.iter().all(shared),
+        "passes rendered together share viewport, camera, mask, window and interpolation"
+    );
+}
+
+/// The refinement's record of refined pixels, sized to the viewport and cut into strips (none
+/// without a refinement).
+fn refined_strips<'r>(
+    refinement: Option<Refinement<'r>>,
+    viewport: Viewport,
+) -> Vec<&'r mut [bool]> {
+    let Some(refinement) = refinement else {
+        return Vec::new();
+    };
+    let pixels = viewport.width as usize * viewport.height as usize;
+    crate::huge_pages::resize_for_overwrite(refinement.refined, pixels);
+    let rows = (STRIP_ROWS * viewport.width).max(1) as usize;
+    refinement.refined.chunks_mut(rows).collect()
 }
 
 /// One pass of `target` into `framebuffer` (resized to it), depth kept: `render` for the

@@ -552,14 +552,23 @@ impl SurfaceFile {
                     scale: scale.0,
                     uv_scale: uv_scale.0,
                 };
-                let data = crate::model::load_named_model(file, base, placement)
-                    .map_err(|e| e.to_string())?;
-                Surface::Model(ModelSurface {
-                    file: file.as_str().into(),
-                    origin: position.0,
-                    data: std::sync::Arc::new(data),
-                })
+                model_surface(file, base, position.0, placement)?
             }
         })
     }
+}
+
+/// The model `file` names (relative to `base`), placed with its origin at `position`.
+fn model_surface(
+    file: &str,
+    base: &Path,
+    position: DVec3,
+    placement: crate::model::Placement,
+) -> Result<Surface, String> {
+    let data = crate::model::load_named_model(file, base, placement).map_err(|e| e.to_string())?;
+    Ok(Surface::Model(ModelSurface {
+        file: file.into(),
+        origin: position,
+        data: std::sync::Arc::new(data),
+    }))
 }

@@ -201,32 +201,8 @@ impl LitShader {
         } = batch;
         let surface = &object.prepared.surface;
         let material = &object.prepared.material;
-        scratch.frames.clear();
-        let uv = |k: usize| fragments[group[k] as usize].uv;
-        surface.frames(group.len(), uv, &mut scratch.frames);
-        if let Surface::Model(model) = surface {
-            to_texture_space(model, fragments, group, &mut scratch.frames);
-        }
-        // Fragments moved to their true hits take their derivatives from these frames, the
-        // true surface's (before any interpolated normals replace them).
-        if self.surface_point == SurfacePointSource::Exact && self.reads_derivatives(object) {
-            let (frames, exact) = (&scratch.frames, &mut scratch.exact);
-            let moved = &exact.moved;
-            let derivatives = &mut exact.derivatives;
-            true_hit_derivatives(surface, rays, fragments, group, frames, moved, derivatives);
-        }
+        self.surface_frames(batch, rays, fragments, scratch);
         let fragments = &*fragments;
-        // A model's frames are interpolated from its vertices already (and its fragments'
-        // (u,v) are the texture's by now, which name no triangle).
-        let from_vertices = self.vertex_normals.as_ref();
-        if let Some(normals) = from_vertices.filter(|_| !matches!(surface, Surface::Model(_))) {
-            interpolate_frames(
-                &normals[object_index],
-                fragments,
-                group,
-                &mut scratch.frames,
-            );
-        }
         let mut flattened = base_colors(self.time, object, fragments, group, scratch);
         flattened += self
             .bump_stage()
@@ -289,6 +265,41 @@ impl LitShader {
             }
         }
         flattened
+    }
+
+    /// The group's surface frames, into `scratch.frames`: exact, or with the tessellation's
+    /// interpolated position and normal; a model's in its texture's (u,v), its fragments moved
+    /// there too.
+    fn surface_frames(
+        &self,
+        batch: ObjectBatch,
+        rays: &SampleRays,
+        fragments: &mut [Fragment],
+        scratch: &mut ShadeScratch,
+    ) {
+        let (object, group) = (batch.object, batch.group);
+        let surface = &object.prepared.surface;
+        scratch.frames.clear();
+        let uv = |k: usize| fragments[group[k] as usize].uv;
+        surface.frames(group.len(), uv, &mut scratch.frames);
+        if let Surface::Model(model) = surface {
+            to_texture_space(model, fragments, group, &mut scratch.frames);
+        }
+        // Fragments moved to their true hits take their derivatives from these frames, the
+        // true surface's (before any interpolated normals replace them).
+        if self.surface_point == SurfacePointSource::Exact && self.reads_derivatives(object) {
+            let (frames, exact) = (&scratch.frames, &mut scratch.exact);
+            let moved = &exact.moved;
+            let derivatives = &mut exact.derivatives;
+            true_hit_derivatives(surface, rays, fragments, group, frames, moved, derivatives);
+        }
+        // A model's frames are interpolated from its vertices already (and its fragments'
+        // (u,v) are the texture's by now, which name no triangle).
+        let from_vertices = self.vertex_normals.as_ref();
+        if let Some(normals) = from_vertices.filter(|_| !matches!(surface, Surface::Model(_))) {
+            let normals = &normals[batch.index];
+            interpolate_frames(normals, fragments, group, &mut scratch.frames);
+        }
     }
 
     fn bump_stage(&self) -> BumpStage {
