@@ -20,8 +20,19 @@ use num_traits::Float;
 use std::fmt::Debug;
 
 /// Which float a pattern's lanes use: a quality knob (`Quality::pattern_precision`).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[derive(
+    Clone,
+    Copy,
+    Debug,
+    Default,
+    PartialEq,
+    Eq,
+    serde::Serialize,
+    serde::Deserialize,
+    strum::IntoStaticStr,
+)]
 #[serde(rename_all = "kebab-case")]
+#[strum(serialize_all = "kebab-case")]
 pub enum Precision {
     /// `f32` for programs that do not read `t` (twice the lanes), `f64` for the rest.
     #[default]
@@ -32,10 +43,7 @@ pub enum Precision {
 
 impl Precision {
     pub fn name(self) -> &'static str {
-        match self {
-            Precision::Fastest => "fastest",
-            Precision::Double => "double",
-        }
+        self.into()
     }
 }
 

@@ -1,7 +1,8 @@
 //! What the shader outputs: the lit picture, or the height, normals, (u,v) or depth behind it.
 
 /// What the shading stage shows: the lit picture, or one of the quantities behind it.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, strum::VariantArray)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, strum::VariantArray, strum::IntoStaticStr)]
+#[strum(serialize_all = "lowercase")]
 pub enum ShaderMode {
     #[default]
     Shaded,
@@ -19,13 +20,7 @@ impl ShaderMode {
     pub const ALL: &'static [ShaderMode] = <ShaderMode as strum::VariantArray>::VARIANTS;
 
     pub fn name(self) -> &'static str {
-        match self {
-            ShaderMode::Shaded => "shaded",
-            ShaderMode::Height => "height",
-            ShaderMode::Normals => "normals",
-            ShaderMode::Uv => "uv",
-            ShaderMode::Depth => "depth",
-        }
+        self.into()
     }
 
     pub fn next(self) -> ShaderMode {

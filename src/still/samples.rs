@@ -6,7 +6,18 @@ use crate::raster::SUBPIXEL_BITS;
 use glam::Vec2;
 
 /// How samples are combined into a pixel, in linear light.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, strum::VariantArray)]
+#[derive(
+    Clone,
+    Copy,
+    Debug,
+    Default,
+    PartialEq,
+    Eq,
+    strum::VariantArray,
+    strum::IntoStaticStr,
+    strum::EnumString,
+)]
+#[strum(serialize_all = "lowercase")]
 pub enum ResolveFilter {
     /// Equal weights over the pixel's own square.
     Box,
@@ -19,18 +30,11 @@ impl ResolveFilter {
     pub const NAMES: [&'static str; 2] = ["box", "tent"];
 
     pub fn name(self) -> &'static str {
-        match self {
-            ResolveFilter::Box => "box",
-            ResolveFilter::Tent => "tent",
-        }
+        self.into()
     }
 
     pub fn parse(name: &str) -> Option<ResolveFilter> {
-        match name {
-            "box" => Some(ResolveFilter::Box),
-            "tent" => Some(ResolveFilter::Tent),
-            _ => None,
-        }
+        name.parse().ok()
     }
 }
 

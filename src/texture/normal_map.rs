@@ -18,8 +18,10 @@ use glam::{Vec2, Vec3};
     serde::Serialize,
     serde::Deserialize,
     clap::ValueEnum,
+    strum::IntoStaticStr,
 )]
 #[serde(rename_all = "kebab-case")]
+#[strum(serialize_all = "lowercase")]
 pub enum NormalConvention {
     /// Green up the image (+Y): Blender, Godot, glTF.
     #[default]
@@ -38,10 +40,7 @@ impl NormalConvention {
     }
 
     pub fn name(self) -> &'static str {
-        match self {
-            NormalConvention::Opengl => "opengl",
-            NormalConvention::Directx => "directx",
-        }
+        self.into()
     }
 }
 

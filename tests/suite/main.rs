@@ -80,6 +80,7 @@ mod tui_pty;
 mod tui_refinement;
 mod tui_screen;
 mod tui_workbench;
+mod variant_names;
 mod watch_churn;
 mod watch_reload;
 mod watch_soak;

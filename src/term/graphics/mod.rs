@@ -12,7 +12,8 @@ pub use detect::{GraphicsFound, Replies, decide, query_terminal};
 pub use sixel_palette::MAX_COLOURS as SIXEL_MAX_COLOURS;
 
 /// A way of sending pixels.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, strum::VariantArray)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, strum::VariantArray, strum::IntoStaticStr)]
+#[strum(serialize_all = "lowercase")]
 pub enum Protocol {
     Kitty,
     Iterm2,
@@ -24,11 +25,7 @@ impl Protocol {
     pub const ALL: &'static [Protocol] = <Protocol as strum::VariantArray>::VARIANTS;
 
     pub fn name(self) -> &'static str {
-        match self {
-            Protocol::Kitty => "kitty",
-            Protocol::Sixel => "sixel",
-            Protocol::Iterm2 => "iterm2",
-        }
+        self.into()
     }
 
     /// Whether the terminal scales the picture to the cells it is placed over (so a smaller
