@@ -11,7 +11,7 @@ use bumpwork::term::cielab::{chroma_and_hue, delta_e};
 use bumpwork::term::{
     ColorChoice, ColorMode, EncodeOptions, FrameOptions, GlyphSet, Picture, encode, encode_frame,
 };
-use bumpwork::tui::{App, Screen, View, WorkbenchOptions, render_frame};
+use bumpwork::tui::{App, Screen, WorkbenchOptions, render_frame};
 use crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use glam::Vec3;
 use std::process::Command;
@@ -114,12 +114,7 @@ fn compare_with_chafa(app: &App) {
     let (cols, rows) = (COLS as usize, ROWS as usize - 1);
     let (width, height) = GlyphSet::HalfBlock.picture_size(cols, rows);
     let mut framebuffer = Framebuffer::new(0, 0, Vec3::ZERO);
-    render_frame(
-        &View::of(app),
-        width as u32,
-        height as u32,
-        &mut framebuffer,
-    );
+    render_frame(&app.view(), width as u32, height as u32, &mut framebuffer);
     let pixels = framebuffer.to_srgb8();
     let picture = Picture::new(&pixels, width, height).unwrap();
     let grid = encode(
@@ -263,7 +258,7 @@ fn psnr(a: &[[u8; 3]], b: &[[u8; 3]]) -> f64 {
 fn reference_picture(app: &App, width: usize, height: usize) -> Vec<[u8; 3]> {
     let mut framebuffer = Framebuffer::new(0, 0, Vec3::ZERO);
     let (w, h) = (width * REFERENCE_GRID, height * REFERENCE_GRID);
-    render_frame(&View::of(app), w as u32, h as u32, &mut framebuffer);
+    render_frame(&app.view(), w as u32, h as u32, &mut framebuffer);
     let colour = framebuffer.color();
     let per = (REFERENCE_GRID * REFERENCE_GRID) as f32;
     (0..width * height)

@@ -21,6 +21,7 @@ use super::orbit::Orbit;
 use super::overlay::{Overlay, OverlayKind, Reply};
 use super::param_panel::ParamPanel;
 use super::quality::QualityPreset;
+use super::render::View;
 use super::scene_picker::ScenePicker;
 use super::scene_setup::{check_settings, dress, first_bumped_object, prepare, shelf_for};
 use super::status_message::{INFO_LIFETIME, Message};
@@ -588,18 +589,28 @@ impl App {
         }
     }
 
+    /// Everything that decides the picture now, apart from its size.
+    pub fn view(&self) -> View<'_> {
+        View {
+            prepared: &self.prepared,
+            camera: self.camera(),
+            mode: self.view_mode,
+            time: self.clock.time(),
+            quality: self.quality_in_use,
+            shadows: &self.shadow_cache,
+            marked: self.marked_object(),
+        }
+    }
+
     fn export(&mut self) {
         if let Some(job) = &self.export_job {
             let path = job.path.display().to_string();
             self.tell(Message::Info(format!("still exporting {path}")));
             return;
         }
-        let job = ExportJob::start(
-            self,
-            self.export_size,
-            self.export_samples,
-            &self.export_dir,
-        );
+        let source = &self.scenes[self.scene_index];
+        let shape = (self.export_size, self.export_samples);
+        let job = ExportJob::start(source, &self.view(), shape, &self.export_dir);
         let (w, h) = self.export_size;
         let path = job.path.display();
         self.tell(Message::Info(format!(

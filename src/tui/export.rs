@@ -2,7 +2,6 @@
 //! still under a new name, rendered on a background thread through the same band pipeline as
 //! `bumpwork render`, with its recipe, so `render --from` makes it again at any size.
 
-use super::app::App;
 use super::render::{View, empty_framebuffer, render_frame};
 use super::view_mode::ViewMode;
 use crate::Error;
@@ -42,13 +41,19 @@ pub struct ExportJob {
 }
 
 impl ExportJob {
-    /// Starts exporting the app's current view at `size` with `samples` into a new file in `dir`.
-    pub fn start(app: &App, size: (u32, u32), samples: u32, dir: &Path) -> ExportJob {
-        let view = View::of(app);
-        let stem = format!("bumpwork-{}-{}", slug(&app.scene().name), view.mode.name());
+    /// Starts exporting `view` of the scene from `source` at `size` with `samples` into a new
+    /// file in `dir`.
+    pub fn start(
+        source: &str,
+        view: &View,
+        (size, samples): ((u32, u32), u32),
+        dir: &Path,
+    ) -> ExportJob {
+        let scene = &view.prepared.scene;
+        let stem = format!("bumpwork-{}-{}", slug(&scene.name), view.mode.name());
         let order = ExportOrder {
-            source: app.scenes[app.scene_index].clone(),
-            scene: app.scene().clone(),
+            source: source.to_string(),
+            scene: scene.clone(),
             camera: view.camera.clone(),
             mode: view.mode,
             settings: StillSettings {

@@ -1,6 +1,5 @@
 //! The current view rendered: into a framebuffer at any size (for export), or into terminal cells.
 
-use super::app::App;
 use super::resample::{resample_linear, to_srgb8};
 use super::view_mode::{RenderedFrame, ViewMode, render_view_mode};
 use super::wireframe::draw_wireframe;
@@ -24,20 +23,6 @@ pub struct View<'a> {
     pub shadows: &'a ShadowCache,
     /// The object whose edges are drawn over the picture, for a moment after `o` chose it.
     pub marked: Option<usize>,
-}
-
-impl<'a> View<'a> {
-    pub fn of(app: &'a App) -> View<'a> {
-        View {
-            prepared: &app.prepared,
-            camera: app.camera(),
-            mode: app.view_mode,
-            time: app.clock.time(),
-            quality: app.quality_in_use,
-            shadows: &app.shadow_cache,
-            marked: app.marked_object(),
-        }
-    }
 }
 
 /// Renders `view` at `width` × `height` square pixels into `framebuffer`.

@@ -6,8 +6,7 @@ use super::app::App;
 use super::pixel_picture::{PixelPicture, PixelRoute};
 use super::refinement::Accumulation;
 use super::render::{
-    CellShape, DEFAULT_CELL_ASPECT, Sampling, View, empty_framebuffer, encode_cells,
-    render_picture_pass,
+    CellShape, DEFAULT_CELL_ASPECT, Sampling, empty_framebuffer, encode_cells, render_picture_pass,
 };
 use super::status::{StatusLine, error_style, status_line};
 use super::view_mode::ViewMode;
@@ -321,7 +320,7 @@ impl Screen {
         self.picture = CellGrid::new(cells.0 as usize, cells.1 as usize);
         let supersampling = super::quality::terminal_supersampling(&app.quality_in_use);
         let pixels = self.pixels.as_mut().expect("in pixel mode");
-        let view = View::of(app);
+        let view = app.view();
         let refined = refines(app.view_mode);
         let pass = pixels.first(&view, cells, supersampling, refined, &mut self.framebuffer);
         app.report.stats = pass.rendered.stats;
@@ -334,7 +333,7 @@ impl Screen {
         let cells = self.picture_cells();
         let supersampling = super::quality::terminal_supersampling(&app.quality_in_use);
         let pixels = self.pixels.as_mut().expect("in pixel mode");
-        let ready = pixels.refine(&View::of(app), cells, supersampling, &mut self.framebuffer);
+        let ready = pixels.refine(&app.view(), cells, supersampling, &mut self.framebuffer);
         app.report.passes = pixels.passes();
         app.report.refining = pixels.refining();
         match ready {
@@ -408,7 +407,7 @@ impl Screen {
             aspect: self.cell_aspect,
         };
         render_picture_pass(
-            &View::of(app),
+            &app.view(),
             cells,
             shape,
             super::quality::terminal_supersampling(&app.quality_in_use),

@@ -663,7 +663,7 @@ fn a_scene_file_a_setting_and_a_recipe_each_turn_shadows_off() {
 #[test]
 fn the_workbenchs_shadows_follow_the_light_keys_and_s_turns_them_off() {
     use bumpwork::term::{ColorChoice, ColorMode};
-    use bumpwork::tui::{Action, App, View, WorkbenchOptions, render_frame};
+    use bumpwork::tui::{Action, App, WorkbenchOptions, render_frame};
     let options = WorkbenchOptions {
         scenes: vec!["sphere-on-plane-squares".into()],
         colors: ColorChoice::Fixed(ColorMode::TrueColor),
@@ -672,7 +672,7 @@ fn the_workbenchs_shadows_follow_the_light_keys_and_s_turns_them_off() {
     let mut app = App::new(&options, ColorMode::TrueColor).unwrap();
     let frame = |app: &App| {
         let mut framebuffer = Framebuffer::new(0, 0, Vec3::ZERO);
-        render_frame(&View::of(app), 120, 90, &mut framebuffer);
+        render_frame(&app.view(), 120, 90, &mut framebuffer);
         framebuffer.color().to_vec()
     };
     let first = frame(&app);

@@ -3,7 +3,7 @@
 
 use bumpwork::raster::Framebuffer;
 use bumpwork::term::{ColorChoice, ColorMode};
-use bumpwork::tui::{Action, App, Screen, View, ViewMode, WorkbenchOptions, render_frame};
+use bumpwork::tui::{Action, App, Screen, ViewMode, WorkbenchOptions, render_frame};
 use glam::Vec3;
 
 fn app(scene: &str) -> App {
@@ -77,7 +77,7 @@ fn the_heat_map_is_dark_where_the_frame_matches_the_reference() {
         app.apply(Action::NextViewMode);
     }
     let mut framebuffer = Framebuffer::new(0, 0, Vec3::ZERO);
-    let rendered = render_frame(&View::of(&app), 48, 36, &mut framebuffer);
+    let rendered = render_frame(&app.view(), 48, 36, &mut framebuffer);
     // A facing plane is exact for the rasterizer: (u,v) is perspective-correct on it, so the
     // frame equals the reference to within rounding and nearly every pixel is black.
     let dark = framebuffer

@@ -4,7 +4,7 @@
 
 use bumpwork::term::{ColorChoice, ColorMode, GlyphSet};
 use bumpwork::tui::{
-    Accumulation, Action, App, CellShape, DEFAULT_CELL_ASPECT, MAX_PASSES, Sampling, Screen, View,
+    Accumulation, Action, App, CellShape, DEFAULT_CELL_ASPECT, MAX_PASSES, Sampling, Screen,
     WorkbenchOptions, render_frame, render_picture_pass,
 };
 use glam::Vec3;
@@ -29,7 +29,7 @@ fn area_averaged(app: &App, size: (usize, usize)) -> Vec<Vec3> {
     const GRID: usize = 8;
     let mut framebuffer = bumpwork::raster::Framebuffer::new(0, 0, Vec3::ZERO);
     let (w, h) = (size.0 * GRID, size.1 * GRID);
-    render_frame(&View::of(app), w as u32, h as u32, &mut framebuffer);
+    render_frame(&app.view(), w as u32, h as u32, &mut framebuffer);
     let colour = framebuffer.color();
     (0..size.0 * size.1)
         .map(|i| {
@@ -58,7 +58,7 @@ fn the_error_falls_as_passes_accrue_and_the_settled_picture_is_within_the_bound(
     for scene in ["sphere-on-plane-dimples", "textured-sphere"] {
         let app = app(scene);
         let mut framebuffer = bumpwork::raster::Framebuffer::new(0, 0, Vec3::ZERO);
-        let view = View::of(&app);
+        let view = app.view();
         let pass = |sampling: Sampling, framebuffer: &mut _| {
             render_picture_pass(&view, CELLS, HALF_BLOCKS, 1, sampling, framebuffer)
         };
