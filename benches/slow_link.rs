@@ -9,6 +9,8 @@
 
 #[path = "../tests/suite/shaped_link.rs"]
 mod shaped_link;
+#[path = "../tests/suite/tmux_support.rs"]
+mod tmux_support;
 
 use shaped_link::{Figures, ShapedLink, TOOLS, measure};
 use std::path::PathBuf;

@@ -6,6 +6,7 @@
 //! Needs root (for `ip netns`), `ip`, `tc`, `sshd`, `ssh`, `ssh-keygen` and `tmux`.
 #![allow(dead_code)]
 
+use crate::tmux_support::Tmux;
 use std::path::Path;
 use std::process::{Child, Command, Output, Stdio};
 use std::sync::atomic::{AtomicU32, Ordering};
@@ -200,7 +201,7 @@ fn fewer_samples_than_settled(status: &str) -> bool {
 
 /// The workbench run over `link` in a tmux pane of its own.
 pub struct RemoteView {
-    socket: String,
+    tmux: Tmux,
 }
 
 impl RemoteView {
@@ -211,45 +212,20 @@ impl RemoteView {
         scene: &str,
         (cols, rows): (u16, u16),
     ) -> RemoteView {
-        let view = RemoteView {
-            socket: format!("bumpwork-link-{}", link.namespace),
-        };
         let command = format!(
             "{} 'exec {} view {scene} --colors truecolor --no-watch'",
             link.ssh_command(true),
             binary.display()
         );
-        let output = view.tmux(&[
-            "new-session",
-            "-d",
-            "-x",
-            &cols.to_string(),
-            "-y",
-            &rows.to_string(),
-            "-e",
-            "TERM=xterm-256color",
-            &command,
-        ]);
-        assert!(output.status.success(), "tmux: {output:?}");
-        view.tmux(&["set-option", "-g", "remain-on-exit", "on"]);
-        view
-    }
-
-    fn tmux(&self, args: &[&str]) -> Output {
-        Command::new("tmux")
-            .args(["-L", &self.socket, "-f", "/dev/null"])
-            .args(args)
-            .output()
-            .expect("tmux runs")
-    }
-
-    fn screen(&self) -> String {
-        String::from_utf8_lossy(&self.tmux(&["capture-pane", "-p"]).stdout).into_owned()
+        let name = format!("link-{}", link.namespace);
+        RemoteView {
+            tmux: Tmux::start(&name, cols, rows, &command),
+        }
     }
 
     /// The screen with its colours, a line a row.
     fn coloured_screen(&self) -> Vec<String> {
-        let capture = self.tmux(&["capture-pane", "-e", "-p"]).stdout;
+        let capture = self.tmux.run(&["capture-pane", "-e", "-p"]).stdout;
         String::from_utf8_lossy(&capture)
             .lines()
             .map(str::to_string)
@@ -257,11 +233,10 @@ impl RemoteView {
     }
 
     fn shown(&self) -> Shown {
-        let dead = self.tmux(&["display-message", "-p", "#{pane_dead}"]);
-        if String::from_utf8_lossy(&dead.stdout).trim() != "0" {
+        if self.tmux.pane("#{pane_dead}") != "0" {
             return Shown::Ended;
         }
-        let text = self.screen();
+        let text = self.tmux.screen();
         let status = text
             .trim_end_matches('\n')
             .lines()
@@ -277,7 +252,7 @@ impl RemoteView {
     }
 
     fn send(&self, key: &str) {
-        self.tmux(&["send-keys", key]);
+        self.tmux.send_keys(&[key]);
     }
 
     /// The time from `start` until the status line is `what`, if within the step limit.
@@ -295,9 +270,9 @@ impl RemoteView {
     /// last change of a screen that then says it is settled and stays as it is for a while
     /// (frames still queued in the link would change it).
     fn settled(&self, start: Instant) -> Option<Duration> {
-        let mut last = (self.screen(), start.elapsed());
+        let mut last = (self.tmux.screen(), start.elapsed());
         while start.elapsed() < STEP_LIMIT {
-            let screen = self.screen();
+            let screen = self.tmux.screen();
             if screen != last.0 {
                 last = (screen, start.elapsed());
             } else if start.elapsed() - last.1 >= QUIET && self.shown() != Shown::Refining {
@@ -349,12 +324,6 @@ fn most_rows_differ(before: &[String], after: &[String]) -> bool {
     let rows = before.len().min(after.len()).saturating_sub(1);
     let differing = (0..rows).filter(|&row| before[row] != after[row]).count();
     differing * 2 > rows
-}
-
-impl Drop for RemoteView {
-    fn drop(&mut self) {
-        self.tmux(&["kill-server"]);
-    }
 }
 
 /// How the workbench answers over a link, each from the key (or the start) that asked.
