@@ -8,7 +8,7 @@ use super::material::{
     Texturing,
 };
 use crate::pattern::{OutputKind, Pattern};
-use crate::surface::Surface;
+use crate::surface::{Parametric, Surface};
 use crate::texture::{
     Cylindrical, Filter, ImageCache, Mapping, NormalConvention, Sampler, Scroll, Spherical,
     SurfaceUv, TriangleMap, Wrap,

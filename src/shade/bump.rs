@@ -264,7 +264,7 @@ fn normal_derivatives(surface: &Surface, uv: Vec2, frame: &Frame) -> (Vec3, Vec3
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::surface::{Plane, Sphere};
+    use crate::surface::{Parametric, Plane, Sphere};
     use glam::DVec3;
 
     fn plane() -> Surface {

@@ -1,6 +1,6 @@
 //! The orthonormal basis around the axis of a surface of revolution.
 
-use glam::Vec3;
+use glam::{DVec3, Vec3};
 
 /// An orthonormal basis around a symmetry axis, for the surfaces of revolution.
 /// `e1` is where the azimuth starts (u = 0 points along −e1 after the seed's quarter-turn offset).
@@ -26,6 +26,16 @@ impl AxisBasis {
     #[inline]
     pub fn to_world(&self, a: f32, b: f32, c: f32) -> Vec3 {
         self.e1 * a + self.axis * b + self.e2 * c
+    }
+
+    /// A point or direction's coordinates along (e1, axis, e2), in f64.
+    #[inline(always)]
+    pub fn local(&self, p: DVec3) -> DVec3 {
+        DVec3::new(
+            p.dot(self.e1.as_dvec3()),
+            p.dot(self.axis.as_dvec3()),
+            p.dot(self.e2.as_dvec3()),
+        )
     }
 }
 

@@ -1,8 +1,15 @@
-//! The cone: P(u,v), its partial derivatives and normal.
+//! The cone: P(u,v), its partial derivatives and normal, its exact ray hits and the inverse of
+//! its parametrisation.
 
-use super::sphere::{SEED_UNITS_PER_RADIAN, azimuth};
+use super::grid_shape::GridShape;
+use super::hull::past_edge;
+use super::parametric::Parametric;
+use super::ray_hits::{Hit, Ray, Rays, TrueHit, nearest_hit, quadratic_roots};
+use super::seed_angles::{SEED_UNITS_PER_RADIAN, azimuth, azimuth_u, azimuth_u_f32};
+use super::true_hit::{Quadric, quadric_hits};
 use super::{AxisBasis, Domain, Frame};
-use glam::{DVec3, Vec2};
+use glam::{DVec3, Vec2, Vec3};
+use std::ops::RangeInclusive;
 
 /// A right circular cone without its base. Domain: u ∈ [0, 720) azimuth in the sphere's seed
 /// units, v ∈ [0, height] distance from the apex along the axis (which points from the apex to the
@@ -16,8 +23,16 @@ pub struct Cone {
     pub height: f32,
 }
 
-impl Cone {
-    pub fn domain(&self) -> Domain {
+impl Parametric for Cone {
+    fn kind(&self) -> &'static str {
+        "cone"
+    }
+
+    fn origin(&self) -> DVec3 {
+        self.apex
+    }
+
+    fn domain(&self) -> Domain {
         Domain {
             min: Vec2::ZERO,
             max: Vec2::new(720.0, self.height),
@@ -25,7 +40,7 @@ impl Cone {
     }
 
     #[inline]
-    pub fn frame(&self, u: f32, v: f32) -> Frame {
+    fn frame(&self, u: f32, v: f32) -> Frame {
         let b = &self.basis;
         let (sin_phi, cos_phi) = super::sin_cos(azimuth(u));
         let radial = b.to_world(sin_phi, 0.0, cos_phi);
@@ -38,6 +53,101 @@ impl Cone {
             pv: b.axis + radial * spread,
             n: radial * cos_a - b.axis * sin_a,
         }
+    }
+
+    /// A cone's curvature grows without bound towards its apex; its value half way along the
+    /// side is given.
+    fn max_curvature(&self) -> f32 {
+        let radius_half_way = 0.5 * self.height * self.half_angle.tan();
+        self.half_angle.cos() / radius_half_way.max(f32::MIN_POSITIVE)
+    }
+
+    /// A cone is ruled, so a single cell along v would be exact in position; but the apex fan's
+    /// vertex sits at mid-cell u, and u interpolated from it is off by up to half a cell across
+    /// the whole fan row. Rows along v confine that to the first one.
+    fn grid_shape(&self, density: u32) -> GridShape {
+        GridShape {
+            cells_u: 2 * density,
+            cells_v: (density / 2).max(2),
+            collapsed_v_min: true,
+            collapsed_v_max: false,
+        }
+    }
+
+    /// At the apex every vertex moves back along the axis: the offset cone's apex.
+    fn hull_outwards(&self, uv: Vec2, frame: &Frame) -> Vec3 {
+        if uv.y == 0.0 {
+            -self.basis.axis / self.half_angle.sin()
+        } else {
+            frame.n + past_edge(frame.pv, false, uv.y == self.height)
+        }
+    }
+
+    /// ρ² = tan²α·h² along the ray is a quadratic in t; it describes both nappes, so roots with
+    /// h outside [0, height] are dropped.
+    fn intersect(&self, ray: &Ray, range: &RangeInclusive<f64>) -> Option<Hit> {
+        let spread2 = (self.half_angle as f64).tan().powi(2);
+        let o = self.basis.local(ray.origin);
+        let d = self.basis.local(ray.direction);
+        let a = d.x * d.x + d.z * d.z - spread2 * d.y * d.y;
+        let b = 2.0 * (o.x * d.x + o.z * d.z - spread2 * o.y * d.y);
+        let c = o.x * o.x + o.z * o.z - spread2 * o.y * o.y;
+        let height = self.height;
+        nearest_hit(quadratic_roots(a, b, c), range, |t| {
+            let uv = self.uv_at(ray.at(t));
+            (uv.y >= 0.0 && uv.y <= height).then_some(uv)
+        })
+    }
+
+    /// u from the azimuth about the axis, v = distance from the apex along the axis.
+    fn uv_at(&self, p: DVec3) -> Vec2 {
+        let q = self.basis.local(p);
+        Vec2::new(azimuth_u(q.x, q.z), q.y as f32)
+    }
+
+    fn true_hits(&self, rays: &Rays, hits: &mut [TrueHit], found: &mut [bool]) {
+        quadric_hits(&ConeQuadric::new(self), rays, hits, found);
+    }
+}
+
+/// ρ² = tan²α·h²; the nappe behind the apex (h < 0) is not the surface.
+struct ConeQuadric<'a> {
+    cone: &'a Cone,
+    spread2: f64,
+}
+
+impl ConeQuadric<'_> {
+    fn new(cone: &Cone) -> ConeQuadric<'_> {
+        let spread2 = (cone.half_angle as f64).tan().powi(2);
+        ConeQuadric { cone, spread2 }
+    }
+}
+
+impl Quadric for ConeQuadric<'_> {
+    #[inline(always)]
+    fn local(&self, v: DVec3) -> DVec3 {
+        self.cone.basis.local(v)
+    }
+
+    #[inline(always)]
+    fn coefficients(&self, q: DVec3, d: DVec3) -> [f64; 3] {
+        let t2 = self.spread2;
+        [
+            d.x * d.x + d.z * d.z - t2 * d.y * d.y,
+            2.0 * (q.x * d.x + q.z * d.z - t2 * q.y * d.y),
+            q.x * q.x + q.z * q.z - t2 * q.y * q.y,
+        ]
+    }
+
+    /// The nappe behind the apex, and the quadric past the base, are not the surface.
+    #[inline(always)]
+    fn contains(&self, p: DVec3) -> bool {
+        p.y >= 0.0 && p.y <= self.cone.height as f64
+    }
+
+    #[inline(always)]
+    fn uv(&self, p: Vec3) -> Vec2 {
+        Vec2::new(azimuth_u_f32(p.x, p.z), p.y)
     }
 }
 

@@ -2,6 +2,7 @@
 //! chords lie outside the surface and every ray that meets the surface meets the mesh first
 //! (exact coverage then drops the fragments whose ray misses the true surface).
 
+use super::parametric::Parametric;
 use super::{Mesh, Surface};
 use glam::Vec3;
 
@@ -18,27 +19,8 @@ pub fn push_out_to_hull(surface: &Surface, mesh: &mut Mesh) {
         return;
     }
     let push = MARGIN * mesh.chord_error;
-    let rim = surface.domain().max.y;
     for (position, uv) in mesh.positions.iter_mut().zip(&mesh.uvs) {
-        let frame = surface.frame(uv.x, uv.y);
-        let outwards = match surface {
-            Surface::Sphere(_) => frame.n,
-            // At the apex every vertex moves back along the axis: the offset cone's apex.
-            Surface::Cone(cone) if uv.y == 0.0 => -cone.basis.axis / cone.half_angle.sin(),
-            Surface::Cone(_) => frame.n + past_edge(frame.pv, false, uv.y == rim),
-            // The normal points into the bowl, its concave side.
-            Surface::Paraboloid(_) => -frame.n + past_edge(frame.pv, false, uv.y == rim),
-            // Crests bulge up, troughs down: out along the curvature's sign; and past the
-            // sheet's edges, whose profile curves as the crests do.
-            Surface::Wave(wave) => {
-                let phase = std::f32::consts::TAU * uv.x / wave.wavelength;
-                let bulge = frame.n * (phase.sin() * wave.amplitude.signum());
-                bulge
-                    + past_edge(frame.pu, uv.x == 0.0, uv.x == wave.size.x)
-                    + past_edge(frame.pv, uv.y == 0.0, uv.y == wave.size.y)
-            }
-            Surface::Plane(_) | Surface::Triangle(_) | Surface::Model(_) => Vec3::ZERO,
-        };
+        let outwards = each_kind!(surface, s => s.hull_outwards(*uv, &s.frame(uv.x, uv.y)));
         *position += outwards * push;
     }
     mesh.chord_error += push;
@@ -46,7 +28,7 @@ pub fn push_out_to_hull(surface: &Surface, mesh: &mut Mesh) {
 
 /// Outwards along the surface past its boundary, for a vertex at the least (`at_min`) or the
 /// greatest (`at_max`) value of the parameter whose tangent is `along`.
-fn past_edge(along: Vec3, at_min: bool, at_max: bool) -> Vec3 {
+pub(super) fn past_edge(along: Vec3, at_min: bool, at_max: bool) -> Vec3 {
     let along = along.normalize_or_zero();
     if at_max {
         along

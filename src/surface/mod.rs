@@ -1,22 +1,43 @@
 //! The seed's parametric surfaces: P(u,v), its partials Pu and Pv, and the unit normal, each
-//! with a documented (u,v) domain, plus their tessellation into indexed grids.
+//! with a documented (u,v) domain, plus their tessellation into indexed grids. What a surface
+//! defines is the `Parametric` trait; each surface implements it in its own file, and `Surface`
+//! is the one enum of them the rest of the program holds.
 //!
 //! Numerics: every surface is stored as an f64 anchor point (its `origin`, so a scene translated by
 //! 1e6 keeps its precision) plus f32 local geometry. Frames are evaluated in f32 relative to the
 //! anchor: local coordinates stay within a few thousand units, where f32 keeps ~1e-4 absolute
 //! precision, far below a pixel or a pattern period.
 
+/// `$body` with `$s` bound to the surface inside whichever kind `$surface` is: the one place
+/// that lists every kind.
+macro_rules! each_kind {
+    ($surface:expr, $s:ident => $body:expr) => {
+        match $surface {
+            Surface::Plane($s) => $body,
+            Surface::Sphere($s) => $body,
+            Surface::Paraboloid($s) => $body,
+            Surface::Cone($s) => $body,
+            Surface::Wave($s) => $body,
+            Surface::Triangle($s) => $body,
+            Surface::Model($s) => $body,
+        }
+    };
+}
+
 mod angles;
 mod basis;
 mod cone;
 mod frames;
+mod grid_shape;
 mod hull;
 mod model;
 mod model_bvh;
 mod paraboloid;
+mod parametric;
 mod plane;
 mod ray_differentials;
 mod ray_hits;
+mod seed_angles;
 mod sphere;
 mod tessellate;
 mod triangle;
@@ -27,18 +48,20 @@ pub use angles::{atan2, sin_cos};
 pub use basis::AxisBasis;
 pub use cone::Cone;
 pub use frames::{FrameSlices, Frames, Vectors};
+pub use grid_shape::GridShape;
 pub use hull::push_out_to_hull;
 pub use model::{Corner, ModelData, ModelSurface, TexturePoint};
 pub use model_bvh::ModelHit;
 pub use paraboloid::Paraboloid;
+pub use parametric::Parametric;
 pub use plane::Plane;
 pub use ray_differentials::uv_derivatives;
-pub use ray_hits::{Hit, Ray, intersect, surface_uv};
+pub use ray_hits::{Hit, Ray, Rays, TrueHit, intersect, surface_uv};
+pub use seed_angles::SEED_UNITS_PER_RADIAN;
 pub use sphere::Sphere;
 pub use tessellate::{Mesh, Tessellation};
 pub use triangle::Triangle;
-pub use true_hit::{TrueHit, WAVE_NEWTON_STEPS};
-pub use wave::Wave;
+pub use wave::{WAVE_NEWTON_STEPS, Wave};
 
 use glam::{DVec3, Vec2, Vec3};
 
@@ -68,26 +91,6 @@ pub enum Surface {
     Model(ModelSurface),
 }
 
-impl Surface {
-    /// What a person calls it: its kind, or a model's file name.
-    pub fn kind_name(&self) -> String {
-        let kind = match self {
-            Surface::Plane(_) => "plane",
-            Surface::Sphere(_) => "sphere",
-            Surface::Paraboloid(_) => "paraboloid",
-            Surface::Cone(_) => "cone",
-            Surface::Wave(_) => "wave surface",
-            Surface::Triangle(_) => "triangle",
-            Surface::Model(model) => {
-                let path = std::path::Path::new(&*model.file);
-                let name = path.file_name().map(|n| n.to_string_lossy());
-                return name.map_or_else(|| "model".into(), |n| n.into_owned());
-            }
-        };
-        kind.into()
-    }
-}
-
 /// The rectangle of (u,v) a surface is defined on. The triangle's domain is the triangle inside it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Domain {
@@ -96,92 +99,52 @@ pub struct Domain {
 }
 
 impl Surface {
+    /// What a person calls it: its kind, or a model's file name.
+    pub fn kind_name(&self) -> String {
+        if let Surface::Model(model) = self {
+            let path = std::path::Path::new(&*model.file);
+            let name = path.file_name().map(|n| n.to_string_lossy());
+            return name.map_or_else(|| "model".into(), |n| n.into_owned());
+        }
+        each_kind!(self, s => s.kind()).into()
+    }
+
     /// The world-space anchor that frames are relative to.
     pub fn origin(&self) -> DVec3 {
-        match self {
-            Surface::Plane(s) => s.origin,
-            Surface::Sphere(s) => s.center,
-            Surface::Paraboloid(s) => s.apex,
-            Surface::Cone(s) => s.apex,
-            Surface::Wave(s) => s.origin,
-            Surface::Triangle(s) => s.a,
-            Surface::Model(s) => s.origin,
-        }
+        each_kind!(self, s => s.origin())
     }
 
     /// The exact frame at (u,v).
     #[inline]
     pub fn frame(&self, u: f32, v: f32) -> Frame {
-        match self {
-            Surface::Plane(s) => s.frame(u, v),
-            Surface::Sphere(s) => s.frame(u, v),
-            Surface::Paraboloid(s) => s.frame(u, v),
-            Surface::Cone(s) => s.frame(u, v),
-            Surface::Wave(s) => s.frame(u, v),
-            Surface::Triangle(s) => s.frame(u, v),
-            Surface::Model(s) => s.frame(u, v),
-        }
+        each_kind!(self, s => s.frame(u, v))
     }
 
     /// The exact frames at `uv(0) … uv(count − 1)`, appended to `out`: one dispatch per batch,
     /// so each surface's frame is inlined into its own loop (and the sphere's is vectorised).
-    /// Indexed rather than an iterator: plain index loops inline the same way in every build.
     pub fn frames(&self, count: usize, uv: impl Fn(usize) -> Vec2, out: &mut Frames) {
-        match self {
-            Surface::Plane(s) => flat_frames(count, uv, s.frame(0.0, 0.0), out),
-            Surface::Sphere(s) => s.frames(count, uv, out),
-            Surface::Paraboloid(s) => frames_each(count, uv, |u, v| s.frame(u, v), out),
-            Surface::Cone(s) => frames_each(count, uv, |u, v| s.frame(u, v), out),
-            Surface::Wave(s) => frames_each(count, uv, |u, v| s.frame(u, v), out),
-            Surface::Triangle(s) => flat_frames(count, uv, s.frame(0.0, 0.0), out),
-            Surface::Model(s) => frames_each(count, uv, |u, v| s.frame(u, v), out),
-        }
+        each_kind!(self, s => s.frames(count, uv, out))
     }
 
     /// Whether Pu, Pv and n are the same at every (u,v) (only the point varies).
     pub fn is_flat(&self) -> bool {
-        matches!(self, Surface::Plane(_) | Surface::Triangle(_))
+        each_kind!(self, s => s.is_flat())
     }
 
     /// Whether the rasterizer's triangles are the surface itself, so its fragments lie on it
     /// already: the flat surfaces and models.
     pub fn is_its_own_mesh(&self) -> bool {
-        matches!(
-            self,
-            Surface::Plane(_) | Surface::Triangle(_) | Surface::Model(_)
-        )
+        each_kind!(self, s => s.is_its_own_mesh())
     }
 
     pub fn domain(&self) -> Domain {
-        match self {
-            Surface::Plane(s) => s.domain(),
-            Surface::Sphere(_) => Sphere::DOMAIN,
-            Surface::Paraboloid(s) => s.domain(),
-            Surface::Cone(s) => s.domain(),
-            Surface::Wave(s) => s.domain(),
-            Surface::Triangle(s) => s.domain(),
-            Surface::Model(s) => s.domain(),
-        }
+        each_kind!(self, s => s.domain())
     }
 
     /// The largest normal curvature anywhere on the surface, 1/length (how far it can bend from
-    /// a tangent plane: by about κ·d²/2 at distance d). A cone's grows without bound towards
-    /// its apex; its value half way along the side is given.
+    /// a tangent plane: by about κ·d²/2 at distance d).
     pub fn max_curvature(&self) -> f32 {
-        match self {
-            // A model's triangles are the surface: nothing to tessellate.
-            Surface::Plane(_) | Surface::Triangle(_) | Surface::Model(_) => 0.0,
-            Surface::Sphere(s) => 1.0 / s.radius,
-            Surface::Paraboloid(s) => 2.0 * s.curvature,
-            Surface::Cone(s) => {
-                let radius_half_way = 0.5 * s.height * s.half_angle.tan();
-                s.half_angle.cos() / radius_half_way.max(f32::MIN_POSITIVE)
-            }
-            Surface::Wave(s) => {
-                let k = std::f32::consts::TAU / s.wavelength;
-                s.amplitude.abs() * k * k
-            }
-        }
+        each_kind!(self, s => s.max_curvature())
     }
 
     /// Whether the surface encloses a volume the camera can be outside of (so back faces may be culled).
@@ -191,65 +154,16 @@ impl Surface {
 
     /// `encloses`, for an eye given relative to the surface's anchor.
     pub fn encloses_eye_at(&self, eye_from_anchor: DVec3) -> Option<bool> {
-        match self {
-            Surface::Sphere(s) => Some(eye_from_anchor.length() > s.radius as f64),
-            Surface::Model(s) => s.encloses_eye_at(eye_from_anchor),
-            _ => None,
-        }
+        each_kind!(self, s => s.encloses_eye_at(eye_from_anchor))
     }
 
     pub fn tessellate(&self, tessellation: Tessellation) -> Mesh {
-        match self {
-            Surface::Triangle(s) => s.mesh(),
-            Surface::Model(s) => s.mesh(),
-            _ => tessellate::grid(self, tessellation),
-        }
+        each_kind!(self, s => s.own_mesh().unwrap_or_else(|| tessellate::grid(s, tessellation)))
     }
 
     /// The triangles `tessellate` makes, counted without making them.
     pub fn triangle_count(&self, tessellation: Tessellation) -> u64 {
-        match self {
-            Surface::Triangle(_) => return 1,
-            Surface::Model(s) => return s.triangle_count() as u64,
-            _ => {}
-        }
-        let shape = self.grid_shape(tessellation);
-        let fans = u64::from(shape.collapsed_v_min) + u64::from(shape.collapsed_v_max);
-        let cells_u = u64::from(shape.cells_u);
-        2 * cells_u * u64::from(shape.cells_v) - fans * cells_u
-    }
-
-    /// Grid resolution (cells along u, cells along v) and which v edges collapse to a point.
-    fn grid_shape(&self, tessellation: Tessellation) -> tessellate::GridShape {
-        let d = tessellation.density.max(1);
-        match self {
-            Surface::Plane(_) | Surface::Triangle(_) | Surface::Model(_) => {
-                tessellate::GridShape::flat(1, 1)
-            }
-            // Both poles are fans: a single row would have to be a fan at both ends at once.
-            Surface::Sphere(_) => tessellate::GridShape {
-                cells_u: 2 * d,
-                cells_v: d.max(2),
-                collapsed_v_min: true,
-                collapsed_v_max: true,
-            },
-            Surface::Paraboloid(_) => tessellate::GridShape {
-                cells_u: 2 * d,
-                cells_v: (d / 2).max(2),
-                collapsed_v_min: true,
-                collapsed_v_max: false,
-            },
-            // A cone is ruled, so a single cell along v would be exact in position; but the
-            // apex fan's vertex sits at mid-cell u, and u interpolated from it is off by up to
-            // half a cell across the whole fan row. Rows along v confine that to the first one.
-            Surface::Cone(_) => tessellate::GridShape {
-                cells_u: 2 * d,
-                cells_v: (d / 2).max(2),
-                collapsed_v_min: true,
-                collapsed_v_max: false,
-            },
-            Surface::Wave(w) => tessellate::GridShape::flat(w.cells_along_u(d), 1),
-        }
+        each_kind!(self, s => s.triangle_count(tessellation))
     }
 }
 
@@ -264,20 +178,7 @@ pub fn normalize_or(v: Vec3, fallback: Vec3) -> Vec3 {
     }
 }
 
-/// `frame` at `uv(0) … uv(count − 1)`, appended to `out`.
-fn frames_each(
-    count: usize,
-    uv: impl Fn(usize) -> Vec2,
-    frame: impl Fn(f32, f32) -> Frame,
-    out: &mut Frames,
-) {
-    out.extend((0..count).map(|k| {
-        let uv = uv(k);
-        frame(uv.x, uv.y)
-    }));
-}
-
-/// `frames_each` for a flat surface (`is_flat`), whose point is P = u·Pu + v·Pv and whose
+/// `Parametric::frames` for a flat surface (`is_flat`), whose point is P = u·Pu + v·Pv and whose
 /// tangents and normal are those of `at_origin` everywhere: the frames are filled with
 /// `at_origin`, then only their points are written.
 fn flat_frames(count: usize, uv: impl Fn(usize) -> Vec2, at_origin: Frame, out: &mut Frames) {

@@ -11,8 +11,12 @@
 //! surface's local geometry is; chart coordinates are f32 and stay under √(triangles) + 1, so a
 //! million triangles keep barycentrics to 1e-4.
 
-use super::{Domain, Frame, Mesh, normalize_or};
+use super::grid_shape::GridShape;
+use super::parametric::Parametric;
+use super::ray_hits::{Hit, Ray};
+use super::{Domain, Frame, Mesh, Tessellation, normalize_or};
 use glam::{DVec3, Vec2, Vec3, Vec4};
+use std::ops::RangeInclusive;
 use std::sync::Arc;
 
 /// One corner of a triangle: its point (relative to the anchor), unit normal, MikkTSpace tangent
@@ -58,7 +62,7 @@ impl std::fmt::Debug for ModelSurface {
             f,
             "ModelSurface {{ origin: {:?}, triangles: {} }}",
             self.origin,
-            self.triangle_count()
+            self.triangles()
         )
     }
 }
@@ -147,28 +151,17 @@ fn closes_a_volume(corners: &[Corner]) -> bool {
     paired && volume > 0.0
 }
 
-impl ModelSurface {
-    /// For a closed model: whether the eye (relative to the anchor) is outside it, by the
-    /// parity of a ray's crossings; `None` for an open one, whose back faces may show.
-    pub fn encloses_eye_at(&self, eye: DVec3) -> Option<bool> {
-        let data = &*self.data;
-        if !data.closed {
-            return None;
-        }
-        // A direction no face of an axis-aligned model lies along.
-        let direction = DVec3::new(0.5773, 0.5774, 0.5775);
-        Some(
-            data.bvh
-                .crossings(&data.corners, eye, direction)
-                .is_multiple_of(2),
-        )
+impl Parametric for ModelSurface {
+    /// A model's kind is its file's name (see `Surface::kind_name`).
+    fn kind(&self) -> &'static str {
+        "model"
     }
 
-    pub fn triangle_count(&self) -> usize {
-        self.data.corners.len() / 3
+    fn origin(&self) -> DVec3 {
+        self.origin
     }
 
-    pub fn domain(&self) -> Domain {
+    fn domain(&self) -> Domain {
         self.data.domain
     }
 
@@ -176,7 +169,7 @@ impl ModelSurface {
     /// and the partials along the chart's u and v (`to_texture_space` turns them into the
     /// texture's).
     #[inline]
-    pub fn frame(&self, u: f32, v: f32) -> Frame {
+    fn frame(&self, u: f32, v: f32) -> Frame {
         let data = &*self.data;
         if data.corners.is_empty() {
             return Frame::default();
@@ -194,21 +187,107 @@ impl ModelSurface {
         }
     }
 
-    /// The rasterizer's mesh: each triangle with its own three vertices at its chart corners.
-    pub fn mesh(&self) -> Mesh {
+    fn is_its_own_mesh(&self) -> bool {
+        true
+    }
+
+    /// A model's triangles are the surface: nothing to tessellate.
+    fn max_curvature(&self) -> f32 {
+        0.0
+    }
+
+    /// For a closed model: whether the eye (relative to the anchor) is outside it, by the
+    /// parity of a ray's crossings; `None` for an open one, whose back faces may show.
+    fn encloses_eye_at(&self, eye: DVec3) -> Option<bool> {
         let data = &*self.data;
-        let triangles = self.triangle_count();
+        if !data.closed {
+            return None;
+        }
+        // A direction no face of an axis-aligned model lies along.
+        let direction = DVec3::new(0.5773, 0.5774, 0.5775);
+        Some(
+            data.bvh
+                .crossings(&data.corners, eye, direction)
+                .is_multiple_of(2),
+        )
+    }
+
+    fn grid_shape(&self, _density: u32) -> GridShape {
+        GridShape::flat(1, 1)
+    }
+
+    /// The rasterizer's mesh: each triangle with its own three vertices at its chart corners.
+    fn own_mesh(&self) -> Option<Mesh> {
+        let data = &*self.data;
+        let triangles = self.triangles();
         let uvs = (0..triangles)
             .flat_map(|t| CHART_CORNERS.map(|corner| data.cell(t) + corner))
             .collect();
-        Mesh {
+        Some(Mesh {
             positions: data.corners.iter().map(|c| c.p).collect(),
             uvs,
             indices: (0..triangles as u32)
                 .map(|t| [3 * t, 3 * t + 1, 3 * t + 2])
                 .collect(),
             chord_error: 0.0,
-        }
+        })
+    }
+
+    fn triangle_count(&self, _tessellation: Tessellation) -> u64 {
+        self.triangles() as u64
+    }
+
+    /// The nearest hit of the ray with the model's triangles, in its chart's (u,v).
+    fn intersect(&self, ray: &Ray, range: &RangeInclusive<f64>) -> Option<Hit> {
+        let data = &*self.data;
+        let hit = data
+            .bvh
+            .intersect(&data.corners, ray.origin, ray.direction, range)?;
+        Some(Hit {
+            t: hit.t,
+            uv: data.chart_uv(hit.triangle, hit.a as f32, hit.b as f32),
+        })
+    }
+
+    /// The chart (u,v) of the model's point nearest `p`: a point alone does not name its
+    /// triangle, so every triangle is tried (for tests and tools, not for rendering).
+    fn uv_at(&self, p: DVec3) -> Vec2 {
+        let data = &*self.data;
+        let nearest = (0..self.triangles())
+            .map(|t| {
+                let [a, b, c] = [0, 1, 2].map(|k| data.triangle(t)[k].p.as_dvec3());
+                let (weights, distance) = closest_on_triangle(p, a, b, c);
+                (distance, t, weights)
+            })
+            .min_by(|x, y| x.0.total_cmp(&y.0));
+        nearest.map_or(Vec2::NAN, |(_, t, (wb, wc))| {
+            data.chart_uv(t, wb as f32, wc as f32)
+        })
+    }
+}
+
+/// The weights of b and c at the point of triangle abc nearest `p`, and its distance.
+fn closest_on_triangle(p: DVec3, a: DVec3, b: DVec3, c: DVec3) -> ((f64, f64), f64) {
+    let (e1, e2) = (b - a, c - a);
+    let (d11, d12, d22) = (e1.dot(e1), e1.dot(e2), e2.dot(e2));
+    let (r1, r2) = ((p - a).dot(e1), (p - a).dot(e2));
+    let det = d11 * d22 - d12 * d12;
+    let (mut wb, mut wc) = if det > 0.0 {
+        ((d22 * r1 - d12 * r2) / det, (d11 * r2 - d12 * r1) / det)
+    } else {
+        (0.0, 0.0)
+    };
+    // Outside: the nearest point is on an edge; clamping the weights is close enough for a
+    // point that lies on the model, which is what this is asked of.
+    wb = wb.clamp(0.0, 1.0);
+    wc = wc.clamp(0.0, 1.0 - wb);
+    let q = a + e1 * wb + e2 * wc;
+    ((wb, wc), q.distance(p))
+}
+
+impl ModelSurface {
+    pub fn triangles(&self) -> usize {
+        self.data.corners.len() / 3
     }
 
     /// The texture's (u,v) at a chart (u,v), and how chart steps map to texture steps (a chart

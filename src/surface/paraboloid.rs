@@ -1,8 +1,15 @@
-//! The paraboloid (the seed's "parabola"): P(u,v), its partial derivatives and normal.
+//! The paraboloid (the seed's "parabola"): P(u,v), its partial derivatives and normal, its exact
+//! ray hits and the inverse of its parametrisation.
 
-use super::sphere::{SEED_UNITS_PER_RADIAN, azimuth};
+use super::grid_shape::GridShape;
+use super::hull::past_edge;
+use super::parametric::Parametric;
+use super::ray_hits::{Hit, Ray, Rays, TrueHit, nearest_hit, quadratic_roots};
+use super::seed_angles::{SEED_UNITS_PER_RADIAN, azimuth, azimuth_u, azimuth_u_f32};
+use super::true_hit::{Quadric, quadric_hits};
 use super::{AxisBasis, Domain, Frame, normalize_or};
-use glam::{DVec3, Vec2};
+use glam::{DVec3, Vec2, Vec3};
+use std::ops::RangeInclusive;
 
 /// The seed's "parabola": a paraboloid of revolution, height = curvature·ρ² along the axis.
 /// Domain: u ∈ [0, 720) azimuth in the sphere's seed units, v = ρ ∈ [0, radius] in world units.
@@ -15,8 +22,16 @@ pub struct Paraboloid {
     pub radius: f32,
 }
 
-impl Paraboloid {
-    pub fn domain(&self) -> Domain {
+impl Parametric for Paraboloid {
+    fn kind(&self) -> &'static str {
+        "paraboloid"
+    }
+
+    fn origin(&self) -> DVec3 {
+        self.apex
+    }
+
+    fn domain(&self) -> Domain {
         Domain {
             min: Vec2::ZERO,
             max: Vec2::new(720.0, self.radius),
@@ -24,7 +39,7 @@ impl Paraboloid {
     }
 
     #[inline]
-    pub fn frame(&self, u: f32, v: f32) -> Frame {
+    fn frame(&self, u: f32, v: f32) -> Frame {
         let b = &self.basis;
         let (sin_phi, cos_phi) = super::sin_cos(azimuth(u));
         let radial = b.to_world(sin_phi, 0.0, cos_phi);
@@ -37,6 +52,81 @@ impl Paraboloid {
             pv: radial + b.axis * slope,
             n: normalize_or(b.axis - radial * slope, b.axis),
         }
+    }
+
+    fn max_curvature(&self) -> f32 {
+        2.0 * self.curvature
+    }
+
+    fn grid_shape(&self, density: u32) -> GridShape {
+        GridShape {
+            cells_u: 2 * density,
+            cells_v: (density / 2).max(2),
+            collapsed_v_min: true,
+            collapsed_v_max: false,
+        }
+    }
+
+    /// The normal points into the bowl, its concave side.
+    fn hull_outwards(&self, uv: Vec2, frame: &Frame) -> Vec3 {
+        -frame.n + past_edge(frame.pv, false, uv.y == self.radius)
+    }
+
+    /// h = k·ρ² along the ray (h along the axis, ρ the distance from it) is a quadratic in t.
+    fn intersect(&self, ray: &Ray, range: &RangeInclusive<f64>) -> Option<Hit> {
+        let k = self.curvature as f64;
+        let o = self.basis.local(ray.origin);
+        let d = self.basis.local(ray.direction);
+        let a = k * (d.x * d.x + d.z * d.z);
+        let b = 2.0 * k * (o.x * d.x + o.z * d.z) - d.y;
+        let c = k * (o.x * o.x + o.z * o.z) - o.y;
+        let radius = self.radius;
+        nearest_hit(quadratic_roots(a, b, c), range, |t| {
+            let uv = self.uv_at(ray.at(t));
+            (uv.y <= radius).then_some(uv)
+        })
+    }
+
+    /// u from the azimuth about the axis, v = ρ.
+    fn uv_at(&self, p: DVec3) -> Vec2 {
+        let q = self.basis.local(p);
+        Vec2::new(azimuth_u(q.x, q.z), q.x.hypot(q.z) as f32)
+    }
+
+    fn true_hits(&self, rays: &Rays, hits: &mut [TrueHit], found: &mut [bool]) {
+        quadric_hits(&ParaboloidQuadric(self), rays, hits, found);
+    }
+}
+
+/// h = k·ρ² (h along the axis, ρ from it).
+struct ParaboloidQuadric<'a>(&'a Paraboloid);
+
+impl Quadric for ParaboloidQuadric<'_> {
+    #[inline(always)]
+    fn local(&self, v: DVec3) -> DVec3 {
+        self.0.basis.local(v)
+    }
+
+    #[inline(always)]
+    fn coefficients(&self, q: DVec3, d: DVec3) -> [f64; 3] {
+        let k = self.0.curvature as f64;
+        [
+            k * (d.x * d.x + d.z * d.z),
+            2.0 * k * (q.x * d.x + q.z * d.z) - d.y,
+            k * (q.x * q.x + q.z * q.z) - q.y,
+        ]
+    }
+
+    /// Past the rim the quadric is not the surface.
+    #[inline(always)]
+    fn contains(&self, p: DVec3) -> bool {
+        let radius = self.0.radius as f64;
+        p.x * p.x + p.z * p.z <= radius * radius
+    }
+
+    #[inline(always)]
+    fn uv(&self, p: Vec3) -> Vec2 {
+        Vec2::new(azimuth_u_f32(p.x, p.z), (p.x * p.x + p.z * p.z).sqrt())
     }
 }
 

@@ -1,7 +1,12 @@
-//! The plane rectangle: P(u,v), its partial derivatives and normal.
+//! The plane rectangle: P(u,v), its partial derivatives and normal, its exact ray hits and the
+//! inverse of its parametrisation.
 
-use super::{Domain, Frame, normalize_or};
+use super::grid_shape::GridShape;
+use super::parametric::Parametric;
+use super::ray_hits::{Hit, Ray, flat_hit, nearest_hit, project};
+use super::{Domain, Frame, Frames, flat_frames, normalize_or};
 use glam::{DVec3, Vec2, Vec3};
+use std::ops::RangeInclusive;
 
 /// A plane rectangle P = origin + u·U + v·V (the seed's P = P0 + a·u + b·v), U and V orthonormal.
 /// Domain: u ∈ [0, width], v ∈ [0, height] in world units (the seed's 400-wide plane has u = h).
@@ -30,8 +35,18 @@ impl Plane {
             size,
         }
     }
+}
 
-    pub fn domain(&self) -> Domain {
+impl Parametric for Plane {
+    fn kind(&self) -> &'static str {
+        "plane"
+    }
+
+    fn origin(&self) -> DVec3 {
+        self.origin
+    }
+
+    fn domain(&self) -> Domain {
         Domain {
             min: Vec2::ZERO,
             max: self.size,
@@ -39,13 +54,42 @@ impl Plane {
     }
 
     #[inline]
-    pub fn frame(&self, u: f32, v: f32) -> Frame {
+    fn frame(&self, u: f32, v: f32) -> Frame {
         Frame {
             p: self.u_axis * u + self.v_axis * v,
             pu: self.u_axis,
             pv: self.v_axis,
             n: self.normal,
         }
+    }
+
+    fn frames(&self, count: usize, uv: impl Fn(usize) -> Vec2, out: &mut Frames) {
+        flat_frames(count, uv, self.frame(0.0, 0.0), out);
+    }
+
+    fn is_flat(&self) -> bool {
+        true
+    }
+
+    fn max_curvature(&self) -> f32 {
+        0.0
+    }
+
+    fn grid_shape(&self, _density: u32) -> GridShape {
+        GridShape::flat(1, 1)
+    }
+
+    fn intersect(&self, ray: &Ray, range: &RangeInclusive<f64>) -> Option<Hit> {
+        let t = flat_hit(self.normal.as_dvec3(), ray)?;
+        nearest_hit([t, f64::NAN], range, |t| {
+            let uv = self.uv_at(ray.at(t));
+            let inside = uv.cmpge(Vec2::ZERO).all() && uv.cmple(self.size).all();
+            inside.then_some(uv)
+        })
+    }
+
+    fn uv_at(&self, p: DVec3) -> Vec2 {
+        project(p, self.u_axis.as_dvec3(), self.v_axis.as_dvec3())
     }
 }
 

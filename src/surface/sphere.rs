@@ -1,12 +1,16 @@
-//! The sphere in the seed's angle units: P(u,v), its partial derivatives and normal.
+//! The sphere in the seed's angle units: P(u,v), its partial derivatives and normal, its exact
+//! ray hits and the inverse of its parametrisation.
 
-use super::{Domain, Frame, Frames};
+use super::grid_shape::GridShape;
+use super::parametric::Parametric;
+use super::ray_hits::{Hit, Ray, Rays, TrueHit, nearest_hit, quadratic_roots};
+use super::seed_angles::{
+    SEED_UNITS_PER_RADIAN, SEED_UNITS_PER_RADIAN_F64, azimuth, azimuth_u, azimuth_u_f32,
+};
+use super::true_hit::{Quadric, quadric_hits};
+use super::{Domain, Frame, Frames, atan2};
 use glam::{DVec3, Vec2, Vec3};
-use std::f32::consts::PI;
-
-/// Seed units per radian: the seed scales its sphere angles by 360/π, so a full turn of azimuth is
-/// 720 units and pole to pole is 360, which makes its dimple period of 30 look right.
-pub const SEED_UNITS_PER_RADIAN: f32 = 360.0 / PI;
+use std::ops::RangeInclusive;
 
 /// A sphere. Domain: u ∈ [0, 720) azimuth, v ∈ [0, 360] polar angle from the +Y pole, both in
 /// seed units. As in the seed, u = 180 faces +Z (the default camera), the front hemisphere is
@@ -23,33 +27,6 @@ impl Sphere {
         min: Vec2::ZERO,
         max: Vec2::new(720.0, 360.0),
     };
-
-    #[inline]
-    pub fn frame(&self, u: f32, v: f32) -> Frame {
-        let (sin_phi, cos_phi) = super::sin_cos(azimuth(u));
-        let (sin_theta, cos_theta) = super::sin_cos(v / SEED_UNITS_PER_RADIAN);
-        self.frame_from_angles(sin_phi, cos_phi, sin_theta, cos_theta)
-    }
-
-    /// `frame` at `uv(0) … uv(count − 1)`, appended to `out`. A chunk's sines, cosines and
-    /// frames are computed in loops of plain arrays, which the compiler turns into SIMD: the
-    /// same polynomials and products, so the same frames to the bit.
-    pub fn frames(&self, count: usize, uv: impl Fn(usize) -> Vec2, out: &mut Frames) {
-        out.reserve(count);
-        // Made once, not per chunk: zeroed per chunk, they cost more than the frames.
-        let (mut u, mut v) = ([0.0f32; CHUNK], [0.0f32; CHUNK]);
-        let mut angles = [[0.0f32; CHUNK]; 4];
-        let mut coordinates = [[0.0f32; CHUNK]; 12];
-        for first in (0..count).step_by(CHUNK) {
-            let len = CHUNK.min(count - first);
-            for k in 0..len {
-                (u[k], v[k]) = uv(first + k).into();
-            }
-            chunk_angles(&u, &v, &mut angles);
-            self.chunk_frames(&angles, &mut coordinates);
-            out.extend_from_lanes(&coordinates, len);
-        }
-    }
 
     /// A chunk's frames from its angles, as p, Pu, Pv and n, each as x, y and z lanes.
     fn chunk_frames(&self, angles: &[[f32; CHUNK]; 4], out: &mut [[f32; CHUNK]; 12]) {
@@ -89,6 +66,111 @@ impl Sphere {
     }
 }
 
+impl Parametric for Sphere {
+    fn kind(&self) -> &'static str {
+        "sphere"
+    }
+
+    fn origin(&self) -> DVec3 {
+        self.center
+    }
+
+    fn domain(&self) -> Domain {
+        Sphere::DOMAIN
+    }
+
+    #[inline]
+    fn frame(&self, u: f32, v: f32) -> Frame {
+        let (sin_phi, cos_phi) = super::sin_cos(azimuth(u));
+        let (sin_theta, cos_theta) = super::sin_cos(v / SEED_UNITS_PER_RADIAN);
+        self.frame_from_angles(sin_phi, cos_phi, sin_theta, cos_theta)
+    }
+
+    /// A chunk's sines, cosines and frames are computed in loops of plain arrays, which the
+    /// compiler turns into SIMD: the same polynomials and products, so the same frames to the bit.
+    fn frames(&self, count: usize, uv: impl Fn(usize) -> Vec2, out: &mut Frames) {
+        out.reserve(count);
+        // Made once, not per chunk: zeroed per chunk, they cost more than the frames.
+        let (mut u, mut v) = ([0.0f32; CHUNK], [0.0f32; CHUNK]);
+        let mut angles = [[0.0f32; CHUNK]; 4];
+        let mut coordinates = [[0.0f32; CHUNK]; 12];
+        for first in (0..count).step_by(CHUNK) {
+            let len = CHUNK.min(count - first);
+            for k in 0..len {
+                (u[k], v[k]) = uv(first + k).into();
+            }
+            chunk_angles(&u, &v, &mut angles);
+            self.chunk_frames(&angles, &mut coordinates);
+            out.extend_from_lanes(&coordinates, len);
+        }
+    }
+
+    fn max_curvature(&self) -> f32 {
+        1.0 / self.radius
+    }
+
+    fn encloses_eye_at(&self, eye_from_anchor: DVec3) -> Option<bool> {
+        Some(eye_from_anchor.length() > self.radius as f64)
+    }
+
+    /// Both poles are fans: a single row would have to be a fan at both ends at once.
+    fn grid_shape(&self, density: u32) -> GridShape {
+        GridShape {
+            cells_u: 2 * density,
+            cells_v: density.max(2),
+            collapsed_v_min: true,
+            collapsed_v_max: true,
+        }
+    }
+
+    fn hull_outwards(&self, _uv: Vec2, frame: &Frame) -> Vec3 {
+        frame.n
+    }
+
+    fn intersect(&self, ray: &Ray, range: &RangeInclusive<f64>) -> Option<Hit> {
+        let r = self.radius as f64;
+        let (o, d) = (ray.origin, ray.direction);
+        let roots = quadratic_roots(d.dot(d), 2.0 * o.dot(d), o.dot(o) - r * r);
+        nearest_hit(roots, range, |t| Some(self.uv_at(ray.at(t))))
+    }
+
+    /// u from the azimuth (φ = atan2(x, z), u = (φ + π/2)·360/π in [0, 720)), v from the polar
+    /// angle (acos(y/r)·360/π), as the seed computes them.
+    fn uv_at(&self, p: DVec3) -> Vec2 {
+        let n = p.normalize_or(DVec3::Y);
+        let v = n.y.clamp(-1.0, 1.0).acos() * SEED_UNITS_PER_RADIAN_F64;
+        Vec2::new(azimuth_u(n.x, n.z), v as f32)
+    }
+
+    fn true_hits(&self, rays: &Rays, hits: &mut [TrueHit], found: &mut [bool]) {
+        quadric_hits(&SphereQuadric(self), rays, hits, found);
+    }
+}
+
+/// |q + s·d|² = r².
+struct SphereQuadric<'a>(&'a Sphere);
+
+impl Quadric for SphereQuadric<'_> {
+    #[inline(always)]
+    fn local(&self, v: DVec3) -> DVec3 {
+        v
+    }
+
+    /// Formed in f64 around the chord point, |q|² − r² keeps the chord point's small distance
+    /// from the surface.
+    #[inline(always)]
+    fn coefficients(&self, q: DVec3, d: DVec3) -> [f64; 3] {
+        let r = self.0.radius as f64;
+        [d.dot(d), 2.0 * q.dot(d), q.dot(q) - r * r]
+    }
+
+    #[inline(always)]
+    fn uv(&self, p: Vec3) -> Vec2 {
+        let v = atan2((p.x * p.x + p.z * p.z).sqrt(), p.y) * SEED_UNITS_PER_RADIAN;
+        Vec2::new(azimuth_u_f32(p.x, p.z), v)
+    }
+}
+
 /// Fragments whose angles are computed together.
 const CHUNK: usize = 64;
 
@@ -109,12 +191,6 @@ fn chunk_angles_here(u: &[f32; CHUNK], v: &[f32; CHUNK], angles: &mut [[f32; CHU
         (sin_phi[k], cos_phi[k]) = super::sin_cos(azimuth(u[k]));
         (sin_theta[k], cos_theta[k]) = super::sin_cos(v[k] / SEED_UNITS_PER_RADIAN);
     }
-}
-
-/// The azimuth φ of the seed's `uu = (π/2 + atan(x/z))·360/π`, so that x = sin φ, z = cos φ.
-#[inline(always)]
-pub(super) fn azimuth(u: f32) -> f32 {
-    u / SEED_UNITS_PER_RADIAN - PI / 2.0
 }
 
 #[cfg(test)]

@@ -1,6 +1,6 @@
 //! Tessellation: a surface's (u,v) grid cut into an indexed triangle mesh.
 
-use super::Surface;
+use super::parametric::Parametric;
 use glam::{Vec2, Vec3};
 
 /// How finely curved surfaces are cut into triangles: `density` cells per π radians of turning
@@ -29,30 +29,11 @@ pub struct Mesh {
     pub chord_error: f32,
 }
 
-pub(super) struct GridShape {
-    pub cells_u: u32,
-    pub cells_v: u32,
-    /// The v = min row is a single point (a pole or apex).
-    pub collapsed_v_min: bool,
-    pub collapsed_v_max: bool,
-}
-
-impl GridShape {
-    pub fn flat(cells_u: u32, cells_v: u32) -> GridShape {
-        GridShape {
-            cells_u,
-            cells_v,
-            collapsed_v_min: false,
-            collapsed_v_max: false,
-        }
-    }
-}
-
 /// Tessellates a surface into a (u,v) grid. Seam vertices (u = min and u = max) are separate, so u
 /// wraps without a crack in the interpolated parameters. A collapsed row gets one vertex per cell at
 /// the cell's mid-u, so the pole is a fan of proper triangles rather than a row of zero-area slivers.
-pub(super) fn grid(surface: &Surface, tessellation: Tessellation) -> Mesh {
-    let shape = surface.grid_shape(tessellation);
+pub(super) fn grid(surface: &impl Parametric, tessellation: Tessellation) -> Mesh {
+    let shape = surface.grid_shape(tessellation.density.max(1));
     let domain = surface.domain();
     let step = (domain.max - domain.min) / Vec2::new(shape.cells_u as f32, shape.cells_v as f32);
     let mut mesh = Mesh::default();
@@ -60,7 +41,7 @@ pub(super) fn grid(surface: &Surface, tessellation: Tessellation) -> Mesh {
     for j in 0..=shape.cells_v {
         row_starts.push(mesh.positions.len() as u32);
         let v = domain.min.y + step.y * j as f32;
-        let collapsed = is_collapsed(&shape, j);
+        let collapsed = shape.is_collapsed(j);
         let (count, offset) = if collapsed {
             (shape.cells_u, 0.5)
         } else {
@@ -76,10 +57,10 @@ pub(super) fn grid(surface: &Surface, tessellation: Tessellation) -> Mesh {
         let (top, bottom) = (row_starts[j as usize], row_starts[j as usize + 1]);
         for i in 0..shape.cells_u {
             let corner = |row: u32, di: u32| row + i + di;
-            if is_collapsed(&shape, j) {
+            if shape.is_collapsed(j) {
                 mesh.indices
                     .push([corner(top, 0), corner(bottom, 0), corner(bottom, 1)]);
-            } else if is_collapsed(&shape, j + 1) {
+            } else if shape.is_collapsed(j + 1) {
                 mesh.indices
                     .push([corner(top, 0), corner(bottom, 0), corner(top, 1)]);
             } else {
@@ -94,14 +75,10 @@ pub(super) fn grid(surface: &Surface, tessellation: Tessellation) -> Mesh {
     mesh
 }
 
-fn is_collapsed(shape: &GridShape, row: u32) -> bool {
-    (row == 0 && shape.collapsed_v_min) || (row == shape.cells_v && shape.collapsed_v_max)
-}
-
 /// Makes every triangle wind counter-clockwise around the surface normal at its centre, whatever
 /// the handedness of the surface's (u,v), so back faces can be told by winding alone; and
 /// measures the mesh's chord error at the same centres.
-fn orient_along_normals(surface: &Surface, mesh: &mut Mesh) {
+fn orient_along_normals(surface: &impl Parametric, mesh: &mut Mesh) {
     let mut chord_error: f32 = 0.0;
     for tri in &mut mesh.indices {
         let [a, b, c] = tri.map(|i| mesh.positions[i as usize]);
@@ -120,7 +97,7 @@ fn orient_along_normals(surface: &Surface, mesh: &mut Mesh) {
 
 #[cfg(test)]
 mod tests {
-    use super::super::{AxisBasis, Cone, Sphere};
+    use super::super::{AxisBasis, Cone, Sphere, Surface};
     use super::*;
     use glam::DVec3;
 

@@ -2,7 +2,7 @@
 
 /// The distinct real roots of a·t² + b·t + c = 0 in increasing order (NaN where there are fewer
 /// than two), without cancellation (see `ordered_roots`).
-pub(super) fn quadratic_roots(a: f64, b: f64, c: f64) -> [f64; 2] {
+pub fn quadratic_roots(a: f64, b: f64, c: f64) -> [f64; 2] {
     let (first, second, real) = ordered_roots(a, b, c);
     let root = |t: f64| if real && t.is_finite() { t } else { f64::NAN };
     let second = if second == first { f64::NAN } else { second };

@@ -1,9 +1,8 @@
-//! Ray–wave intersection: the first root of the corrugated sheet along the ray.
+//! Where a ray first meets the sheet y = A·sin(k·x) within a box: the wave surface's exact hit.
 
-use super::ray::{Hit, Ray};
+use super::ray::Ray;
 use super::root::{bisect_sign_change, safeguarded_root};
-use crate::surface::Wave;
-use glam::{DVec3, Vec2};
+use glam::DVec3;
 use std::f64::consts::FRAC_PI_2;
 use std::ops::RangeInclusive;
 
@@ -11,24 +10,50 @@ use std::ops::RangeInclusive;
 /// would alias anyway); it bounds the work per ray.
 const MAX_QUARTER_WAVES: f64 = 1e6;
 
-/// The first root of f(t) = y(t) − A·sin(k·x(t)) inside the wave's box. The ray is first clipped
-/// to the box (x in [0, width], z in [−depth, 0], |y| ≤ |A|), then cut where k·x(t) crosses a
-/// multiple of π/2: on each piece f is convex or concave (f'' = A·k²·dx²·sin(k·x) keeps its
-/// sign), so it has at most two roots, found exactly: bracketed at the ends, or on either side of
-/// the piece's single extremum. Safeguarded Newton then refines each bracket.
-pub(super) fn intersect_wave(wave: &Wave, ray: &Ray, range: &RangeInclusive<f64>) -> Option<Hit> {
-    let curve = WaveAlongRay::new(wave, ray);
-    let (lo, hi) = clip_to_box(wave, ray, *range.start(), *range.end())?;
-    let t = curve.first_root(lo, hi)?;
-    Some(Hit {
-        t,
-        uv: wave_uv(ray.at(t)),
-    })
+/// The sheet y = amplitude·sin(2π·x / wavelength) for x in [0, width] and z in [−depth, 0].
+#[derive(Clone, Copy, Debug)]
+pub struct SineSheet {
+    pub amplitude: f64,
+    pub wavelength: f64,
+    pub width: f64,
+    pub depth: f64,
 }
 
-/// u = x, v = −z.
-pub(super) fn wave_uv(p: DVec3) -> Vec2 {
-    Vec2::new(p.x as f32, -p.z as f32)
+impl SineSheet {
+    /// The first root of f(t) = y(t) − A·sin(k·x(t)) inside the sheet's box, for t in `range`.
+    /// The ray is first clipped to the box (x in [0, width], z in [−depth, 0], |y| ≤ |A|), then
+    /// cut where k·x(t) crosses a multiple of π/2: on each piece f is convex or concave
+    /// (f'' = A·k²·dx²·sin(k·x) keeps its sign), so it has at most two roots, found exactly:
+    /// bracketed at the ends, or on either side of the piece's single extremum. Safeguarded
+    /// Newton then refines each bracket.
+    pub fn first_hit(&self, ray: &Ray, range: &RangeInclusive<f64>) -> Option<f64> {
+        let curve = WaveAlongRay::new(self, ray);
+        let (lo, hi) = self.clip_to_box(ray, *range.start(), *range.end())?;
+        curve.first_root(lo, hi)
+    }
+
+    /// The ray's parameter interval inside the sheet's bounding box, within [lo, hi].
+    fn clip_to_box(&self, ray: &Ray, lo: f64, hi: f64) -> Option<(f64, f64)> {
+        let amplitude = self.amplitude.abs();
+        let slabs = [
+            (ray.origin.x, ray.direction.x, 0.0, self.width),
+            (ray.origin.y, ray.direction.y, -amplitude, amplitude),
+            (ray.origin.z, ray.direction.z, -self.depth, 0.0),
+        ];
+        let (mut lo, mut hi) = (lo, hi);
+        for (origin, direction, min, max) in slabs {
+            if direction == 0.0 {
+                if origin < min || origin > max {
+                    return None;
+                }
+                continue;
+            }
+            let (a, b) = ((min - origin) / direction, (max - origin) / direction);
+            lo = lo.max(a.min(b));
+            hi = hi.min(a.max(b));
+        }
+        (lo <= hi).then_some((lo, hi))
+    }
 }
 
 struct WaveAlongRay {
@@ -39,12 +64,12 @@ struct WaveAlongRay {
 }
 
 impl WaveAlongRay {
-    fn new(wave: &Wave, ray: &Ray) -> WaveAlongRay {
+    fn new(sheet: &SineSheet, ray: &Ray) -> WaveAlongRay {
         WaveAlongRay {
             origin: ray.origin,
             direction: ray.direction,
-            amplitude: wave.amplitude as f64,
-            wavenumber: std::f64::consts::TAU / wave.wavelength as f64,
+            amplitude: sheet.amplitude,
+            wavenumber: std::f64::consts::TAU / sheet.wavelength,
         }
     }
 
@@ -118,27 +143,4 @@ impl WaveAlongRay {
     fn refine(&self, lo: f64, hi: f64) -> f64 {
         safeguarded_root(|t| self.f(t), |t| self.df(t), lo, hi)
     }
-}
-
-/// The ray's parameter interval inside the wave's bounding box, within [lo, hi].
-fn clip_to_box(wave: &Wave, ray: &Ray, lo: f64, hi: f64) -> Option<(f64, f64)> {
-    let amplitude = (wave.amplitude as f64).abs();
-    let slabs = [
-        (ray.origin.x, ray.direction.x, 0.0, wave.size.x as f64),
-        (ray.origin.y, ray.direction.y, -amplitude, amplitude),
-        (ray.origin.z, ray.direction.z, -(wave.size.y as f64), 0.0),
-    ];
-    let (mut lo, mut hi) = (lo, hi);
-    for (origin, direction, min, max) in slabs {
-        if direction == 0.0 {
-            if origin < min || origin > max {
-                return None;
-            }
-            continue;
-        }
-        let (a, b) = ((min - origin) / direction, (max - origin) / direction);
-        lo = lo.max(a.min(b));
-        hi = hi.min(a.max(b));
-    }
-    (lo <= hi).then_some((lo, hi))
 }
