@@ -1,8 +1,8 @@
 //! The `bump = {…}` and `texture = {…}` tables of a scene file's objects, and how they load:
 //! patterns and images by built-in name or by path relative to the scene file.
 
+use super::checked_values::{Finite, Positive};
 use super::exact_arrays::{exact_nested_optional, exact_optional};
-use super::file::{Finite, Positive};
 use super::material::{
     Bump, BumpSource, ImageHeight, ImageTexture, NormalMapBump, PatternBinding, Placement,
     Texturing,

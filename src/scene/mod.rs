@@ -3,6 +3,7 @@
 mod binding_file;
 mod by_name;
 mod camera;
+mod checked_values;
 pub mod dependencies;
 pub(crate) mod exact_arrays;
 mod file;
@@ -11,6 +12,7 @@ mod material_choice;
 mod model_stage;
 mod presets;
 mod quality_table;
+mod torus_file;
 pub(crate) mod user_words;
 
 pub use binding_file::{BindingFile, FilterFile, MappingKind, WrapFile, load_pattern};

@@ -4,6 +4,7 @@
 use super::Scene;
 use super::binding_file::{BindingFile, MappingKind};
 use super::file::*;
+use super::torus_file::TorusFile;
 use glam::{DVec3, Vec3};
 
 /// Every built-in scene name, in the lecture's order.
@@ -54,6 +55,8 @@ pub const PRESET_NAMES: &[&str] = &[
     "plane-cobbles",
     "cone-bark",
     "rounded-cube-dimples",
+    "torus-dimples",
+    "torus-bricks",
 ];
 
 /// The built-in scene of that name, as a scene file (so it can be printed and edited).
@@ -76,6 +79,7 @@ fn geometry(name: &str) -> SceneFile {
         _ if name.starts_with("big-sphere-") => big_sphere(),
         _ if name.starts_with("cone-") => cone(),
         _ if name.starts_with("rounded-cube-") => rounded_cube(),
+        _ if name.starts_with("torus-") => torus(),
         "sphere-image-bump" | "textured-sphere" => single_sphere(),
         "textured-spheres" => spheres_on_floor(),
         "planes-stripes-checks-image" => room_corner(),
@@ -88,6 +92,9 @@ fn geometry(name: &str) -> SceneFile {
 
 /// The bump patterns and textures of each figure.
 fn dress(name: &str, objects: &mut [ObjectFile]) {
+    if name.starts_with("torus-") {
+        return objects[0].bump = Some(torus_bump(name));
+    }
     // "textured-spheres" names its objects, not a bump pattern.
     let bump_pattern = BUMP_PATTERNS
         .iter()
@@ -164,6 +171,25 @@ const BUMP_PATTERNS: &[&str] = &[
     "cobbles",
     "bark",
 ];
+
+/// The torus's u turns around the ring, 2.5 times the tube's length (its major radius over its
+/// minor one): features a fifth of the size along u come out square half way round the tube,
+/// and 60 dimples or 30 bricks go round it without a seam.
+fn torus_bump(name: &str) -> BindingFile {
+    let scale = Some([Positive(0.4), Positive(1.0)]);
+    if name == "torus-bricks" {
+        BindingFile {
+            scale,
+            params: [("course".to_string(), 24.0)].into(),
+            ..pattern_binding("bricks")
+        }
+    } else {
+        BindingFile {
+            scale,
+            ..pattern_binding("dimples-seed")
+        }
+    }
+}
 
 fn pattern_binding(pattern: &str) -> BindingFile {
     BindingFile {
@@ -419,6 +445,22 @@ fn cone() -> SceneFile {
                 height: Positive(320.0),
             },
             material(0.6, 0.7, 0.85),
+        )],
+    )
+}
+
+fn torus() -> SceneFile {
+    scene(
+        camera(point(0.0, 300.0, 850.0), point(0.0, -10.0, 0.0), 35.0),
+        vec![key_light(-400.0, 500.0, 600.0)],
+        vec![object(
+            SurfaceFile::Torus(TorusFile {
+                center: point(0.0, 0.0, 0.0),
+                axis: direction(0.0, 1.0, 0.35),
+                major_radius: Positive(200.0),
+                minor_radius: Positive(80.0),
+            }),
+            material(0.8, 0.55, 0.4),
         )],
     )
 }

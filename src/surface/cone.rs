@@ -32,6 +32,10 @@ impl Parametric for Cone {
         self.apex
     }
 
+    fn origin_mut(&mut self) -> &mut DVec3 {
+        &mut self.apex
+    }
+
     fn domain(&self) -> Domain {
         Domain {
             min: Vec2::ZERO,

@@ -41,7 +41,7 @@ pub(super) fn past_edge(along: Vec3, at_min: bool, at_max: bool) -> Vec3 {
 
 #[cfg(test)]
 mod tests {
-    use super::super::{AxisBasis, Cone, Paraboloid, Sphere, Tessellation};
+    use super::super::{AxisBasis, Cone, Paraboloid, Sphere, Tessellation, Torus};
     use super::*;
     use glam::{DVec3, Vec2};
 
@@ -101,5 +101,20 @@ mod tests {
         // Below the bowl's surface is its convex side.
         let outside = |p: Vec3| 0.01 * (p.x * p.x + p.z * p.z) - p.y;
         assert_chords_outside(&Surface::Paraboloid(bowl), outside);
+    }
+
+    /// Its inner half is a saddle: the chords around the tube sag into it, those along the
+    /// ring bulge out of it. Pushed out of the tube, none is left inside.
+    #[test]
+    fn a_toruss_hull_lies_outside_its_tube_saddle_included() {
+        let torus = Torus {
+            center: DVec3::ZERO,
+            basis: AxisBasis::from_axis(Vec3::Y),
+            major_radius: 100.0,
+            minor_radius: 60.0,
+        };
+        let outside =
+            |p: Vec3| Vec2::new(Vec2::new(p.x, p.z).length() - 100.0, p.y).length() - 60.0;
+        assert_chords_outside(&Surface::Torus(torus), outside);
     }
 }

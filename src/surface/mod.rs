@@ -1,4 +1,4 @@
-//! The seed's parametric surfaces: P(u,v), its partials Pu and Pv, and the unit normal, each
+//! The seed's parametric surfaces and the torus: P(u,v), its partials Pu and Pv, and the unit normal, each
 //! with a documented (u,v) domain, plus their tessellation into indexed grids. What a surface
 //! defines is the `Parametric` trait; each surface implements it in its own file, and `Surface`
 //! is the one enum of them the rest of the program holds.
@@ -19,6 +19,7 @@ macro_rules! each_kind {
             Surface::Cone($s) => $body,
             Surface::Wave($s) => $body,
             Surface::Triangle($s) => $body,
+            Surface::Torus($s) => $body,
             Surface::Model($s) => $body,
         }
     };
@@ -40,6 +41,7 @@ mod ray_hits;
 mod seed_angles;
 mod sphere;
 mod tessellate;
+mod torus;
 mod triangle;
 mod true_hit;
 mod wave;
@@ -60,6 +62,7 @@ pub use ray_hits::{Hit, Ray, Rays, TrueHit, intersect, surface_uv};
 pub use seed_angles::SEED_UNITS_PER_RADIAN;
 pub use sphere::Sphere;
 pub use tessellate::{Mesh, Tessellation};
+pub use torus::Torus;
 pub use triangle::Triangle;
 pub use wave::{WAVE_NEWTON_STEPS, Wave};
 
@@ -87,6 +90,7 @@ pub enum Surface {
     Cone(Cone),
     Wave(Wave),
     Triangle(Triangle),
+    Torus(Torus),
     /// A user's triangle mesh, in the (u,v) of its chart (see `model.rs`).
     Model(ModelSurface),
 }
@@ -112,6 +116,11 @@ impl Surface {
     /// The world-space anchor that frames are relative to.
     pub fn origin(&self) -> DVec3 {
         each_kind!(self, s => s.origin())
+    }
+
+    /// Moves the surface, keeping its shape.
+    pub fn move_by(&mut self, offset: DVec3) {
+        each_kind!(self, s => *s.origin_mut() += offset)
     }
 
     /// The exact frame at (u,v).
@@ -201,7 +210,8 @@ pub(crate) mod tests {
     #[test]
     fn triangle_counts_match_the_tessellated_meshes() {
         use super::{
-            AxisBasis, Cone, Paraboloid, Plane, Sphere, Surface, Tessellation, Triangle, Wave,
+            AxisBasis, Cone, Paraboloid, Plane, Sphere, Surface, Tessellation, Torus, Triangle,
+            Wave,
         };
         use glam::{DVec3, Vec2, Vec3};
         let basis = AxisBasis::from_axis(Vec3::Y);
@@ -230,6 +240,12 @@ pub(crate) mod tests {
                 wavelength: 1.0,
             }),
             Surface::Triangle(Triangle::new(DVec3::ZERO, DVec3::X, DVec3::Y)),
+            Surface::Torus(Torus {
+                center: DVec3::ZERO,
+                basis,
+                major_radius: 2.0,
+                minor_radius: 1.0,
+            }),
         ];
         for surface in &surfaces {
             for density in [1, 2, 3, 17, 64] {

@@ -161,6 +161,10 @@ impl Parametric for ModelSurface {
         self.origin
     }
 
+    fn origin_mut(&mut self) -> &mut DVec3 {
+        &mut self.origin
+    }
+
     fn domain(&self) -> Domain {
         self.data.domain
     }

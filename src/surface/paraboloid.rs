@@ -31,6 +31,10 @@ impl Parametric for Paraboloid {
         self.apex
     }
 
+    fn origin_mut(&mut self) -> &mut DVec3 {
+        &mut self.apex
+    }
+
     fn domain(&self) -> Domain {
         Domain {
             min: Vec2::ZERO,

@@ -17,6 +17,9 @@ pub trait Parametric {
     /// The world-space anchor that frames are relative to.
     fn origin(&self) -> DVec3;
 
+    /// The anchor, to move the surface by.
+    fn origin_mut(&mut self) -> &mut DVec3;
+
     /// The rectangle of (u,v) the surface is defined on.
     fn domain(&self) -> Domain;
 

@@ -46,6 +46,10 @@ impl Parametric for Plane {
         self.origin
     }
 
+    fn origin_mut(&mut self) -> &mut DVec3 {
+        &mut self.origin
+    }
+
     fn domain(&self) -> Domain {
         Domain {
             min: Vec2::ZERO,

@@ -75,6 +75,10 @@ impl Parametric for Sphere {
         self.center
     }
 
+    fn origin_mut(&mut self) -> &mut DVec3 {
+        &mut self.center
+    }
+
     fn domain(&self) -> Domain {
         Sphere::DOMAIN
     }

@@ -48,6 +48,10 @@ impl Parametric for Triangle {
         self.a
     }
 
+    fn origin_mut(&mut self) -> &mut DVec3 {
+        &mut self.a
+    }
+
     /// The rectangle around the triangle's corners.
     fn domain(&self) -> Domain {
         let [a, b, c] = self.corners_uv;

@@ -94,6 +94,10 @@ impl Parametric for Wave {
         self.origin
     }
 
+    fn origin_mut(&mut self) -> &mut DVec3 {
+        &mut self.origin
+    }
+
     fn domain(&self) -> Domain {
         Domain {
             min: Vec2::ZERO,

@@ -98,9 +98,14 @@ fn malformed_scene_files_point_at_line_and_column() {
             "between 0 and 180",
         ),
         (
-            "[camera]\neye = [0, 0, 5]\ntarget = [0, 0, 0]\n[[object]]\nsurface = { torus = {} }\n",
+            "[camera]\neye = [0, 0, 5]\ntarget = [0, 0, 0]\n[[object]]\nsurface = { klein-bottle = {} }\n",
             ":5:",
             "unknown variant",
+        ),
+        (
+            "[camera]\neye = [0, 0, 5]\ntarget = [0, 0, 0]\n[[object]]\nsurface = { torus = { center = [0, 0, 0], major-radius = 1, minor-radius = 2 } }\n",
+            ":5:",
+            "minor-radius (2) must be less than major-radius (1)",
         ),
         (
             "[camera]\neye = [0, 0, 5]\ntarget = [0, 0, 0]\nzoom = 3\n",

@@ -4,7 +4,7 @@ use crate::common::*;
 use bumpwork::raster::{Framebuffer, PreparedScene, RenderTarget, Viewport};
 use bumpwork::scene::{Light, PRESET_NAMES, Scene, preset};
 use bumpwork::shade::render_lit;
-use bumpwork::surface::{Surface, Tessellation};
+use bumpwork::surface::Tessellation;
 use glam::DVec3;
 
 fn render_scene(scene: Scene, viewport: Viewport) -> Framebuffer {
@@ -80,15 +80,7 @@ fn translated(mut scene: Scene, offset: DVec3) -> Scene {
         }
     }
     for object in &mut scene.objects {
-        match &mut object.surface {
-            Surface::Plane(s) => s.origin += offset,
-            Surface::Sphere(s) => s.center += offset,
-            Surface::Paraboloid(s) => s.apex += offset,
-            Surface::Cone(s) => s.apex += offset,
-            Surface::Wave(s) => s.origin += offset,
-            Surface::Triangle(s) => s.a += offset,
-            Surface::Model(s) => s.origin += offset,
-        }
+        object.surface.move_by(offset);
     }
     scene
 }
@@ -105,6 +97,7 @@ fn a_scene_translated_by_a_million_renders_the_same() {
         "image-to-triangle",
         "wave-spheres",
         "rounded-cube-dimples",
+        "torus-dimples",
     ] {
         let near = render_scene(preset(name).unwrap(), viewport);
         let far = render_scene(

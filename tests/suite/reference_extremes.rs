@@ -179,7 +179,7 @@ fn translated_by_a_million_renders_the_same() {
         }
     }
     for object in &mut moved.objects {
-        translate(&mut object.surface, offset);
+        object.surface.move_by(offset);
     }
     let a = render_both(&base, SMALL, DENSITY, |_| {});
     let b = render_both(&moved, SMALL, DENSITY, |_| {});
@@ -193,19 +193,6 @@ fn translated_by_a_million_renders_the_same() {
     let far_away = bumpwork::reference::metrics::psnr(&b.raster, &b.reference);
     eprintln!("raster vs reference: {near_origin:.1} dB at the origin, {far_away:.1} dB at 1e6");
     assert!(far_away >= near_origin - 1.0, "{near_origin} vs {far_away}");
-}
-
-fn translate(surface: &mut bumpwork::surface::Surface, offset: DVec3) {
-    use bumpwork::surface::Surface::*;
-    match surface {
-        Plane(s) => s.origin += offset,
-        Sphere(s) => s.center += offset,
-        Paraboloid(s) => s.apex += offset,
-        Cone(s) => s.apex += offset,
-        Wave(s) => s.origin += offset,
-        Triangle(s) => s.a += offset,
-        Model(s) => s.origin += offset,
-    }
 }
 
 #[test]

@@ -3,7 +3,9 @@
 //! size), no hit is missed in front of a known surface point, and inversion undoes `frame`.
 
 use crate::reference_support::XorShift;
-use bumpwork::surface::{AxisBasis, Cone, Paraboloid, Plane, Sphere, Surface, Triangle, Wave};
+use bumpwork::surface::{
+    AxisBasis, Cone, Paraboloid, Plane, Sphere, Surface, Torus, Triangle, Wave,
+};
 use bumpwork::surface::{Ray, intersect, surface_uv};
 use glam::{DVec3, Vec2, Vec3};
 
@@ -65,6 +67,16 @@ fn surfaces() -> Vec<(&'static str, Surface, f64)> {
                 DVec3::new(0.0, 90.0, 30.0),
             )),
             120.0,
+        ),
+        (
+            "torus",
+            Surface::Torus(Torus {
+                center: DVec3::new(-1e5, 2e5, 3e5),
+                basis: AxisBasis::from_axis(Vec3::new(0.3, 1.0, -0.2)),
+                major_radius: 200.0,
+                minor_radius: 80.0,
+            }),
+            280.0,
         ),
     ]
 }
@@ -202,4 +214,60 @@ fn wave_finds_the_first_of_many_crossings_at_grazing_angles() {
     assert!((p.y - height).abs() < 1e-9, "{p} vs height {height}");
     // The first crest is at x = 5: the ray at y ≈ 4.9 meets its rising flank before it.
     assert!(p.x > 0.0 && p.x < 5.0, "{p}");
+}
+
+/// The torus's quartic against its implicit form sampled along the ray: its hit is where the
+/// sign first changes (to within the sampling step), and a ray on which the sign never changes
+/// misses. Rays from all around, many through the hole, many grazing.
+#[test]
+fn torus_hits_are_the_first_sign_change_of_its_implicit_form() {
+    let (big, small) = (200.0, 80.0);
+    let torus = Surface::Torus(Torus {
+        center: DVec3::ZERO,
+        basis: AxisBasis::from_axis(Vec3::Y),
+        major_radius: big as f32,
+        minor_radius: small as f32,
+    });
+    let inside = |p: DVec3| (p.x.hypot(p.z) - big).hypot(p.y) < small;
+    let mut rng = XorShift(0x7042_5eed);
+    let (mut hits, mut misses) = (0, 0);
+    for _ in 0..2000 {
+        let eye = rng.unit_vector() * rng.range(300.0, 1500.0);
+        let aim = DVec3::new(
+            rng.range(-300.0, 300.0),
+            rng.range(-90.0, 90.0),
+            rng.range(-300.0, 300.0),
+        );
+        let ray = Ray {
+            origin: eye,
+            direction: aim - eye,
+        };
+        let steps = 20_000;
+        let span = 3.0;
+        let first_change = (1..=steps)
+            .map(|i| span * i as f64 / steps as f64)
+            .find(|&t| inside(ray.at(t)) != inside(eye));
+        let step = span / steps as f64;
+        match (intersect(&torus, &ray, 0.0..=span), first_change) {
+            (Some(hit), Some(t)) => {
+                hits += 1;
+                assert!(
+                    hit.t <= t && hit.t >= t - step,
+                    "hit at {} vs sign change at {t}",
+                    hit.t
+                );
+            }
+            (None, None) => misses += 1,
+            // A ray that only grazes the tube between two samples: it leaves again within a step.
+            (Some(hit), None) => {
+                let out = intersect(&torus, &ray, hit.t * (1.0 + 1e-12)..=span);
+                assert!(
+                    out.is_some_and(|out| out.t - hit.t <= step),
+                    "{hit:?} on {ray:?}"
+                );
+            }
+            (None, Some(t)) => panic!("missed a crossing at {t} on {ray:?}"),
+        }
+    }
+    assert!(hits > 500 && misses > 200, "{hits} hits, {misses} misses");
 }

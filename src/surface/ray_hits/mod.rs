@@ -4,12 +4,14 @@
 //! surface solves its own (`Parametric::intersect`); the root finders they share live here.
 
 mod flat;
+mod polynomial;
 mod quadratic;
 mod ray;
 mod root;
 mod sine_sheet;
 
 pub use flat::{flat_hit, project};
+pub use polynomial::polynomial_roots_in;
 pub(crate) use quadratic::ordered_roots;
 pub use quadratic::quadratic_roots;
 pub use ray::{Hit, Ray, Rays, TrueHit, nearest_hit};
