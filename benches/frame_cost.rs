@@ -23,8 +23,9 @@ use bench_support::{
 };
 use bumpwork::measure::Timing;
 use bumpwork::quality::Quality;
-use bumpwork::raster::{FragmentShader, Framebuffer, PreparedScene, RenderTarget, Viewport};
+use bumpwork::raster::{FragmentShader, Framebuffer, RenderTarget, Viewport};
 use bumpwork::scene::Camera;
+use bumpwork::scene::PreparedScene;
 use bumpwork::scene::load_scene_file;
 use bumpwork::still::{BandBuffers, BandJob, ResolveFilter, Supersampling, render_supersampled};
 use bumpwork::surface::Tessellation;

@@ -11,7 +11,7 @@ use bench_support::time_png_stills;
 use bumpwork::export::PreparedStill;
 use bumpwork::measure::Timing;
 use bumpwork::quality::Quality;
-use bumpwork::raster::PreparedScene;
+use bumpwork::scene::PreparedScene;
 use bumpwork::scene::{Scene, load_scene_file, preset, source_text};
 use bumpwork::shade::ShaderMode;
 use bumpwork::still::{ResolveFilter, StillSettings};

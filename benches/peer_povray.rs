@@ -19,8 +19,9 @@ mod bench_support;
 use bench_support::{pov_peer_files, pov_peer_settings, write_native_pov_scene};
 use bumpwork::export::{PreparedStill, StillFormat, StillPlace, write_pov};
 use bumpwork::measure::{Timing, ratio_by_round};
-use bumpwork::raster::{PreparedScene, Viewport};
+use bumpwork::raster::Viewport;
 use bumpwork::scene::Camera;
+use bumpwork::scene::PreparedScene;
 use bumpwork::still::{BandBuffers, BandJob, StillSettings, Supersampling, render_supersampled};
 use std::process::Command;
 use std::time::Duration;
@@ -182,8 +183,8 @@ fn main() {
 }
 
 /// A prepared object again (its mesh copied), for a scene that differs only in its settings.
-fn clone_object(object: &bumpwork::raster::PreparedObject) -> bumpwork::raster::PreparedObject {
-    bumpwork::raster::PreparedObject {
+fn clone_object(object: &bumpwork::scene::PreparedObject) -> bumpwork::scene::PreparedObject {
+    bumpwork::scene::PreparedObject {
         surface: object.surface.clone(),
         material: object.material.clone(),
         mesh: object.mesh.clone(),

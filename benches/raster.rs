@@ -10,9 +10,10 @@ use bench_support::render_into;
 use bench_support::sphere_scene;
 use bumpwork::measure::Timing;
 use bumpwork::raster::{
-    Fragment, FrameObject, Framebuffer, PerFragment, PreparedScene, RenderTarget, Viewport,
-    frame_objects, screen_triangles,
+    Fragment, FrameObject, Framebuffer, PerFragment, RenderTarget, Viewport, frame_objects,
+    screen_triangles,
 };
+use bumpwork::scene::PreparedScene;
 use bumpwork::shade::LitShader;
 use bumpwork::surface::Tessellation;
 use glam::Vec3;

@@ -6,7 +6,8 @@
 //! Run: `cargo bench --bench reload_latency`.
 
 use bumpwork::measure::Timing;
-use bumpwork::raster::{PreparedScene, RenderTarget, Viewport};
+use bumpwork::raster::{RenderTarget, Viewport};
+use bumpwork::scene::PreparedScene;
 use bumpwork::scene::Scene;
 use bumpwork::shade::render_lit;
 use bumpwork::surface::Tessellation;

@@ -185,7 +185,7 @@ pub fn time_png_stills(
 
 /// One pass rendered into `framebuffer`.
 pub fn render_into(
-    prepared: &bumpwork::raster::PreparedScene,
+    prepared: &bumpwork::scene::PreparedScene,
     target: &bumpwork::raster::RenderTarget,
     shader: &impl bumpwork::raster::FragmentShader,
     framebuffer: &mut bumpwork::raster::Framebuffer,
@@ -195,7 +195,7 @@ pub fn render_into(
 
 /// One pass rendered into a new framebuffer.
 pub fn render_with(
-    prepared: &bumpwork::raster::PreparedScene,
+    prepared: &bumpwork::scene::PreparedScene,
     target: &bumpwork::raster::RenderTarget,
     shader: &impl bumpwork::raster::FragmentShader,
 ) -> (bumpwork::raster::Framebuffer, bumpwork::raster::FrameStats) {

@@ -12,9 +12,10 @@ pub use variants::{Variant, VariantKind, variants};
 
 use crate::measure::Timing;
 use crate::raster::ViewRays;
-use crate::raster::{Framebuffer, PreparedScene, RenderTarget, Viewport, render_pass};
+use crate::raster::{Framebuffer, RenderTarget, Viewport, render_pass};
 use crate::reference::{FrameError, ShadedAndNormals, exact_shader, render_rays_into};
 use crate::scene::Camera;
+use crate::scene::PreparedScene;
 use crate::scene::Scene;
 use crate::shade::LitShader;
 use crate::still::{BandBuffers, BandJob, Supersampling, render_supersampled};

@@ -4,7 +4,8 @@
 use super::metadata::{FRAME, RECIPE, SCENE, SOFTWARE, SWEEP};
 use super::{PngStill, PpmStill};
 use crate::Error;
-use crate::raster::{FrameStats, PreparedScene, Viewport};
+use crate::raster::{FrameStats, Viewport};
+use crate::scene::PreparedScene;
 use crate::scene::{Camera, Scene};
 use crate::still::{
     BAND_BUDGET_BYTES, BandJob, Recipe, RowSink, StillSettings, StillStop, stream_still,

@@ -10,25 +10,8 @@
 //! `∞ · 0` gives NaN and the specialised form the true partial.
 
 use super::check::Input;
-use super::compile::{Instr, Program, Source};
 use super::ops::Op;
-
-/// How an instruction runs in lanes that carry partials (∂/∂u, ∂/∂v).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-pub enum DualForm {
-    /// Value and partials by the op's full chain rule.
-    #[default]
-    Full,
-    /// The result does not vary with (u, v): its value alone. Its partial lanes hold zeros,
-    /// set once per evaluation, for the full rules that read them.
-    ValueOnly,
-    /// An arithmetic op (`Op::Add` … `Op::Mod`) whose first operand varies and second does not.
-    FirstVaries,
-    /// An arithmetic op whose second operand varies and first does not.
-    SecondVaries,
-    /// `a * a`: both partial terms are the same product.
-    Square,
-}
+use super::program::{DualForm, Instr, Program, Source};
 
 /// Sets the form of each per-fragment instruction of `program`. The uniform instructions keep
 /// the full rule: they run once per evaluation, and their partials are what the full rule makes.

@@ -6,23 +6,7 @@ use super::ast::{Ast, BinaryOp, ExprId, ExprKind, OutputKind, Stmt, UnaryOp};
 use super::error::{PatternError, Span};
 use super::functions::{self, Function};
 use super::parser::OUTPUT_NAMES;
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Type {
-    Number,
-    Bool,
-    Color,
-}
-
-impl Type {
-    fn describe(self) -> &'static str {
-        match self {
-            Type::Number => "a number",
-            Type::Bool => "a condition (true/false)",
-            Type::Color => "a colour",
-        }
-    }
-}
+use super::value_type::Type;
 
 /// The per-fragment inputs, in slot order.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

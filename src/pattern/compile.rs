@@ -7,58 +7,16 @@
 
 use std::collections::HashMap;
 
-use super::activity::{DualForm, choose_dual_forms};
+use super::activity::choose_dual_forms;
 use super::ast::{BinaryOp, ExprId, ExprKind, UnaryOp};
 use super::check::{Binding, Checked, Input};
 use super::error::PatternError;
 use super::functions::Function;
 use super::ops::{Op, apply};
+use super::program::{DualForm, Instr, Program, Source};
 
 /// Most slots a program may use (each costs a few KiB of scratch).
 pub const MAX_SLOTS: usize = 8192;
-
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Instr {
-    pub op: Op,
-    pub dst: usize,
-    /// Operand slots; ops with fewer operands repeat the first.
-    pub args: [usize; 4],
-    /// How it runs when partials are carried (`activity`).
-    pub form: DualForm,
-}
-
-/// Where a slot's value comes from before the instructions run.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Source {
-    Input(Input),
-    Param(usize),
-    Constant(f64),
-    Computed,
-}
-
-#[derive(Clone, Debug, PartialEq)]
-pub struct Program {
-    pub sources: Vec<Source>,
-    /// Uniform instructions first (they depend only on params, constants and `t`, so they run
-    /// once per call), then the per-fragment ones.
-    pub instrs: Vec<Instr>,
-    /// How many of `instrs` are uniform.
-    pub uniform: usize,
-    /// Output slots: 1 for a height, 2 for a slope, 3 for a colour.
-    pub outputs: Vec<usize>,
-}
-
-impl Program {
-    pub fn uses(&self, input: Input) -> bool {
-        self.sources.contains(&Source::Input(input))
-    }
-
-    /// Whether `f32` lanes are accurate enough for this program: when it does not read `t`
-    /// and calls no fractal or cellular noise (see `Real`).
-    pub fn single_precision(&self) -> bool {
-        !self.uses(Input::T) && !self.instrs.iter().any(|i| i.op.amplifies_rounding())
-    }
-}
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Operand {

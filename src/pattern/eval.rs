@@ -5,11 +5,11 @@
 //! Lanes are `f32` or `f64` (`Real`, which says when each serves). Inputs and outputs are `f32`
 //! for the renderer either way.
 
-use super::activity::DualForm;
 use super::check::Input;
-use super::compile::{Instr, Program, Source};
 use super::dual::{Dual, Scalar};
 use super::ops::{Op, apply, arithmetic};
+use super::program::DualForm;
+use super::program::{Instr, Program, Source};
 use super::real::{LaneStorage, Precision, Real};
 use num_traits::Zero;
 

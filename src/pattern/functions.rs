@@ -1,6 +1,6 @@
 //! The built-in functions of the language: names, arities and argument types.
 
-use super::check::Type;
+use super::value_type::Type;
 
 /// A built-in function; its name in a pattern file is the variant's, in lower case.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, strum::VariantArray, strum::IntoStaticStr)]

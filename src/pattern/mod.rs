@@ -32,9 +32,11 @@ mod ops;
 mod output;
 mod parser;
 mod perlin;
+mod program;
 mod real;
 mod shipped;
 mod time_dependence;
+mod value_type;
 
 use crate::bounded_read::ReadFailure;
 use std::path::Path;
@@ -50,10 +52,10 @@ pub use real::Precision;
 pub use shipped::{BUILTINS, builtin};
 
 use check::Input;
-use compile::Program;
 use dual::Dual;
 use eval::Lane;
 use output::Store;
+use program::Program;
 
 /// Largest pattern source accepted, in bytes.
 pub const MAX_SOURCE_BYTES: usize = 1 << 20;

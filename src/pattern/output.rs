@@ -1,9 +1,9 @@
 //! Output stage: copies a chunk's output slots to the caller's buffer, making non-finite
 //! fragments flat (height and gradient 0, colour black) and counting them.
 
-use super::compile::Program;
 use super::dual::Dual;
 use super::eval::{CHUNK, Lane, slot};
+use super::program::Program;
 use super::real::Real;
 
 /// A bump sample: height B and its gradient (Bu, Bv) = (∂B/∂u, ∂B/∂v). Slope patterns give the

@@ -7,8 +7,8 @@
 //! `t` from reaching further.
 
 use super::check::Input;
-use super::compile::{Program, Source};
 use super::ops::{Op, apply};
+use super::program::{Program, Source};
 
 /// What is known of one slot's value over time.
 #[derive(Clone, Copy, Debug, PartialEq)]

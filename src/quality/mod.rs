@@ -16,8 +16,9 @@ pub use knob_settings::{
 
 use crate::memory_budget::{MemoryUse, OverBudget};
 use crate::pattern::Precision;
-use crate::raster::{Interpolation, PreparedObject, PreparedScene, RenderTarget, Viewport};
+use crate::raster::{Interpolation, RenderTarget, Viewport};
 use crate::scene::Camera;
+use crate::scene::{PreparedObject, PreparedScene};
 use crate::scene::{Scene, Texturing};
 use crate::shade::{
     GradientMethod, LitShader, Neighbours, NormalForm, Reach, ReachShape, Shadowing,

@@ -1,6 +1,6 @@
 //! Binning: which triangles overlap each 64×64 tile, in submission order.
 
-use super::scan::PixelRect;
+use super::pixel_rect::PixelRect;
 use super::setup::{ScreenTriangle, Viewport};
 
 /// Tiles are square; 64×64 keeps a tile's depth and triangle buffers (32 KiB) in L1/L2 cache.

@@ -4,9 +4,11 @@
 
 use super::bin::{TILE_SIZE, TileBins};
 use super::clip::{ClipVertex, clip_triangle, needs_no_clipping};
-use super::pipeline::{Interpolation, PreparedScene, join_in_order};
+use super::interpolation::Interpolation;
 use super::scan::{EdgeWalk, triangle_rows};
+use super::screen_triangles::join_in_order;
 use super::setup::{SampleShift, ScreenTriangle, ShiftSpan, TrianglePlanes, Viewport};
+use crate::scene::PreparedScene;
 use glam::{DVec3, Mat4, Vec2, Vec3};
 use rayon::prelude::*;
 

@@ -1,7 +1,7 @@
 //! What rasterisation hands to shading: the frame's objects and the visible pixels' fragments.
 
-use super::pipeline::PreparedObject;
 use super::sample_rays::SampleRays;
+use crate::scene::{Camera, PreparedObject, PreparedScene};
 use glam::{DVec3, Vec2, Vec3};
 
 /// Per-object state for one frame, in camera-relative space.
@@ -80,4 +80,17 @@ impl<F: Fn(&FrameObject, &Fragment) -> Vec3 + Sync> FragmentShader for PerFragme
         }
         0
     }
+}
+
+/// The objects of a prepared scene placed relative to the camera for one frame.
+pub fn frame_objects<'a>(prepared: &'a PreparedScene, camera: &Camera) -> Vec<FrameObject<'a>> {
+    prepared
+        .objects
+        .iter()
+        .map(|o| FrameObject {
+            prepared: o,
+            origin: (o.surface.origin() - camera.eye).as_vec3(),
+            eye: camera.eye - o.surface.origin(),
+        })
+        .collect()
 }

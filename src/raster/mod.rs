@@ -1,4 +1,6 @@
 //! Camera, clipping, triangle setup, edge-function scan conversion into tiles, framebuffer.
+//! `render` (render.rs) is the front door: a prepared scene, one or more passes
+//! (`RenderTarget`) and a `FragmentShader` in, pixels out.
 //!
 //! The stages follow the GL pipeline: vertices are moved into camera-relative space (in f64, so
 //! scenes far from the origin keep their precision) and projected to clip space; triangles are
@@ -10,16 +12,22 @@ mod bin;
 mod clip;
 mod depth_map;
 mod fragment;
+mod frame_stats;
 mod framebuffer;
-mod pipeline;
+mod interpolation;
+mod pixel_rect;
 mod refine;
+mod render;
+mod render_target;
 mod row_cover;
 mod row_runs;
 mod sample_rays;
 mod scan;
+mod screen_triangles;
 mod setup;
 mod strips;
 mod tile;
+mod tile_rows;
 mod top_first;
 mod view_rays;
 mod wanted_spans;
@@ -28,15 +36,17 @@ mod window;
 pub use bin::{TILE_SIZE, TileBins};
 pub use clip::{ClipVertex, clip_triangle};
 pub use depth_map::{DepthMap, DepthView, render_depth};
-pub use fragment::{Fragment, FragmentShader, FrameObject, PerFragment};
+pub use fragment::{Fragment, FragmentShader, FrameObject, PerFragment, frame_objects};
+pub use frame_stats::FrameStats;
 pub use framebuffer::{Blend, Framebuffer, encode_srgb8, linear_to_srgb8};
-pub use pipeline::{
-    FrameOutput, FrameStats, Interpolation, PreparedObject, PreparedScene, RenderTarget,
-    Srgb8Strips, frame_objects, render, render_pass, screen_triangles,
-};
+pub use interpolation::Interpolation;
+pub use pixel_rect::PixelRect;
 pub use refine::{Refine, Refinement, TileRows};
+pub use render::{render, render_pass};
+pub use render_target::{FrameOutput, RenderTarget, Srgb8Strips};
 pub use sample_rays::SampleRays;
-pub use scan::{PixelRect, scan_shifted, scan_triangle};
+pub use scan::{scan_shifted, scan_triangle};
+pub use screen_triangles::screen_triangles;
 pub use setup::{SUBPIXEL_BITS, SampleShift, ScreenTriangle, ShiftSpan, TrianglePlanes, Viewport};
 pub use strips::STRIP_ROWS;
 pub use view_rays::ViewRays;

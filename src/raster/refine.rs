@@ -1,7 +1,7 @@
 //! Refinement inside a group of passes: the later passes take only the pixels a rule decides
 //! on, tile by tile, from what the earlier passes did.
 
-pub use super::tile::TileRows;
+pub use super::tile_rows::TileRows;
 use glam::Vec3;
 
 /// Which pixels the later passes of a group take, decided tile by tile while the tile is in

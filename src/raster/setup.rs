@@ -1,8 +1,8 @@
 //! Triangle setup: snapped fixed-point vertices, edge functions and the planes of 1/w, u/w, v/w.
 
 use super::clip::ClipVertex;
-use super::pipeline::Interpolation;
-use super::scan::PixelRect;
+use super::interpolation::Interpolation;
+use super::pixel_rect::PixelRect;
 use glam::{DVec3, Vec2, Vec4};
 
 /// Sub-pixel precision of snapped vertex positions: 1/256 of a pixel.

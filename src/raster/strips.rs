@@ -4,12 +4,15 @@
 use super::bin::{TILE_SIZE, TileBins};
 use super::fragment::{FragmentShader, FrameObject};
 use super::framebuffer::{Blend, encode_srgb8};
-use super::pipeline::{Interpolation, RenderTarget, Srgb8Strips, shifted_screen_triangles};
+use super::interpolation::Interpolation;
+use super::pixel_rect::PixelRect;
 use super::refine::{Refine, keep_before, mark_none};
+use super::render_target::{RenderTarget, Srgb8Strips};
 use super::sample_rays::SampleRays;
-use super::scan::PixelRect;
+use super::screen_triangles::shifted_screen_triangles;
 use super::setup::{SampleShift, ScreenTriangle, ShiftSpan, Viewport};
-use super::tile::{StripOutput, TileBuffers, TileFrame, TileRows, any_wanted};
+use super::tile::{StripOutput, TileBuffers, TileFrame};
+use super::tile_rows::{TileRows, any_wanted};
 use super::view_rays::ViewRays;
 use super::wanted_spans::WantedSpans;
 use glam::Vec3;

@@ -4,10 +4,11 @@
 use super::bin::TILE_SIZE;
 use super::fragment::{Fragment, FragmentShader, FrameObject};
 use super::framebuffer::{Blend, encode_srgb8, linear_to_srgb8};
+use super::pixel_rect::PixelRect;
 use super::row_cover::{COVER_LANES, CoverPath, RowNearest, padded_len};
 use super::row_runs::{PixelKind, RowRuns};
 use super::sample_rays::SampleRays;
-use super::scan::{PixelRect, triangle_rows};
+use super::scan::triangle_rows;
 use super::setup::{AttributePlane, SampleShift, ScreenTriangle};
 use super::wanted_spans::WantedSpans;
 use glam::{Vec2, Vec3};
@@ -172,32 +173,6 @@ impl StripOutput<'_> {
             }
         }
     }
-}
-
-/// Where a tile's pixels sit in a strip of `width`-pixel rows starting at row `first_row`.
-pub struct TileRows<'r> {
-    pub width: u32,
-    pub first_row: u32,
-    pub rect: &'r PixelRect,
-}
-
-impl TileRows<'_> {
-    /// The strip's pixels of each of the rect's rows, top to bottom.
-    pub fn each(&self) -> impl Iterator<Item = Range<usize>> + '_ {
-        let n = (self.rect.x1 - self.rect.x0 + 1) as usize;
-        (self.rect.y0..=self.rect.y1).map(move |y| {
-            let start = ((y - self.first_row) * self.width + self.rect.x0) as usize;
-            start..start + n
-        })
-    }
-}
-
-/// Whether `mask` (over the strip; `None`: every pixel) wants any pixel of the tile at `rows`.
-pub(super) fn any_wanted(mask: Option<&[bool]>, rows: &TileRows) -> bool {
-    let Some(mask) = mask else {
-        return true;
-    };
-    rows.each().any(|pixels| mask[pixels].contains(&true))
 }
 
 /// Most of a frame is background: a grey one is written as plain f32s, which compiles to wide
@@ -486,8 +461,9 @@ fn same_triangle(slots: &[u32]) -> impl Iterator<Item = (u32, Range<usize>)> + '
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::raster::Interpolation;
+    use crate::raster::tile_rows::TileRows;
     use crate::raster::clip::ClipVertex;
-    use crate::raster::pipeline::Interpolation;
     use crate::raster::scan::scan_triangle;
     use crate::raster::setup::{ShiftSpan, TrianglePlanes, Viewport};
     use glam::Vec4;

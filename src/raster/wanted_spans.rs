@@ -3,9 +3,10 @@
 //! every pixel of each tile for them was a large share of the still's work.
 
 use super::bin::TILE_SIZE;
+use super::pixel_rect::PixelRect;
 use super::row_runs::{RowBits, true_bits};
-use super::scan::{PixelRect, RowSpan};
-use super::tile::TileRows;
+use super::scan::RowSpan;
+use super::tile_rows::TileRows;
 use std::ops::RangeInclusive;
 
 /// The wanted pixels of a tile's rows (from the first row of its rect).

@@ -1,10 +1,11 @@
 //! The reference renderer: one exact ray per pixel through the same shader as the rasterizer.
 
 use crate::raster::{
-    Fragment, FragmentShader, FrameObject, Framebuffer, PreparedScene, SampleRays, ViewRays,
-    Viewport, frame_objects,
+    Fragment, FragmentShader, FrameObject, Framebuffer, SampleRays, ViewRays, Viewport,
+    frame_objects,
 };
 use crate::scene::Camera;
+use crate::scene::PreparedScene;
 use crate::shade::nearest_true_hit;
 use crate::surface::{Hit, uv_derivatives};
 use glam::{DVec2, DVec3, Vec3};

@@ -1,8 +1,8 @@
 //! The reference's fragment program: the `exact` preset's shading, with exact shadow rays.
 
 use crate::quality::Quality;
-use crate::raster::PreparedScene;
 use crate::scene::Camera;
+use crate::scene::PreparedScene;
 use crate::shade::{LitShader, Shadowing};
 use crate::shadow::ShadowRays;
 use std::sync::Arc;

@@ -10,6 +10,7 @@ mod file;
 mod material;
 mod material_choice;
 mod model_stage;
+mod prepared_scene;
 mod presets;
 mod quality_table;
 mod torus_file;
@@ -28,6 +29,7 @@ pub use material::{
 };
 pub use material_choice::{IMAGE_BUMP_STRENGTH, MaterialChoice};
 pub use model_stage::ModelSource;
+pub use prepared_scene::{PreparedObject, PreparedScene};
 pub use presets::{PRESET_NAMES, preset, preset_file};
 pub use quality_table::{KnobPlace, KnobSetting, QualityTable, written_table};
 

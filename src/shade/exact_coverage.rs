@@ -5,7 +5,7 @@
 //! behind, or the background), and one whose ray meets a neighbouring object's true surface
 //! first (where two objects touch or cut each other) becomes that neighbour's.
 
-use super::exact_point::{ExactScratch, true_hits_along};
+use super::exact_hits::{ExactScratch, true_hits_along};
 use crate::raster::{Fragment, FrameObject, SampleRays};
 use crate::surface::{Hit, Ray, Surface, TrueHit, intersect};
 use glam::{DVec3, Vec3};

@@ -4,9 +4,10 @@
 //! coverage (`exact_coverage`) the fragment may move to another surface, or to none.
 
 use super::exact_coverage::{Neighbours, cast_dropped, nearer_neighbours};
+use super::exact_hits::{DerivativeScratch, ExactScratch, true_hits_along};
 use crate::raster::{Fragment, FrameObject, SampleRays};
-use crate::surface::{Frames, Surface, TrueHit, uv_derivatives};
-use glam::{DVec3, Vec2, Vec3};
+use crate::surface::{Frames, Surface, uv_derivatives};
+use glam::Vec2;
 
 /// Where a fragment of a curved surface is shaded.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
@@ -32,23 +33,6 @@ pub struct ExactPoints {
     pub reassigned: usize,
     /// With exact coverage: fragments whose ray meets no true surface at all.
     pub background: usize,
-}
-
-/// Working arrays for `exact_fragments`, reused batch to batch.
-#[derive(Default)]
-pub struct ExactScratch {
-    pub(super) depths: Vec<f32>,
-    pub(super) directions: Vec<DVec3>,
-    pub(super) hits: Vec<TrueHit>,
-    pub(super) found: Vec<bool>,
-    /// By fragment of the batch: whether it moved (its derivatives are then recomputed).
-    pub(super) moved: Vec<bool>,
-    /// By fragment: its ray missed its own true surface (cast against every object, with
-    /// exact coverage).
-    pub(super) pending: Vec<bool>,
-    /// Fragments of a run tested against one neighbour.
-    pub(super) candidates: Vec<usize>,
-    pub(super) derivatives: DerivativeScratch,
 }
 
 /// Moves each fragment of a curved surface, in place, to its ray's true hit: (u,v) and depth,
@@ -124,32 +108,6 @@ fn move_run(
     moved
 }
 
-/// `surface`'s true hits along the rays of `run`'s fragments, near their depths, into
-/// `scratch.hits` and `scratch.found`.
-pub(super) fn true_hits_along<'f>(
-    surface: &Surface,
-    eye: DVec3,
-    rays: &SampleRays,
-    run: impl ExactSizeIterator<Item = &'f Fragment> + Clone,
-    scratch: &mut ExactScratch,
-) {
-    let count = run.len();
-    let ExactScratch {
-        depths,
-        directions,
-        hits,
-        found,
-        ..
-    } = scratch;
-    directions.clear();
-    directions.extend(run.clone().map(|f| rays.exact_through(f.x, f.y)));
-    depths.clear();
-    depths.extend(run.map(|f| f.depth));
-    hits.resize(count, TrueHit::default());
-    found.resize(count, false);
-    surface.true_hits(eye, directions, depths, hits, found);
-}
-
 /// The (u,v) derivatives of each fragment of `group` (one object's, by index into `fragments`)
 /// that `moved` marks, from ray differentials at its true hit, whose frame is `frames` (by
 /// position in the group), as the reference computes them.
@@ -201,13 +159,6 @@ pub(super) fn true_hit_derivatives(
             (fragment.duv_dx, fragment.duv_dy) = (du, dv);
         }
     }
-}
-
-/// Working arrays for `true_hit_derivatives`, reused group to group.
-#[derive(Default)]
-pub(super) struct DerivativeScratch {
-    rays: Vec<(Vec3, f32)>,
-    derivatives: Vec<(Vec2, Vec2)>,
 }
 
 /// Where the run of consecutive fragments of one object that begins at `start` ends (a tile's

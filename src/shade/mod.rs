@@ -6,6 +6,7 @@ mod bump;
 mod bump_stage;
 mod colour_stage;
 mod exact_coverage;
+mod exact_hits;
 mod exact_point;
 mod gradient;
 mod lanes;
@@ -23,7 +24,8 @@ pub use bake::{
 };
 pub use bump::{NormalForm, bumped_normal};
 pub use exact_coverage::{Neighbours, Reach, ReachShape, nearest_true_hit};
-pub use exact_point::{ExactPoints, ExactScratch, SurfacePointSource, exact_fragments};
+pub use exact_hits::ExactScratch;
+pub use exact_point::{ExactPoints, SurfacePointSource, exact_fragments};
 pub use gradient::GradientMethod;
 pub use lighting::{FrameLights, blinn_phong, facing_sign};
 pub use scene_shader::{LitShader, render_lit};

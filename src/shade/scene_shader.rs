@@ -16,10 +16,10 @@ use super::shadowing::Shadowing;
 use super::vertex_normals::VertexNormals;
 use crate::pattern::Precision;
 use crate::raster::{
-    Fragment, FragmentShader, FrameObject, FrameStats, Framebuffer, PreparedScene, RenderTarget,
-    SampleRays,
+    Fragment, FragmentShader, FrameObject, FrameStats, Framebuffer, RenderTarget, SampleRays,
 };
 use crate::scene::Camera;
+use crate::scene::PreparedScene;
 use crate::scene::{BumpSource, Scene, Texturing};
 use crate::surface::{Frames, ModelSurface, Surface, Vectors};
 use glam::Vec3;
@@ -431,7 +431,8 @@ pub fn render_lit(prepared: &PreparedScene, target: &RenderTarget) -> (Framebuff
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::raster::{PreparedScene, RenderTarget, Viewport, frame_objects, render_pass};
+    use crate::raster::{RenderTarget, Viewport, frame_objects, render_pass};
+    use crate::scene::PreparedScene;
     use crate::shade::colour_stage::over_material;
     use crate::texture::{Mapping, SurfaceUv, Texel, Wrap};
     use glam::{Vec2, Vec4};

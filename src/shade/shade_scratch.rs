@@ -1,7 +1,7 @@
 //! A shading thread's working memory, reused for every batch: the arrays each stage of the
 //! scene's fragment program (colour, bump, lighting) reads and writes.
 
-use super::exact_point::ExactScratch;
+use super::exact_hits::ExactScratch;
 use super::pattern_batch::PatternBatch;
 use crate::raster::Fragment;
 use crate::surface::Frames;

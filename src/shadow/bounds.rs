@@ -1,8 +1,8 @@
 //! Boxes around the scene and around the part of it the camera sees: what shadow maps are fitted
 //! to. Numerics: f64 world coordinates, as the camera's eye is kept.
 
-use crate::raster::PreparedScene;
 use crate::scene::Camera;
+use crate::scene::PreparedScene;
 use glam::{DVec3, Vec3};
 
 /// An axis-aligned box in world space.

@@ -3,7 +3,8 @@
 //! view without any change to what casts or receives a shadow.
 
 use super::{ShadowMaps, ShadowSettings};
-use crate::raster::{PreparedScene, Viewport};
+use crate::raster::Viewport;
+use crate::scene::PreparedScene;
 use crate::scene::{Camera, Light};
 use crate::surface::Surface;
 use std::sync::{Arc, Mutex};

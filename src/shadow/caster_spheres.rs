@@ -6,8 +6,8 @@
 //! (structure-of-arrays loops, compiled to SIMD over points).
 
 use super::bounds::Bounds;
-use crate::raster::PreparedScene;
 use crate::scene::Light;
+use crate::scene::PreparedScene;
 use crate::surface::Surface;
 use glam::{DVec3, Vec3};
 

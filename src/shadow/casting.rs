@@ -2,7 +2,7 @@
 //! fitted to them alone (a floor under everything casts nothing and takes no texels).
 
 use super::bounds::Bounds;
-use crate::raster::PreparedScene;
+use crate::scene::PreparedScene;
 use crate::scene::{Light, Scene};
 use crate::surface::Surface;
 use glam::{DVec3, Vec3};

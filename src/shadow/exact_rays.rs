@@ -4,7 +4,7 @@
 
 use super::caster_spheres::MOST_SPHERES;
 use super::casting::{can_shadow, can_shadow_itself};
-use crate::raster::PreparedScene;
+use crate::scene::PreparedScene;
 use crate::scene::{Camera, Light, Scene};
 use crate::shade::Shadowing;
 use crate::surface::Surface;

@@ -27,7 +27,8 @@ use exact_rays::GRAZING;
 pub use exact_rays::{ShadowRays, rays_cheaper_than_maps};
 pub use filter::DepthFilter;
 
-use crate::raster::{DepthMap, PreparedScene, Viewport, render_depth};
+use crate::raster::{DepthMap, Viewport, render_depth};
+use crate::scene::PreparedScene;
 use crate::scene::{Camera, Light, Scene};
 use crate::shade::Shadowing;
 use caster_spheres::{CasterSpheres, SCREEN_LANES, Screened};

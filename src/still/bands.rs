@@ -6,10 +6,10 @@ use super::refine_rule::RefineRule;
 use super::samples::Supersampling;
 use crate::raster::{
     Blend, FragmentShader, FrameOutput, FrameStats, Framebuffer, ImageWindow, Interpolation,
-    PreparedScene, Refinement, RenderTarget, ScreenTriangle, Srgb8Strips, TILE_SIZE, Viewport,
-    render,
+    Refinement, RenderTarget, ScreenTriangle, Srgb8Strips, TILE_SIZE, Viewport, render,
 };
 use crate::scene::Camera;
+use crate::scene::PreparedScene;
 use glam::{Vec2, Vec3};
 use std::ops::Range;
 

@@ -3,7 +3,7 @@
 //! ready. A writer thread of its own made a third busy thread on two cores: the scheduler let
 //! it fall a few milliseconds behind, which it then caught up alone while the cores idled.
 
-use super::stream::RowSink;
+use super::row_sink::RowSink;
 use std::collections::BTreeMap;
 use std::sync::{Mutex, MutexGuard, PoisonError, TryLockError};
 

@@ -6,6 +6,7 @@ mod contrast;
 mod in_order;
 mod recipe;
 mod refine_rule;
+mod row_sink;
 mod samples;
 mod saved_view;
 mod stream;
@@ -19,6 +20,7 @@ pub use recipe::{
     recipe_hash, source_directory,
 };
 pub use refine_rule::RefineRule;
+pub use row_sink::RowSink;
 pub use samples::{RefiningOrder, ResolveFilter, Supersampling};
 pub use saved_view::saved_view;
-pub use stream::{RowSink, StillStop, stream_still};
+pub use stream::{StillStop, stream_still};

@@ -108,7 +108,7 @@ impl StillSettings {
         &self,
         scene: Scene,
         camera: &Camera,
-    ) -> Result<crate::raster::PreparedScene, crate::memory_budget::OverBudget> {
+    ) -> Result<crate::scene::PreparedScene, crate::memory_budget::OverBudget> {
         let (width, height) = self.size;
         self.prepare_with_output(scene, camera, super::bands::band_bytes(width, height))
     }
@@ -119,7 +119,7 @@ impl StillSettings {
         scene: Scene,
         camera: &Camera,
         output_bytes: u64,
-    ) -> Result<crate::raster::PreparedScene, crate::memory_budget::OverBudget> {
+    ) -> Result<crate::scene::PreparedScene, crate::memory_budget::OverBudget> {
         let (width, height) = self.size;
         let full = crate::raster::Viewport { width, height };
         self.quality.prepare(scene, camera, full, output_bytes)

@@ -4,14 +4,9 @@
 
 use super::bands::{BandBuffers, BandJob, band_rows};
 use super::in_order::{InOrderWriter, SpareRows};
+use super::row_sink::RowSink;
 use crate::raster::{FragmentShader, FrameStats, STRIP_ROWS, Srgb8Strips};
 use std::ops::Range;
-
-/// Where finished rows go (a PNG or PPM encoder): 3 bytes per pixel, top row first. `Send`, so
-/// whichever rendering thread finishes the next strip can write it.
-pub trait RowSink: Send {
-    fn write_rows(&mut self, rgb: &[u8]) -> Result<(), String>;
-}
 
 /// Why a still stopped before its last row.
 #[derive(Debug, PartialEq, Eq)]

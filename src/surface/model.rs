@@ -11,23 +11,14 @@
 //! surface's local geometry is; chart coordinates are f32 and stay under √(triangles) + 1, so a
 //! million triangles keep barycentrics to 1e-4.
 
+use super::corner::Corner;
 use super::grid_shape::GridShape;
 use super::parametric::Parametric;
 use super::ray_hits::{Hit, Ray};
 use super::{Domain, Frame, Mesh, Tessellation, normalize_or};
-use glam::{DVec3, Vec2, Vec3, Vec4};
+use glam::{DVec3, Vec2, Vec3};
 use std::ops::RangeInclusive;
 use std::sync::Arc;
-
-/// One corner of a triangle: its point (relative to the anchor), unit normal, MikkTSpace tangent
-/// (w: the bitangent's sign) and texture (u,v), the latter already scaled to pattern units.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Corner {
-    pub p: Vec3,
-    pub n: Vec3,
-    pub tangent: Vec4,
-    pub uv: Vec2,
-}
 
 /// A loaded model: three corners a triangle, its bounding volume hierarchy, and where it came
 /// from.
@@ -348,6 +339,7 @@ impl TexturePoint {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use glam::Vec4;
 
     /// A tetrahedron's corners, each face counter-clockwise from outside (reversed: inside).
     fn tetrahedron(reversed: bool) -> Vec<Corner> {

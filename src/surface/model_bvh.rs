@@ -3,7 +3,7 @@
 //! longest axis; leaves hold up to `LEAF` triangles. Rays are f64 relative to the anchor and
 //! meet the triangles by Möller–Trumbore in f64.
 
-use super::model::Corner;
+use super::corner::Corner;
 use glam::{DVec3, Vec3};
 use std::ops::RangeInclusive;
 

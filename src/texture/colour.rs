@@ -2,24 +2,15 @@
 
 use std::path::Path;
 
-use glam::{Vec2, Vec4};
+use glam::Vec2;
 
 use super::encoding::Encoding;
 use super::error::TextureError;
 use super::load::{ImageInfo, Limits, LoadedImage, load_image};
 use super::mip::MipChain;
 use super::sampler::{Footprint, Sampler};
+use super::texel::Texel;
 use super::texel_grid::TexelGrid;
-
-/// One texel: linear-light RGB with premultiplied alpha, `f32` per channel.
-///
-/// Why this type: shading and filtering add light, so texels are stored already
-/// sRGB-decoded (linear). 8-bit sRGB needs ~12 bits once linear to keep its darks, so
-/// `u8` is out; `u16` would fit but costs a conversion per tap in the hot path, while
-/// `f32` in a `Vec4` makes a bilinear blend three SIMD lerps. Alpha is premultiplied
-/// so averaging (mip levels, bilinear) never bleeds the colour of transparent texels
-/// into their neighbours. The price is 16 bytes per texel, counted by `Limits`.
-pub type Texel = Vec4;
 
 /// A colour image ready for sampling.
 #[derive(Debug, Clone)]

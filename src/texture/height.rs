@@ -4,12 +4,12 @@ use std::path::Path;
 
 use glam::{Mat2, Vec2, Vec3, Vec4};
 
-use super::colour::Texel;
 use super::encoding::Encoding;
 use super::error::TextureError;
 use super::load::{Limits, load_image};
 use super::mip::MipChain;
 use super::sampler::Footprint;
+use super::texel::Texel;
 use super::texel_grid::TexelGrid;
 use super::wrap::Wrap;
 

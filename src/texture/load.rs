@@ -10,10 +10,10 @@ use crate::bounded_read::{ReadFailure, read_bounded};
 use glam::{Vec3, Vec4};
 use image::{DynamicImage, ImageDecoder, ImageError, ImageFormat, ImageReader};
 
-use super::colour::Texel;
 use super::encoding::Encoding;
 use super::error::{Reason, TextureError};
 use super::plain_pnm;
+use super::texel::Texel;
 use super::texel_grid::TexelGrid;
 
 /// Bounds on what a file may make us allocate. All are checked from the header.

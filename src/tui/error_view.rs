@@ -4,8 +4,9 @@
 //! same reference `bumpwork bench` measures against.
 
 use crate::quality::Quality;
-use crate::raster::{FrameStats, Framebuffer, PreparedScene, RenderTarget, render_pass};
+use crate::raster::{FrameStats, Framebuffer, RenderTarget, render_pass};
 use crate::reference::{error_heat_map, exact_shader, metrics::psnr, render_reference};
+use crate::scene::PreparedScene;
 use crate::shadow::ShadowMaps;
 use std::sync::Arc;
 

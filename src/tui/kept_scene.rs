@@ -6,7 +6,7 @@ use super::image_shelf::ImageShelf;
 use super::orbit::Orbit;
 use super::quality::QualityPreset;
 use crate::quality::Quality;
-use crate::raster::PreparedScene;
+use crate::scene::PreparedScene;
 use crate::watch::Reloader;
 
 pub struct KeptScene {

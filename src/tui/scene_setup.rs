@@ -7,7 +7,8 @@ use super::quality::QualityPreset;
 use crate::Error;
 use crate::overrides::{Override, apply_to_quality, apply_where_known};
 use crate::quality::Quality;
-use crate::raster::{Framebuffer, PreparedScene, Viewport};
+use crate::raster::{Framebuffer, Viewport};
+use crate::scene::PreparedScene;
 use crate::scene::{MaterialChoice, Scene};
 
 /// The picture size adaptive tessellation plans for: about a 160×50-cell terminal in half

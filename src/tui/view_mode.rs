@@ -3,7 +3,8 @@
 
 use super::error_view::render_error_view;
 use crate::quality::Quality;
-use crate::raster::{FrameStats, Framebuffer, PreparedScene, RenderTarget, render_pass};
+use crate::raster::{FrameStats, Framebuffer, RenderTarget, render_pass};
+use crate::scene::PreparedScene;
 use crate::shade::ShaderMode;
 use crate::shadow::ShadowCache;
 

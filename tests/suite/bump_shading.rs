@@ -1,6 +1,7 @@
 //! Bump mapping and textures as the renderer applies them: properties of whole frames.
 
-use bumpwork::raster::{Framebuffer, PreparedScene, RenderTarget, Viewport};
+use bumpwork::raster::{Framebuffer, RenderTarget, Viewport};
+use bumpwork::scene::PreparedScene;
 use bumpwork::scene::{Light, Scene, parse_scene, preset};
 use bumpwork::shade::render_lit;
 use bumpwork::surface::Tessellation;

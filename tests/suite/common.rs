@@ -3,10 +3,10 @@
 
 use bumpwork::raster::{
     ClipVertex, Fragment, FrameObject, Framebuffer, Interpolation, PerFragment, PixelRect,
-    PreparedScene, RenderTarget, SampleShift, ScreenTriangle, ShiftSpan, TrianglePlanes, Viewport,
-    scan_shifted,
+    RenderTarget, SampleShift, ScreenTriangle, ShiftSpan, TrianglePlanes, Viewport, scan_shifted,
 };
 use bumpwork::scene::Camera;
+use bumpwork::scene::PreparedScene;
 use bumpwork::scene::Scene;
 use bumpwork::surface::Tessellation;
 use glam::{Vec2, Vec3, Vec4};
@@ -104,7 +104,7 @@ pub fn camera(eye: [f64; 3], target: [f64; 3], fov: f32) -> Camera {
 
 /// One pass rendered into a new framebuffer.
 pub fn render_with(
-    prepared: &bumpwork::raster::PreparedScene,
+    prepared: &bumpwork::scene::PreparedScene,
     target: &bumpwork::raster::RenderTarget,
     shader: &impl bumpwork::raster::FragmentShader,
 ) -> (bumpwork::raster::Framebuffer, bumpwork::raster::FrameStats) {
@@ -115,7 +115,7 @@ pub fn render_with(
 
 /// One pass rendered into `framebuffer`.
 pub fn render_into(
-    prepared: &bumpwork::raster::PreparedScene,
+    prepared: &bumpwork::scene::PreparedScene,
     target: &bumpwork::raster::RenderTarget,
     shader: &impl bumpwork::raster::FragmentShader,
     framebuffer: &mut bumpwork::raster::Framebuffer,

@@ -7,10 +7,11 @@
 use crate::common::render_with;
 use bumpwork::quality::{Coverage, Quality};
 use bumpwork::raster::{
-    Fragment, FragmentShader, FrameObject, PerFragment, PreparedScene, RenderTarget, SampleRays,
-    ViewRays, Viewport, frame_objects,
+    Fragment, FragmentShader, FrameObject, PerFragment, RenderTarget, SampleRays, ViewRays,
+    Viewport, frame_objects,
 };
 use bumpwork::reference::{cast_pixel, render_reference};
+use bumpwork::scene::PreparedScene;
 use bumpwork::scene::{Camera, Material, Object, Scene, preset};
 use bumpwork::shade::{ExactScratch, Neighbours, SurfacePointSource, exact_fragments};
 use bumpwork::surface::{AxisBasis, Cone, Paraboloid, Sphere, Surface, Tessellation, Torus, Wave};

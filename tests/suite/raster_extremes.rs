@@ -1,7 +1,8 @@
 //! Extremes: zero-area triangles, 1×1 and 1×N outputs, scenes translated by 1e6.
 
 use crate::common::*;
-use bumpwork::raster::{Framebuffer, PreparedScene, RenderTarget, Viewport};
+use bumpwork::raster::{Framebuffer, RenderTarget, Viewport};
+use bumpwork::scene::PreparedScene;
 use bumpwork::scene::{Light, PRESET_NAMES, Scene, preset};
 use bumpwork::shade::render_lit;
 use bumpwork::surface::Tessellation;

@@ -5,9 +5,10 @@
 
 use crate::common::render_into;
 use bumpwork::raster::{
-    Blend, FrameOutput, Framebuffer, ImageWindow, PreparedScene, Refinement, RenderTarget,
-    STRIP_ROWS, Srgb8Strips, Viewport, render,
+    Blend, FrameOutput, Framebuffer, ImageWindow, Refinement, RenderTarget, STRIP_ROWS,
+    Srgb8Strips, Viewport, render,
 };
+use bumpwork::scene::PreparedScene;
 use bumpwork::scene::{Scene, preset};
 use bumpwork::shade::LitShader;
 use bumpwork::shade::render_lit;

@@ -4,11 +4,12 @@
 
 use crate::common::render_with;
 use crate::common::*;
-use bumpwork::raster::{Fragment, FrameObject, ImageWindow, PerFragment, PreparedScene};
+use bumpwork::raster::{Fragment, FrameObject, ImageWindow, PerFragment};
 use bumpwork::raster::{
     PixelRect, RenderTarget, SampleShift, ShiftSpan, Viewport, frame_objects, scan_shifted,
     screen_triangles,
 };
+use bumpwork::scene::PreparedScene;
 use bumpwork::scene::{Light, Material, Object, Scene};
 use bumpwork::surface::{Sphere, Surface, Tessellation};
 use glam::{DVec3, Vec2, Vec3};

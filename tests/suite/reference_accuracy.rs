@@ -4,8 +4,9 @@
 
 use crate::common::render_with;
 use crate::reference_support::*;
-use bumpwork::raster::{Fragment, FrameObject, PerFragment, PreparedScene, RenderTarget};
+use bumpwork::raster::{Fragment, FrameObject, PerFragment, RenderTarget};
 use bumpwork::reference::render_reference;
+use bumpwork::scene::PreparedScene;
 use bumpwork::scene::preset;
 use bumpwork::surface::Tessellation;
 use glam::Vec3;

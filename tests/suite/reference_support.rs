@@ -2,9 +2,10 @@
 #![allow(dead_code)]
 
 use crate::common::render_with;
-use bumpwork::raster::{Framebuffer, PreparedScene, RenderTarget, Viewport};
+use bumpwork::raster::{Framebuffer, RenderTarget, Viewport};
 use bumpwork::reference::{FrameError, ShadedAndNormals, render_reference};
 use bumpwork::scene::Camera;
+use bumpwork::scene::PreparedScene;
 use bumpwork::scene::Scene;
 use bumpwork::shade::LitShader;
 use bumpwork::surface::Tessellation;

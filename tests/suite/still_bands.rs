@@ -4,9 +4,10 @@
 use crate::common::render_with;
 use bumpwork::raster::{
     Fragment, FrameObject, FrameStats, Framebuffer, ImageWindow, Interpolation, PerFragment,
-    PreparedScene, RenderTarget, Viewport,
+    RenderTarget, Viewport,
 };
 use bumpwork::scene::Camera;
+use bumpwork::scene::PreparedScene;
 use bumpwork::scene::{Material, Object, Scene};
 use bumpwork::still::{
     BandBuffers, BandJob, ResolveFilter, RowSink, Supersampling, render_supersampled, stream_still,

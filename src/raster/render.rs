@@ -1,0 +1,175 @@
+//! The rasterizer's front door: `render` turns a prepared scene into pixels for one or more
+//! passes, with any fragment program: transform, cull, clip and set up the triangles
+//! (`screen_triangles`), bin them to tiles, then tile by tile resolve visibility and run the
+//! program once for each visible pixel (`strips`, `tile`).
+
+use super::fragment::{FragmentShader, frame_objects};
+use super::frame_stats::FrameStats;
+use super::framebuffer::{Blend, Framebuffer};
+use super::refine::Refinement;
+use super::render_target::{FrameOutput, RenderTarget};
+use super::setup::Viewport;
+use super::strips::{Pass, STRIP_ROWS, SetUp, StripBuffers, StripJob};
+use super::tile::TileBuffers;
+use super::top_first::map_top_first;
+use crate::scene::PreparedScene;
+
+/// Renders `passes` of a frame with any fragment program into `output`: transform, cull, clip,
+/// set up, bin, then per tile resolve visibility and run the program once for each visible
+/// pixel. Every pixel ends shaded or background, so no separate clear pass is needed; tiles that
+/// were all background in the last render into a framebuffer, and still are, are not
+/// rewritten.
+///
+/// Several passes come out as rendering them one after another would, to the bit, but tile by
+/// tile: every pass of a tile before the next tile, so the tile's pixels (which supersampling
+/// passes add into) and the texels its fragments read stay in cache from pass to pass. The
+/// passes share the viewport, camera, mask, window position and interpolation, so the triangles
+/// are set up once for them all; they differ in where they sample (the window's offset),
+/// footprint, blend and depth writes. With a `refinement`, the passes from its `from_pass` on
+/// render only the pixels the earlier passes moved (see `Refinement`), decided tile by tile as
+/// each tile's earlier passes finish.
+pub fn render(
+    prepared: &PreparedScene,
+    passes: &[RenderTarget],
+    shader: &impl FragmentShader,
+    output: FrameOutput,
+    refinement: Option<Refinement>,
+) -> FrameStats {
+    let targets = passes;
+    let Some(last) = targets.last() else {
+        return FrameStats::default();
+    };
+    assert_renderable_together(targets, refinement.as_ref());
+    let (framebuffer, finished_strips) = match output {
+        FrameOutput::Framebuffer(framebuffer) => (Some(framebuffer), None),
+        FrameOutput::FramebufferAndStrips(framebuffer, strips) => (Some(framebuffer), Some(strips)),
+        FrameOutput::Strips(strips) => (None, Some(strips)),
+    };
+    if framebuffer.is_none() {
+        let alone = targets.len() == 1 && refinement.is_none();
+        let replaces = last.mask.is_none() && last.blend == Blend::Replace && !last.writes_depth;
+        assert!(
+            alone && replaces,
+            "strips alone come of one unmasked pass that keeps no depth"
+        );
+    }
+    let viewport = last.viewport;
+    let objects = frame_objects(prepared, last.camera);
+    let derivatives: Vec<bool> = objects
+        .iter()
+        .map(|o| shader.reads_derivatives(o))
+        .collect();
+    let set_up = SetUp::new(&objects, targets, last);
+    let passes: Vec<Pass<_>> = targets
+        .iter()
+        .map(|target| Pass::new(&objects, &set_up, target, shader, &derivatives))
+        .collect();
+    let tiles_x = passes[0].bins.tiles_x;
+    let strips_y = viewport.height.div_ceil(STRIP_ROWS);
+    let job = StripJob {
+        passes: &passes,
+        last,
+        viewport,
+        background: prepared.scene.background,
+        tiles_x,
+        finished_strips,
+        bytes_only: framebuffer.is_none(),
+        refinement: refinement.as_ref().map(|r| r.rule),
+    };
+    let mut no_framebuffer_known = Vec::new();
+    let (strips, known_background) = match framebuffer {
+        None => {
+            no_framebuffer_known.resize((tiles_x * strips_y) as usize, false);
+            let nothing = (0..strips_y).map(|_| (&mut [][..], &mut [][..])).collect();
+            (nothing, &mut no_framebuffer_known[..])
+        }
+        Some(framebuffer) => {
+            framebuffer.resize(viewport.width, viewport.height);
+            let (color, depth, known) = framebuffer.tiles_mut((tiles_x, strips_y), job.background);
+            let pixels = (STRIP_ROWS * viewport.width) as usize;
+            let strips: Vec<_> = color
+                .chunks_mut(pixels)
+                .zip(depth.chunks_mut(pixels))
+                .collect();
+            (strips, known)
+        }
+    };
+    let mut refined = refined_strips(refinement, viewport);
+    refined.resize_with(strips.len(), || &mut []);
+    let strips: Vec<_> = strips
+        .into_iter()
+        .zip(known_background.chunks_mut(tiles_x.max(1) as usize))
+        .zip(refined)
+        .collect();
+    let (fragments, flattened) = map_top_first(
+        strips,
+        // Once per thread, not per strip: the buffers keep their grown capacity.
+        || (TileBuffers::default(), shader.scratch()),
+        |(tile, scratch), index, (((color, depth), known_background), refined)| {
+            let strip = StripBuffers {
+                color,
+                depth,
+                known_background,
+                refined,
+            };
+            job.render(index as u32, strip, tile, scratch)
+        },
+    )
+    .into_iter()
+    .fold((0, 0), |a, b| (a.0 + b.0, a.1 + b.1));
+    FrameStats {
+        triangles: prepared.triangle_count(),
+        rasterized_triangles: passes.iter().map(|p| p.triangles.len()).sum(),
+        fragments,
+        flattened,
+    }
+}
+
+/// Checks that `targets` can be rendered as one group: they share the last one's viewport,
+/// camera, mask, window and interpolation, and a refinement decides at one of them.
+fn assert_renderable_together(targets: &[RenderTarget], refinement: Option<&Refinement>) {
+    let last = targets.last().expect("a pass");
+    assert!(
+        refinement.is_none_or(|r| r.rule.first_decided_pass() < targets.len()),
+        "a refinement starts at one of the group's passes"
+    );
+    let shared = |t: &RenderTarget| {
+        t.viewport == last.viewport
+            && std::ptr::eq(t.camera, last.camera)
+            && t.mask.map(<[bool]>::as_ptr) == last.mask.map(<[bool]>::as_ptr)
+            && (t.window.full, t.window.x0, t.window.y0)
+                == (last.window.full, last.window.x0, last.window.y0)
+            && t.interpolation == last.interpolation
+    };
+    assert!(
+        targets.iter().all(shared),
+        "passes rendered together share viewport, camera, mask, window and interpolation"
+    );
+}
+
+/// The refinement's record of refined pixels, sized to the viewport and cut into strips (none
+/// without a refinement).
+fn refined_strips<'r>(
+    refinement: Option<Refinement<'r>>,
+    viewport: Viewport,
+) -> Vec<&'r mut [bool]> {
+    let Some(refinement) = refinement else {
+        return Vec::new();
+    };
+    let pixels = viewport.width as usize * viewport.height as usize;
+    crate::huge_pages::resize_for_overwrite(refinement.refined, pixels);
+    let rows = (STRIP_ROWS * viewport.width).max(1) as usize;
+    refinement.refined.chunks_mut(rows).collect()
+}
+
+/// One pass of `target` into `framebuffer` (resized to it), depth kept: `render` for the
+/// commonest case.
+pub fn render_pass(
+    prepared: &PreparedScene,
+    target: &RenderTarget,
+    shader: &impl FragmentShader,
+    framebuffer: &mut Framebuffer,
+) -> FrameStats {
+    let output = FrameOutput::Framebuffer(framebuffer);
+    render(prepared, std::slice::from_ref(target), shader, output, None)
+}
