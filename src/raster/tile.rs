@@ -462,10 +462,10 @@ fn same_triangle(slots: &[u32]) -> impl Iterator<Item = (u32, Range<usize>)> + '
 mod tests {
     use super::*;
     use crate::raster::Interpolation;
-    use crate::raster::tile_rows::TileRows;
     use crate::raster::clip::ClipVertex;
     use crate::raster::scan::scan_triangle;
     use crate::raster::setup::{ShiftSpan, TrianglePlanes, Viewport};
+    use crate::raster::tile_rows::TileRows;
     use glam::Vec4;
 
     #[test]

@@ -3,6 +3,7 @@
 
 mod scene_files;
 mod scene_switching;
+mod workbench_state;
 
 use super::action::Action;
 use super::clock::Clock;
@@ -15,10 +16,11 @@ use super::kept_scene::KeptScene;
 use super::keymap::action_for;
 use super::light::move_lights;
 use super::material_controls as controls;
-use super::message_log::{Log, LogView};
+use super::message_history::Log;
+use super::message_log::LogView;
 use super::options::WorkbenchOptions;
 use super::orbit::Orbit;
-use super::overlay::{Overlay, OverlayKind, Reply};
+use super::overlay::{Overlay, OverlayKind, Reply, WorkbenchState};
 use super::param_panel::ParamPanel;
 use super::quality::QualityPreset;
 use super::render::View;
@@ -273,11 +275,6 @@ impl App {
         }
     }
 
-    /// Whether an overlay of this kind is open.
-    pub fn is_open(&self, kind: OverlayKind) -> bool {
-        self.overlays.iter().any(|o| o.kind() == kind)
-    }
-
     /// The open overlays, the topmost last.
     pub fn overlays(&self) -> impl Iterator<Item = &dyn Overlay> {
         self.overlays.iter().map(|o| o.as_ref())
@@ -318,34 +315,9 @@ impl App {
         self.dirty.text = true;
     }
 
-    pub fn log(&self) -> &Log {
-        &self.log
-    }
-
-    /// The selected parameter's place in `param_rows`.
-    pub fn param(&self) -> usize {
-        self.param
-    }
-
-    /// The edited object as a person names it: its surface's kind, or the model's file name.
-    pub fn object_name(&self) -> String {
-        match self.scene().objects.get(self.object) {
-            Some(object) => format!("{} {}", self.object + 1, object.surface.kind_name()),
-            None => "no object".into(),
-        }
-    }
-
     /// The object marked in the picture, while the mark lasts.
     pub fn marked_object(&self) -> Option<usize> {
         self.marked_until.map(|_| self.object)
-    }
-
-    /// What the picker offers: the scenes given, then every built-in not among them.
-    pub fn pickable_scenes(&self) -> Vec<String> {
-        let builtins = crate::scene::PRESET_NAMES.iter().map(|n| n.to_string());
-        let mut names = self.scenes.clone();
-        names.extend(builtins.filter(|n| !self.scenes.contains(n)));
-        names
     }
 
     pub fn apply(&mut self, action: Action) {
@@ -404,12 +376,12 @@ impl App {
             }
             Action::NextGlyphs => {
                 self.next_picture_kind();
-                let name = super::status::picture_name(self);
+                let name = super::mode_names::picture_name(self.graphics, self.glyphs);
                 self.tell(Message::Info(format!("picture: {name}")));
             }
             Action::NextColors => {
                 self.colors = next_colors(self.colors);
-                let name = super::status::colors_name(self.colors);
+                let name = super::mode_names::colors_name(self.colors);
                 self.tell(Message::Info(format!("colours: {name}")));
             }
             Action::TogglePause => self.toggle_clock(),
@@ -519,11 +491,6 @@ impl App {
                 }
             }
         }
-    }
-
-    /// The pattern parameters of the edited object (the bump's, then the texture's).
-    pub fn param_rows(&self) -> Vec<controls::ParamRow> {
-        self.material().map_or_else(Vec::new, controls::param_rows)
     }
 
     fn select_param(&mut self, step: i32) -> bool {

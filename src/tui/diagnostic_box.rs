@@ -1,8 +1,7 @@
 //! A failed reload's whole diagnostic (the `file:line:column` line, the source line, the caret)
 //! in a box at the top of the picture, until the file loads again or Esc closes it.
 
-use super::app::App;
-use super::overlay::{Overlay, OverlayKind, Reply};
+use super::overlay::{Overlay, OverlayKind, Reply, WorkbenchState};
 use super::popup::{centered, draw_box};
 use crossterm::event::{KeyCode, KeyEvent};
 use ratatui::buffer::Buffer;
@@ -19,14 +18,14 @@ impl Overlay for DiagnosticBox {
         OverlayKind::Diagnostic
     }
 
-    fn key(&mut self, key: &KeyEvent, _app: &App) -> Reply {
+    fn key(&mut self, key: &KeyEvent, _app: &dyn WorkbenchState) -> Reply {
         match key.code {
             KeyCode::Esc => Reply::Close,
             _ => Reply::Pass,
         }
     }
 
-    fn draw(&self, _app: &App, picture: Rect, style: Style, buffer: &mut Buffer) {
+    fn draw(&self, _app: &dyn WorkbenchState, picture: Rect, style: Style, buffer: &mut Buffer) {
         let lines: Vec<Line> = self
             .message
             .lines()

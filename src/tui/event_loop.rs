@@ -4,11 +4,11 @@
 use super::app::App;
 use super::frame_pacing::FramePacer;
 use super::input::{Input, InputState};
+use super::mode_names::colors_name;
 use super::options::WorkbenchOptions;
 use super::pixel_picture::PixelRoute;
 use super::render::DEFAULT_CELL_ASPECT;
 use super::screen::Screen;
-use super::status::colors_name;
 use crate::Error;
 use crate::term::graphics::{GraphicsChoice, GraphicsFound, Replies, decide, query_terminal};
 use crate::term::{

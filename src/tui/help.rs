@@ -1,9 +1,8 @@
 //! The help overlay: every key and mouse action the workbench takes, from the key map, in two
 //! columns where one does not fit (80×24 shows it whole), scrolled where two do not either.
 
-use super::app::App;
 use super::keymap::help_entries;
-use super::overlay::{Overlay, OverlayKind, Reply};
+use super::overlay::{Overlay, OverlayKind, Reply, WorkbenchState};
 use super::popup::{centered, clamp_scroll, draw_box, scrolled};
 use crossterm::event::{KeyCode, KeyEvent};
 use ratatui::buffer::Buffer;
@@ -30,7 +29,7 @@ impl Overlay for Help {
         OverlayKind::Help
     }
 
-    fn key(&mut self, key: &KeyEvent, _app: &App) -> Reply {
+    fn key(&mut self, key: &KeyEvent, _app: &dyn WorkbenchState) -> Reply {
         let (page, total) = self.shown.get();
         if let Some(scroll) = scrolled(self.scroll, key, page) {
             self.scroll = clamp_scroll(scroll, total, page);
@@ -42,7 +41,7 @@ impl Overlay for Help {
         }
     }
 
-    fn draw(&self, _app: &App, picture: Rect, style: Style, buffer: &mut Buffer) {
+    fn draw(&self, _app: &dyn WorkbenchState, picture: Rect, style: Style, buffer: &mut Buffer) {
         let entries: Vec<(&str, &str)> = help_entries().collect();
         let entry_width = |&(_, words): &(&str, &str)| KEY_COLUMN + words.chars().count();
         let column = entries.iter().map(entry_width).max().unwrap_or(0);

@@ -1,8 +1,7 @@
 //! The message log (`M`): every message of the run, the start-up note included, newest last,
 //! errors marked.
 
-use super::app::App;
-use super::overlay::{Overlay, OverlayKind, Reply};
+use super::overlay::{Overlay, OverlayKind, Reply, WorkbenchState};
 use super::popup::{centered, clamp_scroll, draw_box, scrolled};
 use super::status_message::Message;
 use crossterm::event::{KeyCode, KeyEvent};
@@ -11,38 +10,6 @@ use ratatui::layout::Rect;
 use ratatui::style::{Modifier, Style};
 use ratatui::text::Line;
 use std::cell::Cell;
-use std::collections::VecDeque;
-
-/// Messages kept; older ones go first.
-const KEPT: usize = 1000;
-
-/// Every message shown, with the seconds since start it was shown at.
-#[derive(Debug, Default)]
-pub struct Log {
-    entries: VecDeque<(f64, Message)>,
-}
-
-impl Log {
-    /// Keeps `message`, unless it is none or the same as the last kept.
-    pub fn keep(&mut self, seconds: f64, message: &Message) {
-        let same = self.entries.back().is_some_and(|(_, last)| last == message);
-        if *message == Message::None || same {
-            return;
-        }
-        if self.entries.len() == KEPT {
-            self.entries.pop_front();
-        }
-        self.entries.push_back((seconds, message.clone()));
-    }
-
-    pub fn len(&self) -> usize {
-        self.entries.len()
-    }
-
-    pub fn is_empty(&self) -> bool {
-        self.entries.is_empty()
-    }
-}
 
 /// The log's overlay: opens on the newest messages.
 pub struct LogView {
@@ -65,7 +32,7 @@ impl Overlay for LogView {
         OverlayKind::Log
     }
 
-    fn key(&mut self, key: &KeyEvent, _app: &App) -> Reply {
+    fn key(&mut self, key: &KeyEvent, _app: &dyn WorkbenchState) -> Reply {
         let (page, total) = self.shown.get();
         if let Some(scroll) = scrolled(clamp_scroll(self.scroll, total, page), key, page) {
             self.scroll = clamp_scroll(scroll, total, page);
@@ -77,8 +44,8 @@ impl Overlay for LogView {
         }
     }
 
-    fn draw(&self, app: &App, picture: Rect, style: Style, buffer: &mut Buffer) {
-        let entries = &app.log().entries;
+    fn draw(&self, app: &dyn WorkbenchState, picture: Rect, style: Style, buffer: &mut Buffer) {
+        let entries = app.log().entries();
         let width = picture.width.saturating_sub(2).max(1) as usize;
         let lines: Vec<Line> = match entries.is_empty() {
             true => vec![Line::styled("no messages yet", style)],
@@ -103,7 +70,7 @@ fn entry_lines<'a>(
     style: Style,
 ) -> Vec<Line<'a>> {
     let (text, style) = match message {
-        Message::Error(text) => (text.as_str(), super::status::error_style(style)),
+        Message::Error(text) => (text.as_str(), super::status_message::error_style(style)),
         Message::Info(text) => (text.as_str(), style),
         Message::None => ("", style),
     };

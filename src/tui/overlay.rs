@@ -7,7 +7,8 @@
 //! an action (or key) that opens it with `App::open`.
 
 use super::action::Action;
-use super::app::App;
+use super::material_controls::ParamRow;
+use super::message_history::Log;
 use crossterm::event::KeyEvent;
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
@@ -38,12 +39,27 @@ pub enum Reply {
     CloseAnd(Action),
 }
 
+/// What overlays read of the workbench; the app is the one implementation.
+pub trait WorkbenchState {
+    /// Every message of the run.
+    fn log(&self) -> &Log;
+    /// The scenes the picker offers: those given, then every built-in not among them.
+    fn pickable_scenes(&self) -> Vec<String>;
+    /// The selected object's material parameters.
+    fn param_rows(&self) -> Vec<ParamRow>;
+    /// The selected parameter.
+    fn param(&self) -> usize;
+    /// The selected object, as a person calls it.
+    fn object_name(&self) -> String;
+    fn is_open(&self, kind: OverlayKind) -> bool;
+}
+
 pub trait Overlay {
     fn kind(&self) -> OverlayKind;
 
     /// A key pressed while this is the topmost overlay; `app` as it is now.
-    fn key(&mut self, key: &KeyEvent, app: &App) -> Reply;
+    fn key(&mut self, key: &KeyEvent, app: &dyn WorkbenchState) -> Reply;
 
     /// Draws the overlay over `picture`, the screen's picture area.
-    fn draw(&self, app: &App, picture: Rect, style: Style, buffer: &mut Buffer);
+    fn draw(&self, app: &dyn WorkbenchState, picture: Rect, style: Style, buffer: &mut Buffer);
 }

@@ -4,9 +4,8 @@
 //! changes it.
 
 use super::action::Action;
-use super::app::App;
 use super::material_controls::{ParamRow, ParamSlot};
-use super::overlay::{Overlay, OverlayKind, Reply};
+use super::overlay::{Overlay, OverlayKind, Reply, WorkbenchState};
 use super::popup::draw_box;
 use crate::term::sanitize;
 use crossterm::event::{KeyCode, KeyEvent};
@@ -33,7 +32,7 @@ impl Overlay for ParamPanel {
         OverlayKind::Panel
     }
 
-    fn key(&mut self, key: &KeyEvent, app: &App) -> Reply {
+    fn key(&mut self, key: &KeyEvent, app: &dyn WorkbenchState) -> Reply {
         if let Some(typed) = &mut self.typing {
             return match key.code {
                 KeyCode::Esc => {
@@ -68,7 +67,7 @@ impl Overlay for ParamPanel {
         }
     }
 
-    fn draw(&self, app: &App, picture: Rect, style: Style, buffer: &mut Buffer) {
+    fn draw(&self, app: &dyn WorkbenchState, picture: Rect, style: Style, buffer: &mut Buffer) {
         let mut lines = lines(app);
         let note = match (&self.typing, &self.refused) {
             (Some(typed), _) => Some(format!("value: {typed}▏ Enter sets, Esc cancels")),
@@ -94,7 +93,7 @@ impl Overlay for ParamPanel {
 impl ParamPanel {
     /// The value typed for the selected parameter, if it is a number in its range; else the
     /// panel says why and nothing changes.
-    fn take_typed(&mut self, app: &App) -> Reply {
+    fn take_typed(&mut self, app: &dyn WorkbenchState) -> Reply {
         let typed = self.typing.take().unwrap_or_default();
         let Some(row) = app.param_rows().into_iter().nth(app.param()) else {
             return Reply::Taken;
@@ -141,7 +140,7 @@ struct PanelLine {
     text: String,
 }
 
-fn lines(app: &App) -> Vec<PanelLine> {
+fn lines(app: &dyn WorkbenchState) -> Vec<PanelLine> {
     let selected = app.param();
     let rows = app.param_rows();
     if rows.is_empty() {
@@ -198,7 +197,7 @@ fn area(lines: &[PanelLine], picture: Rect) -> Rect {
 
 /// The parameter (its place in `param_rows`) on the panel's line at `column`, `row` of the
 /// screen, if the panel is open over `picture` and a parameter is there.
-pub fn param_at(app: &App, picture: Rect, column: u16, row: u16) -> Option<usize> {
+pub fn param_at(app: &dyn WorkbenchState, picture: Rect, column: u16, row: u16) -> Option<usize> {
     let lines = lines(app);
     let popup = area(&lines, picture);
     if !app.is_open(OverlayKind::Panel) || !popup.contains(Position::new(column, row)) {
@@ -209,7 +208,7 @@ pub fn param_at(app: &App, picture: Rect, column: u16, row: u16) -> Option<usize
 }
 
 /// Whether `column`, `row` is on the open panel.
-pub fn covers(app: &App, picture: Rect, column: u16, row: u16) -> bool {
+pub fn covers(app: &dyn WorkbenchState, picture: Rect, column: u16, row: u16) -> bool {
     app.is_open(OverlayKind::Panel)
         && area(&lines(app), picture).contains(Position::new(column, row))
 }

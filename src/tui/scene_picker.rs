@@ -2,8 +2,7 @@
 //! you type (the letters in order, nearer together first), Enter to go, Esc to cancel.
 
 use super::action::Action;
-use super::app::App;
-use super::overlay::{Overlay, OverlayKind, Reply};
+use super::overlay::{Overlay, OverlayKind, Reply, WorkbenchState};
 use super::popup::{centered, draw_box};
 use crate::term::sanitize;
 use crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
@@ -29,7 +28,7 @@ impl Overlay for ScenePicker {
         OverlayKind::Picker
     }
 
-    fn key(&mut self, key: &KeyEvent, app: &App) -> Reply {
+    fn key(&mut self, key: &KeyEvent, app: &dyn WorkbenchState) -> Reply {
         if crate::term::is_ctrl_c(key) {
             return Reply::Pass;
         }
@@ -62,7 +61,7 @@ impl Overlay for ScenePicker {
         Reply::Taken
     }
 
-    fn draw(&self, app: &App, picture: Rect, style: Style, buffer: &mut Buffer) {
+    fn draw(&self, app: &dyn WorkbenchState, picture: Rect, style: Style, buffer: &mut Buffer) {
         let names = app.pickable_scenes();
         let found = matches(&names, &self.query);
         let height = (found.len() as u16 + 2).clamp(3, picture.height.max(3));

@@ -8,7 +8,8 @@ use super::refinement::Accumulation;
 use super::render::{
     CellShape, DEFAULT_CELL_ASPECT, Sampling, empty_framebuffer, encode_cells, render_picture_pass,
 };
-use super::status::{StatusLine, error_style, status_line};
+use super::status::{StatusLine, status_line};
+use super::status_message::error_style;
 use super::view_mode::ViewMode;
 use crate::raster::Framebuffer;
 use crate::term::graphics::Protocol;

@@ -4,9 +4,11 @@
 use super::app::App;
 use super::frame_report::FrameReport;
 use super::material_controls::{ParamRow, ParamSlot};
+use super::mode_names::{colors_name, picture_name};
+use super::overlay::WorkbenchState;
 use super::status_message::Message;
 use crate::scene::{BumpSource, Material, Texturing};
-use crate::term::{ColorMode, GlyphSet, sanitize};
+use crate::term::sanitize;
 
 const SEPARATOR: &str = " │ ";
 
@@ -78,15 +80,6 @@ fn progress_text(report: &FrameReport) -> Option<String> {
     }
 }
 
-/// How an error shows: red where there is colour, bold where there is none.
-pub fn error_style(base: ratatui::style::Style) -> ratatui::style::Style {
-    use ratatui::style::{Color, Modifier};
-    match base.fg {
-        Some(_) => base.fg(Color::Indexed(9)).add_modifier(Modifier::BOLD),
-        None => base.add_modifier(Modifier::BOLD),
-    }
-}
-
 /// The error view's figure: PSNR of the frame against the exact reference.
 fn psnr_text(db: f64) -> String {
     if db.is_finite() {
@@ -115,7 +108,7 @@ fn segments(app: &App) -> Vec<Segment> {
             format!(
                 "{} {} {}",
                 app.quality.name(),
-                picture_name(app),
+                picture_name(app.graphics, app.glyphs),
                 colors_name(app.colors)
             ),
         ),
@@ -262,34 +255,10 @@ fn si(n: usize) -> String {
     }
 }
 
-/// The picture's kind: the pixel protocol, or the glyph set.
-pub fn picture_name(app: &App) -> &'static str {
-    match app.graphics {
-        Some(protocol) => protocol.name(),
-        None => glyphs_name(app.glyphs),
-    }
-}
-
-fn glyphs_name(glyphs: GlyphSet) -> &'static str {
-    match glyphs {
-        GlyphSet::HalfBlock => "half",
-        GlyphSet::Quadrant => "quad",
-        GlyphSet::Sextant => "sextant",
-    }
-}
-
-pub fn colors_name(colors: ColorMode) -> &'static str {
-    match colors {
-        ColorMode::TrueColor => "truecolor",
-        ColorMode::Ansi256 => "256",
-        ColorMode::Ansi16 => "16",
-        ColorMode::Monochrome => "mono",
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::term::ColorMode;
 
     #[test]
     fn truncates_with_an_ellipsis_and_never_exceeds_the_width() {

@@ -14,3 +14,12 @@ pub enum Message {
     Info(String),
     Error(String),
 }
+
+/// How an error shows: red where there is colour, bold where there is none.
+pub fn error_style(base: ratatui::style::Style) -> ratatui::style::Style {
+    use ratatui::style::{Color, Modifier};
+    match base.fg {
+        Some(_) => base.fg(Color::Indexed(9)).add_modifier(Modifier::BOLD),
+        None => base.add_modifier(Modifier::BOLD),
+    }
+}

@@ -1,5 +1,5 @@
-//! Rules of the source tree a newcomer relies on: every file says what it holds, and the
-//! top-level modules of the library form no import cycle.
+//! Rules of the source tree a newcomer relies on: every file says what it holds, and neither the
+//! top-level modules of the library nor the files of one folder form an import cycle.
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
@@ -77,6 +77,87 @@ fn top_level_modules_import_no_cycle() {
             assert_ne!(module, start, "{start} imports itself through {seen:?}");
             if seen.insert(module.clone()) {
                 frontier.extend(uses[module].iter());
+            }
+        }
+    }
+}
+
+/// A file's module path: `["raster", "tile"]` for `src/raster/tile.rs`, `["raster"]` for
+/// `src/raster/mod.rs`.
+fn module_path(file: &Path) -> Vec<String> {
+    let relative = file.strip_prefix(src()).unwrap().with_extension("");
+    let mut parts: Vec<String> = relative
+        .components()
+        .map(|c| c.as_os_str().to_string_lossy().into_owned())
+        .collect();
+    if parts.last().is_some_and(|p| p == "mod") {
+        parts.pop();
+    }
+    parts
+}
+
+/// The modules a file's code outside its tests names through `super::` or `crate::`, each as
+/// the longest path in `modules` the name starts with.
+fn modules_named(
+    file: &Path,
+    module: &[String],
+    modules: &BTreeSet<Vec<String>>,
+) -> BTreeSet<Vec<String>> {
+    let text = std::fs::read_to_string(file).unwrap();
+    let code = text.split("#[cfg(test)]").next().unwrap();
+    let mut named = BTreeSet::new();
+    for (root, base) in [
+        ("super::", &module[..module.len().saturating_sub(1)]),
+        ("crate::", &[][..]),
+    ] {
+        for (at, _) in code.match_indices(root) {
+            let before = code[..at].chars().next_back();
+            if before.is_some_and(|c| c.is_ascii_alphanumeric() || c == '_' || c == ':') {
+                continue;
+            }
+            let path: Vec<String> = code[at + root.len()..]
+                .split(|c: char| !(c.is_ascii_alphanumeric() || c == '_' || c == ':'))
+                .next()
+                .unwrap()
+                .split("::")
+                .filter(|p| !p.is_empty())
+                .map(str::to_string)
+                .collect();
+            let full: Vec<String> = base.iter().cloned().chain(path).collect();
+            if let Some(k) = (1..=full.len())
+                .rev()
+                .find(|&k| modules.contains(&full[..k]))
+            {
+                named.insert(full[..k].to_vec());
+            }
+        }
+    }
+    named
+}
+
+#[test]
+fn the_files_of_a_folder_import_no_cycle() {
+    let mut files = Vec::new();
+    rust_files(&src(), &mut files);
+    let is_folder = |f: &PathBuf| f.file_name().is_some_and(|n| n == "mod.rs");
+    let modules: BTreeSet<Vec<String>> = files.iter().map(|f| module_path(f)).collect();
+    let mut uses: BTreeMap<Vec<String>, BTreeSet<Vec<String>>> = BTreeMap::new();
+    for file in files.iter().filter(|f| !is_folder(f)) {
+        let module = module_path(file);
+        let parent = &module[..module.len() - 1];
+        let siblings = modules_named(file, &module, &modules)
+            .into_iter()
+            .filter(|m| m.len() == module.len() && m[..m.len() - 1] == *parent && *m != module)
+            .filter(|m| !files.iter().any(|f| is_folder(f) && module_path(f) == *m));
+        uses.entry(module.clone()).or_default().extend(siblings);
+    }
+    for start in uses.keys() {
+        let mut seen = BTreeSet::new();
+        let mut frontier: Vec<&Vec<String>> = uses[start].iter().collect();
+        while let Some(module) = frontier.pop() {
+            assert_ne!(module, start, "{start:?} imports itself through {seen:?}");
+            if seen.insert(module.clone()) {
+                frontier.extend(uses.get(module).into_iter().flatten());
             }
         }
     }

@@ -365,6 +365,7 @@ fn at_80_by_24_the_help_shows_every_key_at_once_and_esc_closes_it() {
         assert!(text.contains(needed), "{needed} missing:\n{text}");
     }
     press(&mut app, KeyCode::Esc);
+    use bumpwork::tui::WorkbenchState;
     assert!(!app.is_open(bumpwork::tui::OverlayKind::Help));
     assert!(!app.quitting(), "Esc only closes");
     press(&mut app, KeyCode::Esc);

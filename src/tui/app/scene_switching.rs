@@ -5,7 +5,7 @@ use super::{App, Dirty, Message};
 use crate::Error;
 use crate::tui::kept_scene::KeptScene;
 use crate::tui::orbit::Orbit;
-use crate::tui::overlay::OverlayKind;
+use crate::tui::overlay::{OverlayKind, WorkbenchState};
 use crate::tui::scene_setup::{dress, first_bumped_object, prepare, shelf_for};
 use crate::watch::open_watched;
 
