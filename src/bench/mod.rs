@@ -62,7 +62,7 @@ impl Reference {
         // The reference ignores the tessellation; a coarse one serves to build the scene.
         let coarse = crate::surface::Tessellation { density: 4 };
         let prepared = PreparedScene::new(scene.clone(), coarse);
-        let mut shader = exact_shader(&prepared, &scene.camera);
+        let mut shader = exact_shader(&prepared, &scene.camera, 0.0);
         let frames = ShadedAndNormals::render(&mut shader, |s| {
             supersampled_reference(&prepared, &scene.camera, viewport, s, samples)
         });

@@ -7,6 +7,7 @@ use crate::Error;
 use crate::raster::{FrameStats, Viewport};
 use crate::scene::PreparedScene;
 use crate::scene::{Camera, Scene};
+use crate::shade::Showing;
 use crate::still::{
     BAND_BUDGET_BYTES, BandJob, Recipe, RowSink, StillSettings, StillStop, stream_still,
 };
@@ -268,11 +269,11 @@ fn stream_into(
         width: settings.size.0,
         height: settings.size.1,
     };
-    let mut shader = settings
-        .quality
-        .shader(request.prepared, request.camera, full);
-    shader.mode = settings.mode;
-    shader.time = settings.time;
+    let showing = Showing {
+        mode: settings.mode,
+        time: settings.time,
+    };
+    let shader = (settings.quality).shader_showing(request.prepared, request.camera, full, showing);
     let job = BandJob {
         prepared: request.prepared,
         camera: request.camera,

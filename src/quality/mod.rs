@@ -21,7 +21,7 @@ use crate::scene::Camera;
 use crate::scene::{PreparedObject, PreparedScene};
 use crate::scene::{Scene, Texturing};
 use crate::shade::{
-    GradientMethod, LitShader, Neighbours, NormalForm, Reach, ReachShape, Shadowing,
+    GradientMethod, LitShader, Neighbours, NormalForm, Reach, ReachShape, Shadowing, Showing,
     SurfacePointSource, VertexNormals,
 };
 use crate::shadow::{ShadowMaps, ShadowSettings};
@@ -310,26 +310,40 @@ impl Quality {
         RenderTarget::new(camera, viewport).with_interpolation(self.interpolation)
     }
 
-    /// The scene's fragment program with this quality's shading knobs, and its shadow maps for
-    /// the camera's view of a full image of `viewport`'s size.
+    /// The scene's lit picture at time 0 (`shader_showing`).
     pub fn shader(
         &self,
         prepared: &PreparedScene,
         camera: &Camera,
         viewport: Viewport,
     ) -> LitShader {
-        let maps = ShadowMaps::build(prepared, camera, viewport, self.shadow_settings());
-        self.shader_with_maps(prepared, camera, maps.map(Arc::new))
+        self.shader_showing(prepared, camera, viewport, Showing::default())
     }
 
-    /// `shader` with shadow maps already drawn (kept from an earlier frame: `ShadowCache`).
+    /// The scene's fragment program with this quality's shading knobs, showing `showing`, and
+    /// its shadow maps for the camera's view of a full image of `viewport`'s size.
+    pub fn shader_showing(
+        &self,
+        prepared: &PreparedScene,
+        camera: &Camera,
+        viewport: Viewport,
+        showing: Showing,
+    ) -> LitShader {
+        let maps = ShadowMaps::build(prepared, camera, viewport, self.shadow_settings());
+        self.shader_with_maps(prepared, camera, maps.map(Arc::new), showing)
+    }
+
+    /// `shader_showing` with shadow maps already drawn (kept from an earlier frame:
+    /// `ShadowCache`).
     pub fn shader_with_maps(
         &self,
         prepared: &PreparedScene,
         camera: &Camera,
         maps: Option<Arc<ShadowMaps>>,
+        showing: Showing,
     ) -> LitShader {
         let mut shader = LitShader::new(&prepared.scene, camera);
+        (shader.mode, shader.time) = (showing.mode, showing.time);
         self.configure(&mut shader, prepared);
         shader.shadows = maps.map(|maps| maps as Arc<dyn Shadowing>);
         shader

@@ -17,6 +17,7 @@ mod scene_shader;
 mod shade_scratch;
 mod shader_mode;
 mod shadowing;
+mod showing;
 mod vertex_normals;
 
 pub use bake::{
@@ -32,4 +33,5 @@ pub use scene_shader::{LitShader, render_lit};
 pub use shade_scratch::ShadeScratch;
 pub use shader_mode::ShaderMode;
 pub use shadowing::Shadowing;
+pub use showing::Showing;
 pub use vertex_normals::{Interpolated, VertexNormals};

@@ -7,6 +7,7 @@ use crate::quality::Quality;
 use crate::raster::{FrameStats, Framebuffer, RenderTarget, render_pass};
 use crate::reference::{error_heat_map, exact_shader, metrics::psnr, render_reference};
 use crate::scene::PreparedScene;
+use crate::shade::Showing;
 use crate::shadow::ShadowMaps;
 use std::sync::Arc;
 
@@ -22,11 +23,9 @@ pub fn render_error_view(
     target: &RenderTarget,
     framebuffer: &mut Framebuffer,
 ) -> (FrameStats, f64) {
-    let mut shader = quality.shader_with_maps(prepared, target.camera, maps);
-    shader.time = time;
+    let shader = quality.shader_with_maps(prepared, target.camera, maps, Showing::at(time));
     let stats = render_pass(prepared, target, &shader, framebuffer);
-    let mut exact = exact_shader(prepared, target.camera);
-    exact.time = time;
+    let exact = exact_shader(prepared, target.camera, time);
     let (reference, _) = render_reference(prepared, target.camera, target.viewport, &exact);
     let psnr_db = psnr(framebuffer, &reference);
     *framebuffer = error_heat_map(framebuffer, &reference, FULL_SCALE_STEPS);

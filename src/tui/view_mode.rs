@@ -5,7 +5,7 @@ use super::error_view::render_error_view;
 use crate::quality::Quality;
 use crate::raster::{FrameStats, Framebuffer, RenderTarget, render_pass};
 use crate::scene::PreparedScene;
-use crate::shade::ShaderMode;
+use crate::shade::{ShaderMode, Showing};
 use crate::shadow::ShadowCache;
 
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, strum::VariantArray)]
@@ -85,9 +85,11 @@ pub fn render_view_mode(
             psnr_db: Some(psnr_db),
         };
     }
-    let mut shader = quality.shader_with_maps(prepared, target.camera, maps);
-    shader.mode = mode.shader_mode();
-    shader.time = time;
+    let showing = Showing {
+        mode: mode.shader_mode(),
+        time,
+    };
+    let shader = quality.shader_with_maps(prepared, target.camera, maps, showing);
     RenderedFrame {
         stats: render_pass(prepared, target, &shader, framebuffer),
         psnr_db: None,

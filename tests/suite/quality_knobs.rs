@@ -7,6 +7,7 @@ use bumpwork::raster::{Framebuffer, Interpolation, Viewport};
 use bumpwork::reference::metrics::normal_angle_error;
 use bumpwork::reference::render_reference;
 use bumpwork::scene::{Scene, Texturing, preset};
+use bumpwork::shade::Showing;
 use bumpwork::shade::{GradientMethod, NormalForm, ShaderMode, SurfacePointSource};
 use bumpwork::texture::Filter;
 
@@ -24,8 +25,8 @@ fn render(scene: &Scene, quality: &Quality, mode: ShaderMode) -> Framebuffer {
     let prepared = quality
         .prepare(scene.clone(), &scene.camera, VIEW, 0)
         .unwrap();
-    let mut shader = quality.shader(&prepared, &scene.camera, VIEW);
-    shader.mode = mode;
+    let showing = Showing { mode, time: 0.0 };
+    let shader = quality.shader_showing(&prepared, &scene.camera, VIEW, showing);
     render_with(&prepared, &quality.target(&scene.camera, VIEW), &shader).0
 }
 
@@ -34,8 +35,8 @@ fn reference(scene: &Scene, quality: &Quality, mode: ShaderMode) -> Framebuffer 
     let prepared = quality
         .prepare(scene.clone(), &scene.camera, VIEW, 0)
         .unwrap();
-    let mut shader = quality.shader(&prepared, &scene.camera, VIEW);
-    shader.mode = mode;
+    let showing = Showing { mode, time: 0.0 };
+    let shader = quality.shader_showing(&prepared, &scene.camera, VIEW, showing);
     render_reference(&prepared, &scene.camera, VIEW, &shader).0
 }
 

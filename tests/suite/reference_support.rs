@@ -111,6 +111,6 @@ impl XorShift {
 /// The exact reference's frame of `scene` at `view`: exact surfaces, exact shadow rays.
 pub fn exact_frame(scene: &Scene, view: Viewport) -> Framebuffer {
     let prepared = PreparedScene::new(scene.clone(), Tessellation { density: 4 });
-    let shader: LitShader = bumpwork::reference::exact_shader(&prepared, &scene.camera);
+    let shader: LitShader = bumpwork::reference::exact_shader(&prepared, &scene.camera, 0.0);
     render_reference(&prepared, &scene.camera, view, &shader).0
 }

@@ -5,6 +5,7 @@ use crate::common::render_with;
 use bumpwork::quality::{Quality, ShadowEdges};
 use bumpwork::raster::{Framebuffer, Viewport};
 use bumpwork::scene::{Scene, parse_scene};
+use bumpwork::shade::Showing;
 use bumpwork::shadow::{ShadowMaps, ShadowSettings};
 use glam::Vec3;
 use std::sync::Arc;
@@ -91,7 +92,7 @@ fn raster_by(scene: &Scene, quality: &Quality, by: By) -> Framebuffer {
         ..quality.shadow_settings()
     };
     let maps = ShadowMaps::build(&prepared, camera, VIEW, settings).map(Arc::new);
-    let shader = quality.shader_with_maps(&prepared, camera, maps);
+    let shader = quality.shader_with_maps(&prepared, camera, maps, Showing::default());
     render_with(&prepared, &quality.target(camera, VIEW), &shader).0
 }
 
