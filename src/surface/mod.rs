@@ -189,6 +189,17 @@ pub fn normalize_or(v: Vec3, fallback: Vec3) -> Vec3 {
     }
 }
 
+/// The frame of a flat surface P = u·U + v·V with unit normal N, given as [U, V, N].
+#[inline(always)]
+fn flat_frame([u_axis, v_axis, normal]: [Vec3; 3], u: f32, v: f32) -> Frame {
+    Frame {
+        p: u_axis * u + v_axis * v,
+        pu: u_axis,
+        pv: v_axis,
+        n: normal,
+    }
+}
+
 /// `Parametric::frames` for a flat surface (`is_flat`), whose point is P = u·Pu + v·Pv and whose
 /// tangents and normal are those of `at_origin` everywhere: the frames are filled with
 /// `at_origin`, then only their points are written.

@@ -4,7 +4,7 @@
 use super::grid_shape::GridShape;
 use super::parametric::Parametric;
 use super::ray_hits::{Hit, Ray, flat_hit, nearest_hit, project};
-use super::{Domain, Frame, Frames, flat_frames, normalize_or};
+use super::{Domain, Frame, Frames, flat_frame, flat_frames, normalize_or};
 use glam::{DVec3, Vec2, Vec3};
 use std::ops::RangeInclusive;
 
@@ -59,12 +59,7 @@ impl Parametric for Plane {
 
     #[inline]
     fn frame(&self, u: f32, v: f32) -> Frame {
-        Frame {
-            p: self.u_axis * u + self.v_axis * v,
-            pu: self.u_axis,
-            pv: self.v_axis,
-            n: self.normal,
-        }
+        flat_frame([self.u_axis, self.v_axis, self.normal], u, v)
     }
 
     fn frames(&self, count: usize, uv: impl Fn(usize) -> Vec2, out: &mut Frames) {
