@@ -26,6 +26,7 @@ const CONVERGENCE_SCENES: &[&str] = &[
     "cone-dimples",
     "wave-spheres",
     "textured-sphere",
+    "torus-dimples",
 ];
 
 struct Measured {
