@@ -1,7 +1,7 @@
 //! What a surface defines: its (u,v) domain and frame, how finely it is cut into triangles, how
 //! its mesh is pushed out to cover it, and where a ray meets it exactly. Each surface implements
 //! this in its own file; `Surface` dispatches to them, so adding a surface is one file (its
-//! `impl Parametric`, its tests) and one arm in `Surface`.
+//! `impl Parametric`, its tests) and one arm in `Surface` and in `each_kind!`.
 
 use super::grid_shape::GridShape;
 use super::ray_hits::{Hit, Ray, Rays, TrueHit};

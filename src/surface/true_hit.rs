@@ -2,7 +2,8 @@
 //!
 //! A fragment's ray crosses its triangle at the chord point; the true surface lies a chord
 //! error away along the same ray. The quadrics (sphere, cone, paraboloid) are solved in closed
-//! form around the chord point, the wave by safeguarded Newton steps from it.
+//! form around the chord point, the wave by safeguarded Newton steps from it; the others (flat
+//! surfaces, models, the torus) take their exact first hit from the eye.
 //!
 //! Numerics: the rays are f64 and the quadratics are formed and solved in f64 around the chord
 //! point, so their constant term (how far the chord point is from the surface) keeps its digits

@@ -3,7 +3,7 @@
 
 use crate::cli_support::{assert_user_error, bumpwork, run_ok, stderr, temp_dir};
 use crate::common::render_with;
-use crate::reference_support::{SMALL, raster_error, render_both};
+use crate::reference::support::{SMALL, raster_error, render_both};
 use bumpwork::raster::{Fragment, FrameObject, PerFragment, RenderTarget};
 use bumpwork::reference::render_reference;
 use bumpwork::scene::PreparedScene;

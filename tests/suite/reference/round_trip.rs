@@ -2,7 +2,7 @@
 //! surface (frame(u,v) of the inverted (u,v) reproduces the hit point to 1e-4 of the surface's
 //! size), no hit is missed in front of a known surface point, and inversion undoes `frame`.
 
-use crate::reference_support::XorShift;
+use crate::reference::support::XorShift;
 use bumpwork::surface::{
     AxisBasis, Cone, Paraboloid, Plane, Sphere, Surface, Torus, Triangle, Wave,
 };

@@ -2,7 +2,7 @@
 //! (unlike the seed's `x % 50`, which mirrors there). Checks are solid (x, y and z), so every
 //! plane parallel to a coordinate plane shows squares.
 
-use crate::pattern_support::{colors, shipped};
+use crate::pattern::support::{colors, shipped};
 
 const PERIOD: f32 = 50.0;
 const RED: [f32; 3] = [1.0, 0.0, 0.0];
@@ -49,7 +49,7 @@ const MAGENTA: [f32; 3] = [1.0, 0.0, 1.0];
 /// The shipped checks at object points (x, y, z).
 fn checks_at(points: &[[f32; 3]]) -> Vec<[f32; 3]> {
     let checks = shipped("checks");
-    let mut batch = crate::pattern_support::Batch::default();
+    let mut batch = crate::pattern::support::Batch::default();
     for point in points {
         batch.u.push(0.0);
         batch.v.push(0.0);
@@ -119,7 +119,7 @@ fn checks_are_squares_on_a_plane_parallel_to_each_coordinate_plane_across_zero()
 #[test]
 fn stripe_period_is_a_live_parameter() {
     let stripes = shipped("stripes");
-    let batch = crate::pattern_support::Batch::new(&[at(30.0, 0.0)]);
+    let batch = crate::pattern::support::Batch::new(&[at(30.0, 0.0)]);
     let mut out = [[0.0; 3]];
     stripes.eval_color(&batch.inputs(), &[100.0], &mut stripes.scratch(), &mut out);
     assert_eq!(out[0], RED, "30 is in the first half of a 100 period");

@@ -7,7 +7,7 @@ use bumpwork::export::metadata::{RECIPE, read_png_text};
 use bumpwork::still::Recipe;
 use std::path::{Path, PathBuf};
 
-const SCENE: &str = include_str!("../../scenes/sphere-on-plane.toml");
+const SCENE: &str = include_str!("../../../scenes/sphere-on-plane.toml");
 
 fn scene_with(dir: &TestDir, name: &str, top: &str, quality: &str) -> PathBuf {
     let path = dir.join(name);

@@ -2,7 +2,7 @@
 //! is left behind, and what is shown in the end is the final file. Run in a process of its
 //! own, so the thread count is this test's own.
 
-use crate::watch_support::*;
+use crate::watch::support::*;
 use bumpwork::watch::{Reloader, SceneFileSource};
 use std::fs;
 
@@ -11,7 +11,7 @@ const SAVES: u32 = 1000;
 #[test]
 fn a_thousand_rapid_saves_end_showing_the_final_file() {
     alone_in_a_process(
-        "watch_soak::a_thousand_rapid_saves_end_showing_the_final_file",
+        "watch::soak::a_thousand_rapid_saves_end_showing_the_final_file",
         || {
             let dir = TempDir::new("soak");
             let pattern = dir.join("ridges.pat");

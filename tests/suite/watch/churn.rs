@@ -1,14 +1,14 @@
 //! Starting and dropping a reloader 100 times leaves no thread and no watcher behind. Run in a
 //! process of its own, so the thread count is this test's own.
 
-use crate::watch_support::*;
+use crate::watch::support::*;
 use bumpwork::watch::{Reloader, SceneFileSource};
 use std::fs;
 
 #[test]
 fn a_hundred_starts_and_drops_leave_no_thread_or_watcher_behind() {
     alone_in_a_process(
-        "watch_churn::a_hundred_starts_and_drops_leave_no_thread_or_watcher_behind",
+        "watch::churn::a_hundred_starts_and_drops_leave_no_thread_or_watcher_behind",
         || {
             let dir = TempDir::new("churn");
             fs::write(dir.join("ridges.pat"), pattern_source(1)).unwrap();

@@ -98,7 +98,7 @@ fn raster_by(scene: &Scene, quality: &Quality, by: By) -> Framebuffer {
 
 /// The reference's frame: exact surfaces and exact shadow rays.
 fn reference(scene: &Scene) -> Framebuffer {
-    crate::reference_support::exact_frame(scene, VIEW)
+    crate::reference::support::exact_frame(scene, VIEW)
 }
 
 /// Per pixel: of the light that would reach it without shadows, the fraction that does, from

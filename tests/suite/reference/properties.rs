@@ -1,7 +1,7 @@
 //! Properties over random cameras and scenes (proptest): neither renderer writes a NaN or an
 //! infinity, and the rasterizer's error against the reference shrinks as the tessellation grows.
 
-use crate::reference_support::*;
+use crate::reference::support::*;
 use bumpwork::raster::Viewport;
 use bumpwork::reference::metrics::{normal_angle_error, silhouette_mismatch};
 use bumpwork::scene::{Scene, parse_scene};

@@ -1,7 +1,7 @@
 //! The automatic-differentiation gradient of every shipped height pattern equals a central
 //! difference of its height, away from kinks.
 
-use crate::pattern_support::{bump, heights, sample_points, shipped};
+use crate::pattern::support::{bump, heights, sample_points, shipped};
 use bumpwork::pattern::{BUILTINS, OutputKind, Pattern};
 
 /// Central difference of the height along u (axis 0) or v (axis 1) with step `e`, using the

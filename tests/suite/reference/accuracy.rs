@@ -3,7 +3,7 @@
 //! tessellation, and converging as the tessellation grows.
 
 use crate::common::render_with;
-use crate::reference_support::*;
+use crate::reference::support::*;
 use bumpwork::raster::{Fragment, FrameObject, PerFragment, RenderTarget};
 use bumpwork::reference::render_reference;
 use bumpwork::scene::PreparedScene;

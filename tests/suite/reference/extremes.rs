@@ -5,7 +5,7 @@
 //! either framebuffer, and where the reference applies, the rasterizer's error within a bound
 //! stated with its reason. (8192×8192 is in `benches/reference.rs --8k`: a gigabyte per frame.)
 
-use crate::reference_support::*;
+use crate::reference::support::*;
 use bumpwork::raster::Viewport;
 use bumpwork::reference::metrics::{normal_angle_error, silhouette_mismatch};
 use bumpwork::scene::{Scene, parse_scene, preset};

@@ -107,7 +107,7 @@ fn raster(scene: &Scene) -> Framebuffer {
 }
 
 fn reference(scene: &Scene) -> Framebuffer {
-    crate::reference_support::exact_frame(scene, VIEW)
+    crate::reference::support::exact_frame(scene, VIEW)
 }
 
 /// Of the pixels the unbumped surface leaves ambient-only (past its terminator), how many the

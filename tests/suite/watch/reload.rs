@@ -1,7 +1,7 @@
 //! Hot reload in-process: a scene in a temporary directory, edited the ways editors save, with
 //! broken saves in between; after each step the loaded scene is the expected one.
 
-use crate::watch_support::*;
+use crate::watch::support::*;
 use bumpwork::scene::parse_scene;
 use bumpwork::watch::{FileSetSource, Reloader, SceneFileSource};
 use std::fs;

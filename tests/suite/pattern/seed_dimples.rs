@@ -1,7 +1,7 @@
 //! `dimples-seed.pat` reproduces the seed lecture's dimples code, and `dimples.pat` is its
 //! continuous height form.
 
-use crate::pattern_support::{bump, sample_points, shipped};
+use crate::pattern::support::{bump, sample_points, shipped};
 use bumpwork::pattern::native::dimples_seed;
 
 #[test]

@@ -1,0 +1,3 @@
+//! Writing stills.
+
+mod stills;

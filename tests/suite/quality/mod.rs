@@ -1,0 +1,3 @@
+//! The quality knobs.
+
+mod knobs;

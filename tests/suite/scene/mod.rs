@@ -1,0 +1,4 @@
+//! Scene files and their quality tables.
+
+mod files;
+mod quality;

@@ -1,0 +1,4 @@
+//! Shading: bumps, and fragments at the true surface.
+
+mod bump_shading;
+mod exact_points;

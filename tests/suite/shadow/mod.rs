@@ -1,0 +1,4 @@
+//! Shadows and terminators.
+
+mod shadows;
+mod terminators;

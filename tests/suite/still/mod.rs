@@ -1,0 +1,3 @@
+//! Stills rendered in bands.
+
+mod bands;

@@ -1,0 +1,9 @@
+//! The workbench: cells, views, graphics, a real pty, refinement.
+
+mod cells;
+mod error_view;
+mod graphics;
+mod pty;
+mod refinement;
+mod screen;
+mod workbench;

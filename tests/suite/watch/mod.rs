@@ -1,0 +1,6 @@
+//! Watching files: reloads, churn and a long soak.
+
+mod churn;
+mod reload;
+mod soak;
+pub mod support;
