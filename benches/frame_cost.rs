@@ -16,13 +16,13 @@
 
 mod bench_support;
 
-use bench_support::render_into;
 use bench_support::{
     PeerStill, pov_peer_files, pov_peer_settings, textured_sphere_scene, time_png_stills,
     write_pov_peer_scene,
 };
 use bumpwork::measure::Timing;
 use bumpwork::quality::Quality;
+use bumpwork::raster::render_pass;
 use bumpwork::raster::{FragmentShader, Framebuffer, RenderTarget, Viewport};
 use bumpwork::scene::Camera;
 use bumpwork::scene::PreparedScene;
@@ -43,7 +43,7 @@ fn frames(prepared: &PreparedScene, camera: &Camera, shader: &impl FragmentShade
     let mut times = Vec::with_capacity(n);
     for _ in 0..n {
         let start = std::time::Instant::now();
-        fragments = render_into(prepared, &target, shader, &mut framebuffer).fragments;
+        fragments = render_pass(prepared, &target, shader, &mut framebuffer).fragments;
         times.push(start.elapsed());
     }
     let per_frame = Timing::from_samples(times).summary_ms();

@@ -9,9 +9,9 @@
 
 mod bench_support;
 
-use bench_support::render_into;
 use bench_support::{bilinear, textured_sphere_scene};
 use bumpwork::measure::{Timing, ratio_by_round};
+use bumpwork::raster::render_pass;
 use bumpwork::raster::{Framebuffer, RenderTarget, Viewport, linear_to_srgb8};
 use bumpwork::scene::Light;
 use bumpwork::scene::PreparedScene;
@@ -135,7 +135,7 @@ fn main() {
     let (one_thread, all_threads) = (pool(1), pool(cores));
     let fragments = std::cell::Cell::new(0);
     let ours_on = |pool: &rayon::ThreadPool, framebuffer: &mut Framebuffer| {
-        let stats = pool.install(|| render_into(&prepared, &target, &shader, framebuffer));
+        let stats = pool.install(|| render_pass(&prepared, &target, &shader, framebuffer));
         fragments.set(stats.fragments);
     };
     // A framebuffer each, for the two turns to borrow apart.

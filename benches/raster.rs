@@ -6,9 +6,9 @@
 
 mod bench_support;
 
-use bench_support::render_into;
 use bench_support::sphere_scene;
 use bumpwork::measure::Timing;
+use bumpwork::raster::render_pass;
 use bumpwork::raster::{
     Fragment, FrameObject, Framebuffer, PerFragment, RenderTarget, Viewport, frame_objects,
     screen_triangles,
@@ -56,7 +56,7 @@ fn main() {
     let flat = one_thread.install(|| {
         Timing::measure(3.min(runs().saturating_sub(1)), runs(), || {
             // Coverage and visibility only: isolates the rasterizer from the cost of lighting.
-            render_into(
+            render_pass(
                 &prepared,
                 &target,
                 &PerFragment(|_: &FrameObject, _: &Fragment| Vec3::ONE),
@@ -88,7 +88,7 @@ fn main() {
         let mut stats = Default::default();
         let timing = pool.install(|| {
             Timing::measure(3.min(runs().saturating_sub(1)), runs(), || {
-                stats = render_into(&prepared, &target, &lit, &mut framebuffer)
+                stats = render_pass(&prepared, &target, &lit, &mut framebuffer)
             })
         });
         println!(

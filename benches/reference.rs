@@ -6,9 +6,9 @@
 
 mod bench_support;
 
-use bench_support::render_with;
 use bumpwork::raster::{Framebuffer, RenderTarget, Viewport};
 use bumpwork::reference::{FrameError, frame_error, render_reference};
+use bumpwork::render::render_with;
 use bumpwork::scene::PreparedScene;
 use bumpwork::scene::{PRESET_NAMES, Scene, preset};
 use bumpwork::shade::{LitShader, ShaderMode};

@@ -7,9 +7,9 @@
 
 use bumpwork::measure::Timing;
 use bumpwork::raster::{RenderTarget, Viewport};
+use bumpwork::render::render_lit;
 use bumpwork::scene::PreparedScene;
 use bumpwork::scene::Scene;
-use bumpwork::shade::render_lit;
 use bumpwork::surface::Tessellation;
 use bumpwork::watch::{DEBOUNCE, ReloadOutcome, Reloader, SceneFileSource};
 use std::path::{Path, PathBuf};

@@ -17,6 +17,7 @@ pub mod pattern;
 pub mod quality;
 pub mod raster;
 pub mod reference;
+pub mod render;
 pub mod scene;
 pub mod shade;
 pub mod shadow;

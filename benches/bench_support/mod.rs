@@ -183,27 +183,6 @@ pub fn time_png_stills(
     })
 }
 
-/// One pass rendered into `framebuffer`.
-pub fn render_into(
-    prepared: &bumpwork::scene::PreparedScene,
-    target: &bumpwork::raster::RenderTarget,
-    shader: &impl bumpwork::raster::FragmentShader,
-    framebuffer: &mut bumpwork::raster::Framebuffer,
-) -> bumpwork::raster::FrameStats {
-    bumpwork::raster::render_pass(prepared, target, shader, framebuffer)
-}
-
-/// One pass rendered into a new framebuffer.
-pub fn render_with(
-    prepared: &bumpwork::scene::PreparedScene,
-    target: &bumpwork::raster::RenderTarget,
-    shader: &impl bumpwork::raster::FragmentShader,
-) -> (bumpwork::raster::Framebuffer, bumpwork::raster::FrameStats) {
-    let mut framebuffer = bumpwork::raster::Framebuffer::new(0, 0, Vec3::ZERO);
-    let stats = render_into(prepared, target, shader, &mut framebuffer);
-    (framebuffer, stats)
-}
-
 /// The POV-Ray peer's scene as a POV-Ray user would write it, into `dir/native.pov` beside copies
 /// of its images: the same camera and lights, an analytic box for the floor with POV-Ray's own
 /// checker and dents, an analytic sphere with the chelsea image and the gravel bump map

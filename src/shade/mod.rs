@@ -29,7 +29,7 @@ pub use exact_hits::ExactScratch;
 pub use exact_point::{ExactPoints, SurfacePointSource, exact_fragments};
 pub use gradient::GradientMethod;
 pub use lighting::{FrameLights, blinn_phong, facing_sign};
-pub use scene_shader::{LitShader, render_lit};
+pub use scene_shader::LitShader;
 pub use shade_scratch::ShadeScratch;
 pub use shader_mode::ShaderMode;
 pub use shadowing::Shadowing;

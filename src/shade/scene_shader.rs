@@ -15,11 +15,8 @@ use super::shader_mode::ShaderMode;
 use super::shadowing::Shadowing;
 use super::vertex_normals::VertexNormals;
 use crate::pattern::Precision;
-use crate::raster::{
-    Fragment, FragmentShader, FrameObject, FrameStats, Framebuffer, RenderTarget, SampleRays,
-};
+use crate::raster::{Fragment, FragmentShader, FrameObject, SampleRays};
 use crate::scene::Camera;
-use crate::scene::PreparedScene;
 use crate::scene::{BumpSource, Scene, Texturing};
 use crate::surface::{Frames, ModelSurface, Surface, Vectors};
 use glam::Vec3;
@@ -420,33 +417,16 @@ fn single_object(fragments: &[Fragment]) -> Option<u32> {
         .then_some(object)
 }
 
-/// Renders a lit frame, shaded as the scene asks, on the current rayon pool.
-pub fn render_lit(prepared: &PreparedScene, target: &RenderTarget) -> (Framebuffer, FrameStats) {
-    let shader = LitShader::new(&prepared.scene, target.camera);
-    let mut framebuffer = Framebuffer::new(0, 0, Vec3::ZERO);
-    let stats = crate::raster::render_pass(prepared, target, &shader, &mut framebuffer);
-    (framebuffer, stats)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::raster::{RenderTarget, Viewport, frame_objects, render_pass};
+    use crate::raster::{RenderTarget, Viewport, frame_objects};
+    use crate::render::render_with;
     use crate::scene::PreparedScene;
     use crate::shade::colour_stage::over_material;
     use crate::texture::{Mapping, SurfaceUv, Texel, Wrap};
     use glam::{Vec2, Vec4};
 
-    /// A frame rendered into a new framebuffer.
-    fn render_with(
-        prepared: &PreparedScene,
-        target: &RenderTarget,
-        shader: &impl FragmentShader,
-    ) -> (Framebuffer, FrameStats) {
-        let mut framebuffer = Framebuffer::new(0, 0, Vec3::ZERO);
-        let stats = render_pass(prepared, target, shader, &mut framebuffer);
-        (framebuffer, stats)
-    }
     use crate::scene::{ImageTexture, preset};
     use crate::surface::Tessellation;
     use crate::texture::{Filter, Sampler, TexelGrid, Texture};

@@ -102,23 +102,4 @@ pub fn camera(eye: [f64; 3], target: [f64; 3], fov: f32) -> Camera {
     }
 }
 
-/// One pass rendered into a new framebuffer.
-pub fn render_with(
-    prepared: &bumpwork::scene::PreparedScene,
-    target: &bumpwork::raster::RenderTarget,
-    shader: &impl bumpwork::raster::FragmentShader,
-) -> (bumpwork::raster::Framebuffer, bumpwork::raster::FrameStats) {
-    let mut framebuffer = bumpwork::raster::Framebuffer::new(0, 0, Vec3::ZERO);
-    let stats = render_into(prepared, target, shader, &mut framebuffer);
-    (framebuffer, stats)
-}
-
-/// One pass rendered into `framebuffer`.
-pub fn render_into(
-    prepared: &bumpwork::scene::PreparedScene,
-    target: &bumpwork::raster::RenderTarget,
-    shader: &impl bumpwork::raster::FragmentShader,
-    framebuffer: &mut bumpwork::raster::Framebuffer,
-) -> bumpwork::raster::FrameStats {
-    bumpwork::raster::render_pass(prepared, target, shader, framebuffer)
-}
+pub use bumpwork::render::render_with;

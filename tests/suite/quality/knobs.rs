@@ -22,12 +22,10 @@ fn scene(name: &str) -> Scene {
 
 /// The scene rendered at this quality in a view mode.
 fn render(scene: &Scene, quality: &Quality, mode: ShaderMode) -> Framebuffer {
-    let prepared = quality
-        .prepare(scene.clone(), &scene.camera, VIEW, 0)
-        .unwrap();
     let showing = Showing { mode, time: 0.0 };
-    let shader = quality.shader_showing(&prepared, &scene.camera, VIEW, showing);
-    render_with(&prepared, &quality.target(&scene.camera, VIEW), &shader).0
+    bumpwork::render::frame(scene, quality, VIEW, showing)
+        .unwrap()
+        .0
 }
 
 /// The exact reference in a view mode, shaded with this quality's shading knobs.

@@ -2,9 +2,9 @@
 
 use crate::common::*;
 use bumpwork::raster::{Framebuffer, RenderTarget, Viewport};
+use bumpwork::render::render_lit;
 use bumpwork::scene::PreparedScene;
 use bumpwork::scene::{Light, PRESET_NAMES, Scene, preset};
-use bumpwork::shade::render_lit;
 use bumpwork::surface::Tessellation;
 use glam::DVec3;
 

@@ -3,15 +3,15 @@
 //! must hold exactly what a fresh framebuffer would. Renders restricted to a mask, or adding
 //! weighted colours into what is there (supersampling's passes), touch only their pixels.
 
-use crate::common::render_into;
+use bumpwork::raster::render_pass;
 use bumpwork::raster::{
     Blend, FrameOutput, Framebuffer, ImageWindow, Refinement, RenderTarget, STRIP_ROWS,
     Srgb8Strips, Viewport, render,
 };
+use bumpwork::render::render_lit;
 use bumpwork::scene::PreparedScene;
 use bumpwork::scene::{Scene, preset};
 use bumpwork::shade::LitShader;
-use bumpwork::shade::render_lit;
 use bumpwork::still::RefineRule;
 use bumpwork::surface::Tessellation;
 use glam::{DVec3, Vec2, Vec3};
@@ -49,7 +49,7 @@ fn fresh(prepared: &PreparedScene, viewport: Viewport) -> Framebuffer {
 fn render_reusing(prepared: &PreparedScene, viewport: Viewport, framebuffer: &mut Framebuffer) {
     let camera = &prepared.scene.camera;
     let shader = LitShader::new(&prepared.scene, camera);
-    render_into(
+    render_pass(
         prepared,
         &RenderTarget::new(camera, viewport),
         &shader,
@@ -163,7 +163,7 @@ fn render_writing(
         writes_depth,
         ..RenderTarget::new(camera, SMALL)
     };
-    render_into(
+    render_pass(
         prepared,
         &target,
         &LitShader::new(&prepared.scene, camera),
@@ -315,7 +315,7 @@ fn passes_rendered_tile_by_tile_equal_the_passes_one_after_another() {
         let passes = shifted_passes(&far, mask);
         let mut want = rendered_once(&far);
         for pass in &passes {
-            render_into(&far, pass, &shader, &mut want);
+            render_pass(&far, pass, &shader, &mut want);
         }
         let mut got = rendered_once(&far);
         let stats = render(
@@ -449,7 +449,7 @@ fn refining_passes_render_only_the_moved_pixels_as_separate_passes_would() {
             let before = rendered_once(&far);
             let mut want = before.clone();
             for pass in &passes[..2] {
-                render_into(&far, pass, &shader, &mut want);
+                render_pass(&far, pass, &shader, &mut want);
             }
             let expected = refined_by_definition(&before, &want, mask, threshold);
             let settled = |i: usize| mask.is_none_or(|m| m[i]) && !expected[i];
@@ -459,7 +459,7 @@ fn refining_passes_render_only_the_moved_pixels_as_separate_passes_would() {
                     mask: Some(&expected),
                     ..*pass
                 };
-                render_into(&far, &pass, &shader, &mut want);
+                render_pass(&far, &pass, &shader, &mut want);
             }
             let mut got = before.clone();
             let mut refined = vec![true; 3];

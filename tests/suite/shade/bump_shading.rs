@@ -1,9 +1,9 @@
 //! Bump mapping and textures as the renderer applies them: properties of whole frames.
 
 use bumpwork::raster::{Framebuffer, RenderTarget, Viewport};
+use bumpwork::render::render_lit;
 use bumpwork::scene::PreparedScene;
 use bumpwork::scene::{Light, Scene, parse_scene, preset};
-use bumpwork::shade::render_lit;
 use bumpwork::surface::Tessellation;
 use glam::{DVec3, Vec3};
 
