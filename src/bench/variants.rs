@@ -1,10 +1,11 @@
 //! What the bench runs: the presets, then `interactive` with one knob changed at a time.
 
 use crate::pattern::Precision;
-use crate::quality::{Coverage, NormalSource, QUALITY_NAMES, Quality, ShadowEdges, preset};
+use crate::quality::{Coverage, NormalSource, Preset, Quality, ShadowEdges};
 use crate::raster::Interpolation;
 use crate::shade::{GradientMethod, NormalForm};
 use crate::texture::Filter;
+use strum::VariantArray;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum VariantKind {
@@ -22,10 +23,10 @@ pub struct Variant {
 
 /// Every preset, then every single-knob variation of `interactive`.
 pub fn variants() -> Vec<Variant> {
-    let presets = QUALITY_NAMES.iter().map(|&name| Variant {
-        name: name.to_string(),
+    let presets = Preset::VARIANTS.iter().map(|preset| Variant {
+        name: preset.name().to_string(),
         kind: VariantKind::Preset,
-        quality: preset(name).expect("every listed name is a preset"),
+        quality: preset.quality(),
     });
     let knobs = knob_variations()
         .into_iter()

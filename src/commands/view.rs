@@ -1,9 +1,10 @@
 //! `bumpwork view` (and `bumpwork` alone): the terminal workbench.
 
 use bumpwork::Error;
+use bumpwork::quality::Preset;
 use bumpwork::term::graphics::GraphicsChoice;
 use bumpwork::term::{ColorChoice, GlyphSet};
-use bumpwork::tui::{QualityPreset, WorkbenchOptions};
+use bumpwork::tui::WorkbenchOptions;
 
 #[derive(clap::Args, Default)]
 pub struct ViewArgs {
@@ -26,8 +27,8 @@ pub struct ViewArgs {
     #[arg(long)]
     no_watch: bool,
     /// Quality preset to start with: draft, interactive, high or exact (`Q` cycles them).
-    #[arg(long, default_value = "interactive", value_parser = QualityPreset::named)]
-    quality: Option<QualityPreset>,
+    #[arg(long, default_value = "interactive", value_parser = Preset::named)]
+    quality: Option<Preset>,
     /// Size of PNGs the export key writes, WIDTHxHEIGHT.
     #[arg(long, default_value = "1920x1080", value_parser = super::parse_size)]
     export_size: Option<(u32, u32)>,

@@ -7,12 +7,14 @@
 
 mod adaptive;
 mod knob_settings;
+mod preset;
 
 pub use adaptive::{MAX_ADAPTIVE_DENSITY, adaptive_density, projected_chord_error};
 pub use knob_settings::{
     MAX_DENSITY, MAX_SAMPLES, MAX_SHADOW_BIAS, SHADOW_MAP_SIZES, SHADOW_TAPS, check_quality,
     knob_names,
 };
+pub use preset::Preset;
 
 use crate::memory_budget::{MemoryUse, OverBudget};
 use crate::pattern::Precision;
@@ -133,20 +135,6 @@ fn interactive_shadow_bias() -> f32 {
     Quality::interactive().shadow_bias
 }
 
-/// The preset names, cheapest first.
-pub const QUALITY_NAMES: [&str; 4] = ["draft", "interactive", "high", "exact"];
-
-/// The named preset, if there is one.
-pub fn preset(name: &str) -> Option<Quality> {
-    match name {
-        "draft" => Some(Quality::draft()),
-        "interactive" => Some(Quality::interactive()),
-        "high" => Some(Quality::high()),
-        "exact" => Some(Quality::exact()),
-        _ => None,
-    }
-}
-
 impl Default for Quality {
     fn default() -> Self {
         Quality::interactive()
@@ -227,13 +215,7 @@ impl Quality {
 
     /// A preset by name, or a message listing the names (a command-line value parser).
     pub fn named(name: &str) -> Result<Quality, String> {
-        preset(name).ok_or_else(|| {
-            format!(
-                "unknown quality preset '{}'; the presets are {}",
-                crate::diagnostic::shown_input(name),
-                QUALITY_NAMES.join(", ")
-            )
-        })
+        Preset::named(name).map(Preset::quality)
     }
 
     /// Tessellates the scene for this view (after applying the filter override), once the
@@ -457,61 +439,4 @@ fn vertex_normals(prepared: &PreparedScene) -> Arc<[VertexNormals]> {
         .map(|o| VertexNormals::new(&o.surface, &o.mesh))
         .collect::<Vec<_>>()
         .into()
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn every_preset_name_is_a_preset_and_no_other_is() {
-        for name in QUALITY_NAMES {
-            assert!(preset(name).is_some(), "{name}");
-        }
-        assert!(preset("fast").is_none());
-        let distinct: std::collections::HashSet<String> = QUALITY_NAMES
-            .iter()
-            .map(|n| format!("{:?}", preset(n)))
-            .collect();
-        assert_eq!(
-            distinct.len(),
-            QUALITY_NAMES.len(),
-            "each name its own preset"
-        );
-    }
-
-    #[test]
-    fn every_preset_parses_by_name_and_they_differ() {
-        let presets: Vec<Quality> = QUALITY_NAMES.iter().map(|n| preset(n).unwrap()).collect();
-        for (i, a) in presets.iter().enumerate() {
-            for b in &presets[i + 1..] {
-                assert_ne!(a, b);
-            }
-        }
-        assert_eq!(Quality::default(), Quality::interactive());
-    }
-
-    #[test]
-    fn presets_grow_in_samples_and_shrink_in_tolerance() {
-        let [draft, interactive, high, exact] = QUALITY_NAMES.map(|n| preset(n).unwrap());
-        assert!(draft.tessellation < interactive.tessellation);
-        assert!(draft.samples <= interactive.samples);
-        assert!(interactive.samples < high.samples && high.samples < exact.samples);
-        assert!(exact.adaptive_tolerance_px < high.adaptive_tolerance_px);
-        assert!(interactive.tessellation < high.tessellation);
-        assert!(high.tessellation < exact.tessellation);
-        assert_eq!(draft.filter, Some(Filter::Nearest));
-        assert_eq!(exact.normal_form, NormalForm::Full);
-        assert_eq!(exact.gradient, GradientMethod::Exact);
-    }
-
-    #[test]
-    fn an_unknown_name_lists_the_presets() {
-        assert_eq!(preset("ultra"), None);
-        let message = Quality::named("ultra").unwrap_err();
-        assert!(message.contains("'ultra'"), "{message}");
-        for name in QUALITY_NAMES {
-            assert!(message.contains(name), "{message}");
-        }
-    }
 }

@@ -22,7 +22,6 @@ use super::options::WorkbenchOptions;
 use super::orbit::Orbit;
 use super::overlay::{Overlay, OverlayKind, Reply, WorkbenchState};
 use super::param_panel::ParamPanel;
-use super::quality::QualityPreset;
 use super::render::View;
 use super::scene_picker::ScenePicker;
 use super::scene_setup::{check_settings, dress, first_bumped_object, prepare, shelf_for};
@@ -30,6 +29,7 @@ use super::status_message::{INFO_LIFETIME, Message};
 use super::view_mode::ViewMode;
 use crate::Error;
 use crate::overrides::Override;
+use crate::quality::Preset;
 use crate::quality::Quality;
 use crate::scene::Camera;
 use crate::scene::PreparedScene;
@@ -54,7 +54,7 @@ pub struct App {
     pub(super) param: usize,
     pub(super) view_mode: ViewMode,
     /// The preset `Q` cycles.
-    pub(super) quality: QualityPreset,
+    pub(super) quality: Preset,
     /// What is rendered: the preset with the scene file's `[quality]` settings and the `--set`
     /// ones over it.
     pub(super) quality_in_use: Quality,
@@ -196,7 +196,7 @@ impl App {
     }
 
     /// The preset `Q` cycles.
-    pub fn quality_preset(&self) -> QualityPreset {
+    pub fn quality_preset(&self) -> Preset {
         self.quality
     }
 
@@ -545,7 +545,7 @@ impl App {
     }
 
     /// Tessellates again for the preset `quality`; one that does not fit keeps the current one.
-    fn reprepare(&mut self, quality: QualityPreset) {
+    fn reprepare(&mut self, quality: Preset) {
         match prepare(self.prepared.scene.clone(), quality, &self.settings) {
             Ok((prepared, in_use)) => {
                 self.prepared = prepared;

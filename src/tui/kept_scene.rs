@@ -4,7 +4,7 @@
 
 use super::image_shelf::ImageShelf;
 use super::orbit::Orbit;
-use super::quality::QualityPreset;
+use crate::quality::Preset;
 use crate::quality::Quality;
 use crate::scene::PreparedScene;
 use crate::watch::Reloader;
@@ -14,7 +14,7 @@ pub struct KeptScene {
     pub orbit: Orbit,
     pub object: usize,
     pub param: usize,
-    pub quality: QualityPreset,
+    pub quality: Preset,
     pub quality_in_use: Quality,
     pub images: ImageShelf,
     pub reloader: Option<Reloader>,

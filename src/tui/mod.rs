@@ -50,7 +50,7 @@ pub use options::WorkbenchOptions;
 pub use orbit::Orbit;
 pub use overlay::{OverlayKind, WorkbenchState};
 pub use pixel_picture::PixelRoute;
-pub use quality::{MAX_TERMINAL_SAMPLES, QualityPreset};
+pub use quality::MAX_TERMINAL_SAMPLES;
 pub use refinement::{Accumulation, MAX_PASSES};
 pub use render::{
     CellShape, DEFAULT_CELL_ASPECT, PicturePass, Sampling, View, render_cells, render_frame,

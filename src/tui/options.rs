@@ -1,7 +1,7 @@
 //! How the workbench was asked to start.
 
-use super::quality::QualityPreset;
 use crate::overrides::Override;
+use crate::quality::Preset;
 use crate::scene::MaterialChoice;
 use crate::term::graphics::GraphicsChoice;
 use crate::term::{ColorChoice, GlyphSet};
@@ -25,7 +25,7 @@ pub struct WorkbenchOptions {
     /// Reload scene, pattern and image files when they change on disk.
     pub watch: bool,
     /// The quality preset to start with (`Q` cycles them).
-    pub quality: QualityPreset,
+    pub quality: Preset,
     /// A cell's size in pixels, width × height, for terminals that do not report it.
     pub cell_size: Option<(u32, u32)>,
     /// `--graphics`: real pixels where the terminal shows them, or blocks.
@@ -51,7 +51,7 @@ impl Default for WorkbenchOptions {
             export_samples: 4,
             export_dir: PathBuf::from("."),
             watch: true,
-            quality: QualityPreset::default(),
+            quality: Preset::default(),
             cell_size: None,
             graphics: GraphicsChoice::Auto,
             settings: Vec::new(),

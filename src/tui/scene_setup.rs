@@ -3,9 +3,9 @@
 //! the preset's quality.
 
 use super::image_shelf::ImageShelf;
-use super::quality::QualityPreset;
 use crate::Error;
 use crate::overrides::{Override, apply_to_quality, apply_where_known};
+use crate::quality::Preset;
 use crate::quality::Quality;
 use crate::raster::{Framebuffer, Viewport};
 use crate::scene::PreparedScene;
@@ -24,7 +24,7 @@ const PLANNED_VIEWPORT: Viewport = Viewport {
 /// plan counts a large one).
 pub(super) fn prepare(
     scene: Scene,
-    preset: QualityPreset,
+    preset: Preset,
     settings: &[Override],
 ) -> Result<(PreparedScene, Quality), Error> {
     let quality = preset
