@@ -61,7 +61,6 @@ pub use parametric::Parametric;
 pub use plane::Plane;
 pub use ray_differentials::uv_derivatives;
 pub use ray_hits::{Hit, Ray, Rays, TrueHit, intersect, surface_uv};
-pub use seed_angles::SEED_UNITS_PER_RADIAN;
 pub use sphere::Sphere;
 pub use tessellate::{Mesh, Tessellation};
 pub use torus::Torus;
