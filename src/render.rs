@@ -38,8 +38,7 @@ pub fn frame(
     showing: Showing,
 ) -> Result<(Framebuffer, FrameStats), OverBudget> {
     let camera = &scene.camera;
-    let output_bytes =
-        u64::from(viewport.width) * u64::from(viewport.height) * Framebuffer::BYTES_PER_PIXEL;
+    let output_bytes = Framebuffer::bytes_for(viewport);
     let prepared = quality.prepare(scene.clone(), camera, viewport, output_bytes)?;
     let shader = quality.shader_showing(&prepared, camera, viewport, showing);
     Ok(render_with(

@@ -138,9 +138,7 @@ pub fn measure_scene(
         .iter()
         .map(|variant| {
             let quality = &variant.quality;
-            let output_bytes = u64::from(viewport.width)
-                * u64::from(viewport.height)
-                * Framebuffer::BYTES_PER_PIXEL;
+            let output_bytes = Framebuffer::bytes_for(viewport);
             let prepared = quality.prepare(scene.clone(), camera, viewport, output_bytes)?;
             let shader = quality.shader(&prepared, camera, viewport);
             let target = quality.target(camera, viewport);

@@ -1,5 +1,6 @@
 //! The framebuffer: linear-light colour and view depth per pixel, and how a render blends into it.
 
+use super::setup::Viewport;
 use crate::huge_pages::resize_for_overwrite;
 use glam::Vec3;
 use std::sync::OnceLock;
@@ -20,6 +21,11 @@ impl Framebuffer {
     /// The memory one pixel takes: its colour and its depth.
     pub const BYTES_PER_PIXEL: u64 =
         (std::mem::size_of::<Vec3>() + std::mem::size_of::<f32>()) as u64;
+
+    /// The memory a framebuffer of `viewport`'s size takes.
+    pub fn bytes_for(viewport: Viewport) -> u64 {
+        u64::from(viewport.width) * u64::from(viewport.height) * Framebuffer::BYTES_PER_PIXEL
+    }
 }
 
 /// How a render's colours meet what the framebuffer holds; depth, where written, is replaced.

@@ -82,3 +82,13 @@ fn found(value: &impl std::fmt::Debug) -> String {
 pub fn shortest(x: f32) -> f64 {
     x.to_string().parse().unwrap_or(x as f64)
 }
+
+/// The default axis of a paraboloid or torus: +Y.
+pub fn up() -> Direction {
+    Direction(Vec3::Y)
+}
+
+/// The default axis of a cone, apex to base: −Y.
+pub fn down() -> Direction {
+    Direction(-Vec3::Y)
+}

@@ -7,6 +7,7 @@ pub use super::checked_values::{
     Direction, FieldOfView, Finite, HalfAngle, MAX_TIME_SECONDS, NonNegative, Point, Positive, Rgb,
     SceneTime, shortest,
 };
+use super::checked_values::{down, up};
 use super::exact_arrays::exact;
 use super::quality_table::{QualityTable, knob_settings};
 use super::torus_file::TorusFile;
@@ -198,12 +199,6 @@ fn white() -> Rgb {
 }
 fn grey() -> Rgb {
     Rgb(Vec3::splat(0.6))
-}
-fn up() -> Direction {
-    Direction(Vec3::Y)
-}
-fn down() -> Direction {
-    Direction(-Vec3::Y)
 }
 fn default_fov() -> FieldOfView {
     FieldOfView(40.0)

@@ -1,9 +1,8 @@
 //! The `torus = {…}` table of a scene file, checked as it is read, so a tube wider than its ring
 //! is reported at the table's line and column.
 
-use super::checked_values::{Direction, Point, Positive};
+use super::checked_values::{Direction, Point, Positive, up};
 use crate::surface::{AxisBasis, Torus};
-use glam::Vec3;
 use serde::{Deserialize, Serialize};
 
 /// A ring torus: a tube of `minor-radius` swept around `axis` at `major-radius` from it.
@@ -29,10 +28,6 @@ struct TorusFields {
     axis: Direction,
     major_radius: Positive,
     minor_radius: Positive,
-}
-
-fn up() -> Direction {
-    Direction(Vec3::Y)
 }
 
 impl TryFrom<TorusFields> for TorusFile {
