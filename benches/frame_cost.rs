@@ -22,8 +22,8 @@ use bench_support::{
 };
 use bumpwork::measure::Timing;
 use bumpwork::quality::Quality;
-use bumpwork::raster::render_pass;
-use bumpwork::raster::{FragmentShader, Framebuffer, RenderTarget, Viewport};
+use bumpwork::raster::{Framebuffer, RenderTarget, Viewport};
+use bumpwork::render::{SceneShader, render_scene_pass};
 use bumpwork::scene::Camera;
 use bumpwork::scene::PreparedScene;
 use bumpwork::scene::load_scene_file;
@@ -36,14 +36,14 @@ const VIEWPORT: Viewport = Viewport {
     height: 1080,
 };
 
-fn frames(prepared: &PreparedScene, camera: &Camera, shader: &impl FragmentShader, n: usize) {
+fn frames(prepared: &PreparedScene, camera: &Camera, shader: &impl SceneShader, n: usize) {
     let target = RenderTarget::new(camera, VIEWPORT);
     let mut framebuffer = Framebuffer::new(0, 0, Vec3::ZERO);
     let mut fragments = 0;
     let mut times = Vec::with_capacity(n);
     for _ in 0..n {
         let start = std::time::Instant::now();
-        fragments = render_pass(prepared, &target, shader, &mut framebuffer).fragments;
+        fragments = render_scene_pass(prepared, &target, shader, &mut framebuffer).fragments;
         times.push(start.elapsed());
     }
     let per_frame = Timing::from_samples(times).summary_ms();

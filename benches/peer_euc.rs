@@ -11,8 +11,8 @@ mod bench_support;
 
 use bench_support::{bilinear, textured_sphere_scene};
 use bumpwork::measure::{Timing, ratio_by_round};
-use bumpwork::raster::render_pass;
 use bumpwork::raster::{Framebuffer, RenderTarget, Viewport, linear_to_srgb8};
+use bumpwork::render::render_scene_pass;
 use bumpwork::scene::Light;
 use bumpwork::scene::PreparedScene;
 use bumpwork::shade::LitShader;
@@ -135,7 +135,7 @@ fn main() {
     let (one_thread, all_threads) = (pool(1), pool(cores));
     let fragments = std::cell::Cell::new(0);
     let ours_on = |pool: &rayon::ThreadPool, framebuffer: &mut Framebuffer| {
-        let stats = pool.install(|| render_pass(&prepared, &target, &shader, framebuffer));
+        let stats = pool.install(|| render_scene_pass(&prepared, &target, &shader, framebuffer));
         fragments.set(stats.fragments);
     };
     // A framebuffer each, for the two turns to borrow apart.

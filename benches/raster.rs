@@ -8,13 +8,11 @@ mod bench_support;
 
 use bench_support::sphere_scene;
 use bumpwork::measure::Timing;
-use bumpwork::raster::render_pass;
-use bumpwork::raster::{
-    Fragment, FrameObject, Framebuffer, PerFragment, RenderTarget, Viewport, frame_objects,
-    screen_triangles,
-};
+use bumpwork::raster::{Fragment, Framebuffer, RenderTarget, Viewport, screen_triangles};
+use bumpwork::render::render_scene_pass;
 use bumpwork::scene::PreparedScene;
 use bumpwork::shade::LitShader;
+use bumpwork::shade::{FrameObject, PerFragment, frame_objects};
 use bumpwork::surface::Tessellation;
 use glam::Vec3;
 
@@ -56,7 +54,7 @@ fn main() {
     let flat = one_thread.install(|| {
         Timing::measure(3.min(runs().saturating_sub(1)), runs(), || {
             // Coverage and visibility only: isolates the rasterizer from the cost of lighting.
-            render_pass(
+            render_scene_pass(
                 &prepared,
                 &target,
                 &PerFragment(|_: &FrameObject, _: &Fragment| Vec3::ONE),
@@ -88,7 +86,7 @@ fn main() {
         let mut stats = Default::default();
         let timing = pool.install(|| {
             Timing::measure(3.min(runs().saturating_sub(1)), runs(), || {
-                stats = render_pass(&prepared, &target, &lit, &mut framebuffer)
+                stats = render_scene_pass(&prepared, &target, &lit, &mut framebuffer)
             })
         });
         println!(

@@ -1,5 +1,5 @@
 //! Hot-reload latency: from the write of a pattern file to the next frame rendered from it, with
-//! the debounce included. A frame is a 400×120 render with `raster::render`, standing in for the
+//! the debounce included. A frame is a 400×120 render with `render::render_scene`, standing in for the
 //! workbench's 200×60 cells (two pixels a cell across, as the terminal encoder uses half blocks
 //! it is 400×120 pixels). Median and p95 over the saves, and where the time goes.
 //!

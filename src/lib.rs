@@ -3,6 +3,7 @@
 pub mod area_average;
 pub mod bench;
 pub mod bounded_read;
+pub mod camera;
 pub mod content_hash;
 pub mod diagnostic;
 mod error;

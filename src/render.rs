@@ -8,10 +8,11 @@
 //!    the lights placed for the camera, shadow maps drawn by the rasterizer (`src/shadow/`),
 //!    the quality's shading knobs, and what it shows at which moment (`Showing`). It is built
 //!    once for a frame and not changed afterwards.
-//! 3. **Raster.** `raster::render` (`src/raster/render.rs`) transforms, clips and sets up the
-//!    triangles, bins them into tiles, resolves visibility per tile and runs the program once
-//!    for each visible pixel, for one or more passes (`RenderTarget`: camera, viewport, the
-//!    window of the image, sample offset, blend).
+//! 3. **Raster.** `render_scene` places the objects for the camera (`shade::FrameObject`) and
+//!    hands them to `raster::render` (`src/raster/render.rs`), which knows meshes, not scenes:
+//!    it transforms, clips and sets up the triangles, bins them into tiles, resolves visibility
+//!    per tile and runs the program once for each visible pixel, for one or more passes
+//!    (`RenderTarget`: camera, viewport, the window of the image, sample offset, blend).
 //! 4. **Output.** A `Framebuffer` of linear colour, 8-bit sRGB strips, or both. Stills
 //!    (`src/still/`, `src/export/`) stream strips into PNG files; the workbench (`src/tui/`)
 //!    turns the framebuffer into cells or terminal pixels; the reference (`src/reference/`)
@@ -23,9 +24,11 @@
 
 use crate::memory_budget::OverBudget;
 use crate::quality::Quality;
-use crate::raster::{FragmentShader, FrameStats, Framebuffer, RenderTarget, Viewport};
+use crate::raster::{
+    FragmentShader, FrameOutput, FrameStats, Framebuffer, Refinement, RenderTarget, Viewport,
+};
 use crate::scene::{PreparedScene, Scene};
-use crate::shade::{LitShader, Showing};
+use crate::shade::{FrameObject, LitShader, Showing, frame_objects};
 use glam::Vec3;
 
 /// One frame of `scene` seen by its camera at `quality`, showing `showing`, into a new
@@ -48,14 +51,48 @@ pub fn frame(
     ))
 }
 
+/// A fragment program that shades a prepared scene's objects, placed for the frame.
+pub trait SceneShader: for<'o> FragmentShader<Object<'o> = FrameObject<'o>> {}
+
+impl<S: for<'o> FragmentShader<Object<'o> = FrameObject<'o>>> SceneShader for S {}
+
+/// `raster::render` for a prepared scene: its objects placed for the passes' camera, over its
+/// background.
+pub fn render_scene(
+    prepared: &PreparedScene,
+    passes: &[RenderTarget],
+    shader: &impl SceneShader,
+    output: FrameOutput,
+    refinement: Option<Refinement>,
+) -> FrameStats {
+    let Some(last) = passes.last() else {
+        return FrameStats::default();
+    };
+    let objects = frame_objects(prepared, last.camera);
+    let background = prepared.scene.background;
+    crate::raster::render(&objects, background, passes, shader, output, refinement)
+}
+
+/// One pass of `target` into `framebuffer` (resized to it), depth kept: `render_scene` for the
+/// commonest case.
+pub fn render_scene_pass(
+    prepared: &PreparedScene,
+    target: &RenderTarget,
+    shader: &impl SceneShader,
+    framebuffer: &mut Framebuffer,
+) -> FrameStats {
+    let output = FrameOutput::Framebuffer(framebuffer);
+    render_scene(prepared, std::slice::from_ref(target), shader, output, None)
+}
+
 /// One pass of any program into a new framebuffer.
 pub fn render_with(
     prepared: &PreparedScene,
     target: &RenderTarget,
-    shader: &impl FragmentShader,
+    shader: &impl SceneShader,
 ) -> (Framebuffer, FrameStats) {
     let mut framebuffer = Framebuffer::new(0, 0, Vec3::ZERO);
-    let stats = crate::raster::render_pass(prepared, target, shader, &mut framebuffer);
+    let stats = render_scene_pass(prepared, target, shader, &mut framebuffer);
     (framebuffer, stats)
 }
 

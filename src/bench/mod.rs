@@ -12,8 +12,9 @@ pub use variants::{Variant, VariantKind, variants};
 
 use crate::measure::Timing;
 use crate::raster::ViewRays;
-use crate::raster::{Framebuffer, RenderTarget, Viewport, render_pass};
+use crate::raster::{Framebuffer, RenderTarget, Viewport};
 use crate::reference::{FrameError, ShadedAndNormals, exact_shader, render_rays_into};
+use crate::render::render_scene_pass;
 use crate::scene::Camera;
 use crate::scene::PreparedScene;
 use crate::scene::Scene;
@@ -226,7 +227,7 @@ fn render_frame(
     framebuffer: &mut Framebuffer,
 ) {
     if samples <= 1 {
-        render_pass(prepared, target, shader, framebuffer);
+        render_scene_pass(prepared, target, shader, framebuffer);
         return;
     }
     let job = BandJob {

@@ -8,7 +8,7 @@ use super::interpolation::Interpolation;
 use super::scan::{EdgeWalk, triangle_rows};
 use super::screen_triangles::join_in_order;
 use super::setup::{SampleShift, ScreenTriangle, ShiftSpan, TrianglePlanes, Viewport};
-use crate::scene::PreparedScene;
+use crate::surface::Mesh;
 use glam::{DVec3, Mat4, Vec2, Vec3};
 use rayon::prelude::*;
 
@@ -43,14 +43,15 @@ impl DepthMap {
     }
 }
 
-/// The depth map of the prepared scene's objects numbered in `objects`, seen through `view`. No
-/// faces are culled: open surfaces cast shadows from either side.
-pub fn render_depth(prepared: &PreparedScene, objects: &[usize], view: &DepthView) -> DepthMap {
+/// The depth map of `meshes`, each with the world point its positions are relative to (its
+/// anchor), seen through `view`. No faces are culled: open surfaces cast shadows from either
+/// side.
+pub fn render_depth(meshes: &[(DVec3, &Mesh)], view: &DepthView) -> DepthMap {
     let viewport = Viewport {
         width: view.size,
         height: view.size,
     };
-    let triangles = depth_triangles(prepared, objects, view, viewport);
+    let triangles = depth_triangles(meshes, view, viewport);
     let bins = TileBins::new(viewport, &triangles);
     // On huge pages where the kernel has them: a 1024² map is a thousand small pages to fault.
     let mut depth: Vec<f32> = crate::huge_pages::zeroed_huge((view.size as usize).pow(2));
@@ -115,19 +116,17 @@ fn depth_at(t: &ScreenTriangle, x: u32, y: u32) -> f32 {
 /// Triangles wholly outside one side of the view are dropped before any setup: a cube face
 /// sees a sixth of the scene.
 fn depth_triangles(
-    prepared: &PreparedScene,
-    objects: &[usize],
+    meshes: &[(DVec3, &Mesh)],
     view: &DepthView,
     viewport: Viewport,
 ) -> Vec<ScreenTriangle> {
     let guard = viewport.guard_band();
-    let pieces = objects
+    let pieces = meshes
         .iter()
-        .map(|&index| (index, &prepared.objects[index]))
-        .flat_map(|(index, object)| {
-            let origin = (object.surface.origin() - view.origin).as_vec3();
-            let vertices: Vec<(ClipVertex, u8)> = object
-                .mesh
+        .enumerate()
+        .flat_map(|(index, &(anchor, mesh))| {
+            let origin = (anchor - view.origin).as_vec3();
+            let vertices: Vec<(ClipVertex, u8)> = mesh
                 .positions
                 .par_iter()
                 .map(|&p| {
@@ -140,9 +139,7 @@ fn depth_triangles(
                     (vertex, outside_sides(position))
                 })
                 .collect();
-            object
-                .mesh
-                .indices
+            mesh.indices
                 .par_iter()
                 .fold(Vec::new, |mut out, corners| {
                     let [a, b, c] = corners.map(|i| vertices[i as usize]);
@@ -197,39 +194,21 @@ fn set_up(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scene::{Camera, Material, Object, Scene};
     use crate::surface::{Plane, Surface, Tessellation};
 
-    fn floor_scene() -> PreparedScene {
-        // x and z from −5 to 5 (v runs along N × U = −z).
-        let plane = Plane::new(
-            DVec3::new(-5.0, 0.0, 5.0),
+    /// A floor from −5 to 5 in x and z (v runs along N × U = −z), and its anchor.
+    fn floor() -> (DVec3, Mesh) {
+        let corner = DVec3::new(-5.0, 0.0, 5.0);
+        let floor = Surface::Plane(Plane::new(
+            corner,
             Vec3::Y,
             Vec3::X,
             glam::Vec2::splat(10.0),
-        );
-        let scene = Scene {
-            name: "floor".into(),
-            camera: Camera {
-                eye: DVec3::new(0.0, 5.0, 5.0),
-                target: DVec3::ZERO,
-                up: Vec3::Y,
-                vfov_degrees: 40.0,
-                near: 0.1,
-                far: 100.0,
-            },
-            background: Vec3::ZERO,
-            ambient: Vec3::ZERO,
-            lights: vec![],
-            objects: vec![Object {
-                surface: Surface::Plane(plane),
-                material: Material::default(),
-            }],
-            time: 0.0,
-            quality: vec![],
-            shadows: true,
-        };
-        PreparedScene::new(scene, Tessellation { density: 4 })
+        ));
+        (
+            floor.origin(),
+            floor.tessellate(Tessellation { density: 4 }),
+        )
     }
 
     #[test]
@@ -262,15 +241,14 @@ mod tests {
 
     #[test]
     fn an_orthographic_view_straight_down_sees_the_floor_at_its_height() {
-        let prepared = floor_scene();
+        let (anchor, mesh) = floor();
         // From 3 units above, looking down, a 4-unit-wide box: the floor is 3 units away.
         let forward = -Vec3::Y;
         let view = glam::camera::rh::view::look_to_mat4(Vec3::ZERO, forward, -Vec3::Z);
         let projection =
             glam::camera::rh::proj::directx::orthographic(-2.0, 2.0, -2.0, 2.0, 0.5, 9.0);
         let map = render_depth(
-            &prepared,
-            &[0],
+            &[(anchor, &mesh)],
             &DepthView {
                 origin: DVec3::new(0.0, 3.0, 0.0),
                 view_projection: projection * view,
@@ -287,14 +265,13 @@ mod tests {
 
     #[test]
     fn a_perspective_view_sees_depth_along_its_axis_and_nothing_past_the_floor() {
-        let prepared = floor_scene();
+        let (anchor, mesh) = floor();
         let forward = Vec3::new(0.0, -1.0, -1.0).normalize();
         let view = glam::camera::rh::view::look_to_mat4(Vec3::ZERO, forward, Vec3::Y);
         let projection = glam::camera::rh::proj::directx::perspective(1.2, 1.0, 0.1, 50.0);
         let origin = DVec3::new(0.0, 2.0, 3.0);
         let map = render_depth(
-            &prepared,
-            &[0],
+            &[(anchor, &mesh)],
             &DepthView {
                 origin,
                 view_projection: projection * view,

@@ -1,17 +1,9 @@
-//! What rasterisation hands to shading: the frame's objects and the visible pixels' fragments.
+//! What rasterisation hands to shading: the visible pixels' fragments, and the fragment program's
+//! interface, generic over the program's own object type.
 
+use super::placed_mesh::PlacedMesh;
 use super::sample_rays::SampleRays;
-use crate::scene::{Camera, PreparedObject, PreparedScene};
-use glam::{DVec3, Vec2, Vec3};
-
-/// Per-object state for one frame, in camera-relative space.
-pub struct FrameObject<'a> {
-    pub prepared: &'a PreparedObject,
-    /// The surface's anchor relative to the eye, subtracted in f64 before narrowing to f32.
-    pub origin: Vec3,
-    /// The eye relative to the surface's anchor in f64, for exact ray casts.
-    pub eye: DVec3,
-}
+use glam::{Vec2, Vec3};
 
 /// What the shading stage knows about a visible pixel: plain data, so a tile's fragments can be
 /// shaded as one batch.
@@ -34,6 +26,9 @@ pub struct Fragment {
 /// The per-fragment program, run on batches of fragments (a tile's visible pixels, any objects).
 /// Generic, so each program's loop is compiled for it; `Scratch` is per-thread working memory.
 pub trait FragmentShader: Sync {
+    /// What the program knows of each of the frame's objects (which may borrow from the
+    /// frame's data, for `'o`); the rasterizer reads its mesh.
+    type Object<'o>: PlacedMesh;
     type Scratch;
 
     fn scratch(&self) -> Self::Scratch;
@@ -41,7 +36,7 @@ pub trait FragmentShader: Sync {
     /// Whether the program reads the (u,v) derivatives (`duv_dx`, `duv_dy`) of `object`'s
     /// fragments; where it does not, the rasterizer leaves them zero and saves their
     /// arithmetic at every pixel of that object. A program that says false must not read them.
-    fn reads_derivatives(&self, _object: &FrameObject) -> bool {
+    fn reads_derivatives(&self, _object: &Self::Object<'_>) -> bool {
         true
     }
 
@@ -51,46 +46,10 @@ pub trait FragmentShader: Sync {
     /// Returns how many fragments were drawn flat because a pattern gave no finite value there.
     fn shade(
         &self,
-        objects: &[FrameObject],
+        objects: &[Self::Object<'_>],
         rays: &SampleRays,
         fragments: &mut [Fragment],
         scratch: &mut Self::Scratch,
         out: &mut [Vec3],
     ) -> usize;
-}
-
-/// A shader from a function of one fragment, for programs that need no batching.
-pub struct PerFragment<F>(pub F);
-
-impl<F: Fn(&FrameObject, &Fragment) -> Vec3 + Sync> FragmentShader for PerFragment<F> {
-    type Scratch = ();
-
-    fn scratch(&self) {}
-
-    fn shade(
-        &self,
-        objects: &[FrameObject],
-        _: &SampleRays,
-        fragments: &mut [Fragment],
-        _: &mut (),
-        out: &mut [Vec3],
-    ) -> usize {
-        for (fragment, out) in fragments.iter().zip(out) {
-            *out = (self.0)(&objects[fragment.object as usize], fragment);
-        }
-        0
-    }
-}
-
-/// The objects of a prepared scene placed relative to the camera for one frame.
-pub fn frame_objects<'a>(prepared: &'a PreparedScene, camera: &Camera) -> Vec<FrameObject<'a>> {
-    prepared
-        .objects
-        .iter()
-        .map(|o| FrameObject {
-            prepared: o,
-            origin: (o.surface.origin() - camera.eye).as_vec3(),
-            eye: camera.eye - o.surface.origin(),
-        })
-        .collect()
 }

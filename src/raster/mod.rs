@@ -1,6 +1,6 @@
 //! Camera, clipping, triangle setup, edge-function scan conversion into tiles, framebuffer.
-//! `render` (render.rs) is the front door: a prepared scene, one or more passes
-//! (`RenderTarget`) and a `FragmentShader` in, pixels out.
+//! `render` (render.rs) is the front door: the frame's objects (any type that gives a
+//! `PlacedMesh`), one or more passes (`RenderTarget`) and a `FragmentShader` in, pixels out.
 //!
 //! The stages follow the GL pipeline: vertices are moved into camera-relative space (in f64, so
 //! scenes far from the origin keep their precision) and projected to clip space; triangles are
@@ -16,6 +16,7 @@ mod frame_stats;
 mod framebuffer;
 mod interpolation;
 mod pixel_rect;
+mod placed_mesh;
 mod refine;
 mod render;
 mod render_target;
@@ -36,11 +37,12 @@ mod window;
 pub use bin::{TILE_SIZE, TileBins};
 pub use clip::{ClipVertex, clip_triangle};
 pub use depth_map::{DepthMap, DepthView, render_depth};
-pub use fragment::{Fragment, FragmentShader, FrameObject, PerFragment, frame_objects};
+pub use fragment::{Fragment, FragmentShader};
 pub use frame_stats::FrameStats;
 pub use framebuffer::{Blend, Framebuffer, encode_srgb8, linear_to_srgb8};
 pub use interpolation::Interpolation;
 pub use pixel_rect::PixelRect;
+pub use placed_mesh::PlacedMesh;
 pub use refine::{Refine, Refinement, TileRows};
 pub use render::{render, render_pass};
 pub use render_target::{FrameOutput, RenderTarget, Srgb8Strips};

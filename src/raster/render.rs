@@ -1,20 +1,22 @@
-//! The rasterizer's front door: `render` turns a prepared scene into pixels for one or more
+//! The rasterizer's front door: `render` turns the frame's objects into pixels for one or more
 //! passes, with any fragment program: transform, cull, clip and set up the triangles
 //! (`screen_triangles`), bin them to tiles, then tile by tile resolve visibility and run the
 //! program once for each visible pixel (`strips`, `tile`).
 
-use super::fragment::{FragmentShader, frame_objects};
+use super::fragment::FragmentShader;
 use super::frame_stats::FrameStats;
 use super::framebuffer::{Blend, Framebuffer};
+use super::placed_mesh::PlacedMesh;
 use super::refine::Refinement;
 use super::render_target::{FrameOutput, RenderTarget};
 use super::setup::Viewport;
 use super::strips::{Pass, STRIP_ROWS, SetUp, StripBuffers, StripJob};
 use super::tile::TileBuffers;
 use super::top_first::map_top_first;
-use crate::scene::PreparedScene;
+use glam::Vec3;
 
-/// Renders `passes` of a frame with any fragment program into `output`: transform, cull, clip,
+/// Renders `passes` of a frame of `objects` (the program's own, each giving its mesh) over
+/// `background` with any fragment program into `output`: transform, cull, clip,
 /// set up, bin, then per tile resolve visibility and run the program once for each visible
 /// pixel. Every pixel ends shaded or background, so no separate clear pass is needed; tiles that
 /// were all background in the last render into a framebuffer, and still are, are not
@@ -28,10 +30,11 @@ use crate::scene::PreparedScene;
 /// footprint, blend and depth writes. With a `refinement`, the passes from its `from_pass` on
 /// render only the pixels the earlier passes moved (see `Refinement`), decided tile by tile as
 /// each tile's earlier passes finish.
-pub fn render(
-    prepared: &PreparedScene,
+pub fn render<S: FragmentShader>(
+    objects: &[S::Object<'_>],
+    background: Vec3,
     passes: &[RenderTarget],
-    shader: &impl FragmentShader,
+    shader: &S,
     output: FrameOutput,
     refinement: Option<Refinement>,
 ) -> FrameStats {
@@ -54,15 +57,14 @@ pub fn render(
         );
     }
     let viewport = last.viewport;
-    let objects = frame_objects(prepared, last.camera);
     let derivatives: Vec<bool> = objects
         .iter()
         .map(|o| shader.reads_derivatives(o))
         .collect();
-    let set_up = SetUp::new(&objects, targets, last);
+    let set_up = SetUp::new(objects, targets, last);
     let passes: Vec<Pass<_>> = targets
         .iter()
-        .map(|target| Pass::new(&objects, &set_up, target, shader, &derivatives))
+        .map(|target| Pass::new(objects, &set_up, target, shader, &derivatives))
         .collect();
     let tiles_x = passes[0].bins.tiles_x;
     let strips_y = viewport.height.div_ceil(STRIP_ROWS);
@@ -70,7 +72,7 @@ pub fn render(
         passes: &passes,
         last,
         viewport,
-        background: prepared.scene.background,
+        background,
         tiles_x,
         finished_strips,
         bytes_only: framebuffer.is_none(),
@@ -118,7 +120,7 @@ pub fn render(
     .into_iter()
     .fold((0, 0), |a, b| (a.0 + b.0, a.1 + b.1));
     FrameStats {
-        triangles: prepared.triangle_count(),
+        triangles: objects.iter().map(|o| o.mesh().indices.len()).sum(),
         rasterized_triangles: passes.iter().map(|p| p.triangles.len()).sum(),
         fragments,
         flattened,
@@ -164,12 +166,20 @@ fn refined_strips<'r>(
 
 /// One pass of `target` into `framebuffer` (resized to it), depth kept: `render` for the
 /// commonest case.
-pub fn render_pass(
-    prepared: &PreparedScene,
+pub fn render_pass<S: FragmentShader>(
+    objects: &[S::Object<'_>],
+    background: Vec3,
     target: &RenderTarget,
-    shader: &impl FragmentShader,
+    shader: &S,
     framebuffer: &mut Framebuffer,
 ) -> FrameStats {
     let output = FrameOutput::Framebuffer(framebuffer);
-    render(prepared, std::slice::from_ref(target), shader, output, None)
+    render(
+        objects,
+        background,
+        std::slice::from_ref(target),
+        shader,
+        output,
+        None,
+    )
 }

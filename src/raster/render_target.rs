@@ -5,7 +5,7 @@ use super::framebuffer::{Blend, Framebuffer};
 use super::interpolation::Interpolation;
 use super::setup::Viewport;
 use super::window::ImageWindow;
-use crate::scene::Camera;
+use crate::camera::Camera;
 use glam::Mat4;
 
 /// Where a frame goes and how it is seen.

@@ -1,7 +1,7 @@
 //! The view ray through each sample point of a pass, handed to shading with its fragments.
 
 use super::view_rays::ViewRays;
-use crate::scene::Camera;
+use crate::camera::Camera;
 use glam::{DVec2, DVec3, Vec3};
 
 /// The direction through each sample point of one pass, camera-relative and scaled to unit

@@ -2,24 +2,25 @@
 //! up, in submission order, in parallel pieces joined in order.
 
 use super::clip::{ClipVertex, clip_triangle, inside_clip_volume};
-use super::fragment::FrameObject;
 use super::interpolation::Interpolation;
+use super::placed_mesh::PlacedMesh;
 use super::render_target::RenderTarget;
 use super::setup::{
     PlacedTriangle, ScreenTriangle, ShiftSpan, TrianglePlanes, Viewport, snap_vertex,
 };
-use glam::{Mat4, Vec4};
+use crate::surface::Mesh;
+use glam::{Mat4, Vec3, Vec4};
 use rayon::prelude::*;
 
 /// Transforms, culls, clips and sets up every triangle of the scene, in submission order.
-pub fn screen_triangles(objects: &[FrameObject], target: &RenderTarget) -> Vec<ScreenTriangle> {
+pub fn screen_triangles(objects: &[impl PlacedMesh], target: &RenderTarget) -> Vec<ScreenTriangle> {
     shifted_screen_triangles(objects, target, &ShiftSpan::NONE)
 }
 
 /// `screen_triangles` for passes whose sample points are shifted within `span` (see
 /// `ScreenTriangle::new`).
 pub(super) fn shifted_screen_triangles(
-    objects: &[FrameObject],
+    objects: &[impl PlacedMesh],
     target: &RenderTarget,
     span: &ShiftSpan,
 ) -> Vec<ScreenTriangle> {
@@ -55,19 +56,19 @@ const SETUP_PIECES_PER_THREAD: usize = 4;
 /// Transforms one object's vertices and turns its triangles into screen triangles, in parallel
 /// pieces that hold them in order.
 fn object_triangle_pieces(
-    object: &FrameObject,
+    object: &impl PlacedMesh,
     index: u32,
     target: &RenderTarget,
     view_projection: Mat4,
     span: &ShiftSpan,
 ) -> Vec<Vec<ScreenTriangle>> {
-    let mesh = &object.prepared.mesh;
+    let (mesh, origin) = (object.mesh(), object.origin());
     let (viewport, guard) = (target.viewport, target.viewport.guard_band());
     let (clip_positions, vertices) = mesh
         .positions
         .par_iter()
         .map(|&p| {
-            let position = view_projection * (object.origin + p).extend(1.0);
+            let position = view_projection * (origin + p).extend(1.0);
             // Snapping rounds: a library call per value in baseline x86-64.
             let vertex = crate::simd::widest_rounding(
                 #[inline(always)]
@@ -77,11 +78,12 @@ fn object_triangle_pieces(
         })
         .unzip();
     let setup = ObjectSetup {
-        object,
+        mesh,
+        origin,
         index,
         clip_positions,
         vertices,
-        cull_back_faces: object.prepared.surface.encloses(target.camera.eye) == Some(true),
+        cull_back_faces: object.cull_back_faces(),
         viewport,
         interpolation: target.interpolation,
         guard,
@@ -115,7 +117,9 @@ fn object_triangle_pieces(
 
 /// What setting up one object's triangles for a frame needs.
 struct ObjectSetup<'a> {
-    object: &'a FrameObject<'a>,
+    mesh: &'a Mesh,
+    /// The mesh's anchor relative to the eye.
+    origin: Vec3,
     index: u32,
     clip_positions: Vec<Vec4>,
     /// By vertex, as `clip_positions`: a vertex is shared by several triangles.
@@ -151,13 +155,10 @@ impl ObjectSetup<'_> {
     /// Culls, clips and sets up the mesh triangle `corners`, pushing what is left onto `out`.
     #[inline(always)]
     fn push(&self, corners: &[u32; 3], out: &mut Vec<ScreenTriangle>) {
-        let mesh = &self.object.prepared.mesh;
+        let mesh = self.mesh;
         if self.cull_back_faces {
             let p = corners.map(|i| mesh.positions[i as usize]);
-            let facing_away = (p[1] - p[0])
-                .cross(p[2] - p[0])
-                .dot(self.object.origin + p[0])
-                >= 0.0;
+            let facing_away = (p[1] - p[0]).cross(p[2] - p[0]).dot(self.origin + p[0]) >= 0.0;
             if facing_away {
                 return;
             }

@@ -1,11 +1,12 @@
-//! A frame's strips of tiles, each rendered by every pass of `render_passes_into` tile by tile,
+//! A frame's strips of tiles, each rendered by every pass of `render` tile by tile,
 //! and handed on as 8-bit sRGB when asked.
 
 use super::bin::{TILE_SIZE, TileBins};
-use super::fragment::{FragmentShader, FrameObject};
+use super::fragment::FragmentShader;
 use super::framebuffer::{Blend, encode_srgb8};
 use super::interpolation::Interpolation;
 use super::pixel_rect::PixelRect;
+use super::placed_mesh::PlacedMesh;
 use super::refine::{Refine, keep_before, mark_none};
 use super::render_target::{RenderTarget, Srgb8Strips};
 use super::sample_rays::SampleRays;
@@ -36,8 +37,8 @@ fn strip_tile_rect(viewport: Viewport, tx: u32, strip: u32) -> PixelRect {
 }
 
 /// What every strip of a render shares.
-pub(super) struct StripJob<'a, S> {
-    pub passes: &'a [Pass<'a, S>],
+pub(super) struct StripJob<'a, 'o, S: FragmentShader> {
+    pub passes: &'a [Pass<'a, 'o, S>],
     pub last: &'a RenderTarget<'a>,
     pub viewport: Viewport,
     pub background: Vec3,
@@ -59,7 +60,7 @@ pub(super) struct StripBuffers<'a> {
     pub refined: &'a mut [bool],
 }
 
-impl<S: FragmentShader> StripJob<'_, S> {
+impl<S: FragmentShader> StripJob<'_, '_, S> {
     /// Renders every pass of strip `index`, tile by tile, and hands its bytes on if asked; the
     /// fragments shaded and flattened.
     pub fn render(
@@ -152,7 +153,7 @@ fn encode_tile(color: &[Vec3], width: u32, rect: &PixelRect, bytes: &mut [u8]) {
     }
 }
 
-/// The triangles of `render_passes_into` set up once and binned, shared by all its passes, which
+/// The triangles of `render` set up once and binned, shared by all its passes, which
 /// differ only in where they sample in each pixel: each triangle's bounds hold the pixels
 /// whose sample point falls in its box in any of the passes.
 pub(super) struct SetUp {
@@ -162,8 +163,12 @@ pub(super) struct SetUp {
 
 impl SetUp {
     /// For `targets`, passes that share everything with `last` but their sample shifts (see
-    /// `render_passes_into`).
-    pub fn new(objects: &[FrameObject], targets: &[RenderTarget], last: &RenderTarget) -> SetUp {
+    /// `render`).
+    pub fn new(
+        objects: &[impl PlacedMesh],
+        targets: &[RenderTarget],
+        last: &RenderTarget,
+    ) -> SetUp {
         let span = ShiftSpan::of(targets.iter().map(|t| SampleShift::new(t.window.offset)));
         let triangles = shifted_screen_triangles(objects, last, &span);
         let bins = TileBins::new(last.viewport, &triangles);
@@ -171,25 +176,25 @@ impl SetUp {
     }
 }
 
-/// One pass of `render_passes_into`: its target and the triangles all its passes share.
-pub(super) struct Pass<'a, S> {
+/// One pass of `render`: its target and the triangles all its passes share.
+pub(super) struct Pass<'a, 'o, S: FragmentShader> {
     pub target: &'a RenderTarget<'a>,
     pub triangles: &'a [ScreenTriangle],
     pub bins: &'a TileBins,
-    frame: TileFrame<'a, S>,
+    frame: TileFrame<'a, 'o, S>,
     /// Whether a tile's known background (colour and depth) can be relied on and recorded: only
     /// when this pass writes every pixel, colour and depth, and replaces what was there.
     whole_and_replacing: bool,
 }
 
-impl<'a, S: FragmentShader> Pass<'a, S> {
+impl<'a, 'o, S: FragmentShader> Pass<'a, 'o, S> {
     pub fn new(
-        objects: &'a [FrameObject<'a>],
+        objects: &'a [S::Object<'o>],
         set_up: &'a SetUp,
         target: &'a RenderTarget<'a>,
         shader: &'a S,
         derivatives: &'a [bool],
-    ) -> Pass<'a, S> {
+    ) -> Pass<'a, 'o, S> {
         let shift = SampleShift::new(target.window.offset);
         let window = &target.window;
         let view_rays = ViewRays::new(target.camera, window.full);

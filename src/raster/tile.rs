@@ -2,7 +2,7 @@
 //! pixels as one batch.
 
 use super::bin::TILE_SIZE;
-use super::fragment::{Fragment, FragmentShader, FrameObject};
+use super::fragment::{Fragment, FragmentShader};
 use super::framebuffer::{Blend, encode_srgb8, linear_to_srgb8};
 use super::pixel_rect::PixelRect;
 use super::row_cover::{COVER_LANES, CoverPath, RowNearest, padded_len};
@@ -310,8 +310,8 @@ impl TileBuffers {
 }
 
 /// What every tile of a frame shares.
-pub struct TileFrame<'a, S> {
-    pub objects: &'a [FrameObject<'a>],
+pub struct TileFrame<'a, 'o, S: FragmentShader> {
+    pub objects: &'a [S::Object<'o>],
     pub shader: &'a S,
     pub perspective: bool,
     /// Sample spacing in pixels: scales the (u,v) derivatives (see `RenderTarget::footprint`).
@@ -351,7 +351,7 @@ struct FragmentPlanes {
 
 impl FragmentMaker {
     #[inline(always)]
-    fn new<S>(t: &ScreenTriangle, frame: &TileFrame<S>, y: u32) -> FragmentMaker {
+    fn new<S: FragmentShader>(t: &ScreenTriangle, frame: &TileFrame<S>, y: u32) -> FragmentMaker {
         FragmentMaker {
             t: FragmentPlanes {
                 object: t.object,

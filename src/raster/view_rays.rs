@@ -1,7 +1,7 @@
 //! The camera's rays through pixel centres, built exactly as the rasterizer's frustum.
 
 use super::setup::Viewport;
-use crate::scene::Camera;
+use crate::camera::Camera;
 use crate::surface::normalize_or;
 use glam::{DVec3, Vec3};
 

@@ -1,12 +1,10 @@
 //! The reference renderer: one exact ray per pixel through the same shader as the rasterizer.
 
-use crate::raster::{
-    Fragment, FragmentShader, FrameObject, Framebuffer, SampleRays, ViewRays, Viewport,
-    frame_objects,
-};
+use crate::raster::{Fragment, Framebuffer, SampleRays, ViewRays, Viewport};
+use crate::render::SceneShader;
 use crate::scene::Camera;
 use crate::scene::PreparedScene;
-use crate::shade::nearest_true_hit;
+use crate::shade::{FrameObject, frame_objects, nearest_true_hit};
 use crate::surface::{Hit, uv_derivatives};
 use glam::{DVec2, DVec3, Vec3};
 use rayon::prelude::*;
@@ -26,7 +24,7 @@ pub fn render_reference(
     prepared: &PreparedScene,
     camera: &Camera,
     viewport: Viewport,
-    shader: &impl FragmentShader,
+    shader: &impl SceneShader,
 ) -> (Framebuffer, ReferenceStats) {
     let mut framebuffer = Framebuffer::new(0, 0, Vec3::ZERO);
     let stats = render_reference_into(prepared, camera, viewport, shader, &mut framebuffer);
@@ -39,7 +37,7 @@ pub fn render_reference_into(
     prepared: &PreparedScene,
     camera: &Camera,
     viewport: Viewport,
-    shader: &impl FragmentShader,
+    shader: &impl SceneShader,
     framebuffer: &mut Framebuffer,
 ) -> ReferenceStats {
     let rays = ViewRays::new(camera, viewport);
@@ -52,7 +50,7 @@ pub fn render_rays_into(
     camera: &Camera,
     viewport: Viewport,
     rays: ViewRays,
-    shader: &impl FragmentShader,
+    shader: &impl SceneShader,
     framebuffer: &mut Framebuffer,
 ) -> ReferenceStats {
     framebuffer.resize(viewport.width, viewport.height);

@@ -2,7 +2,6 @@
 
 mod binding_file;
 mod by_name;
-mod camera;
 mod checked_values;
 pub mod dependencies;
 pub(crate) mod exact_arrays;
@@ -33,8 +32,8 @@ pub use prepared_scene::{PreparedObject, PreparedScene};
 pub use presets::{PRESET_NAMES, preset, preset_file};
 pub use quality_table::{KnobPlace, KnobSetting, QualityTable, written_table};
 
+pub use crate::camera::Camera;
 use crate::surface::Surface;
-pub use camera::Camera;
 use glam::{DVec3, Vec3};
 
 /// A scene ready to render. Colours are linear RGB.

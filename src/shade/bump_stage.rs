@@ -2,11 +2,12 @@
 //! gradient, from a pattern, a height image or a normal map, by the shader's gradient method.
 
 use super::colour_stage::{mapping_on, surface_points};
+use super::frame_object::FrameObject;
 use super::gradient::{GradientMethod, central_difference, shifted_fragments};
 use super::pattern_batch::{PatternBatch, Sites};
 use super::shade_scratch::{HeightLookups, ShadeScratch, Shifted};
 use crate::pattern::OutputKind;
-use crate::raster::{Fragment, FrameObject};
+use crate::raster::Fragment;
 use crate::scene::BumpSource;
 use crate::surface::{Frame, Frames, Surface};
 use crate::texture::{Footprint, HeightSample};

@@ -1,9 +1,10 @@
 //! The colour stage of the scene's fragment program: each fragment's diffuse colour, from the
 //! material, a colour pattern or an image (over the material where it is transparent).
 
+use super::frame_object::FrameObject;
 use super::pattern_batch::Sites;
 use super::shade_scratch::ShadeScratch;
-use crate::raster::{Fragment, FrameObject};
+use crate::raster::Fragment;
 use crate::scene::Texturing;
 use crate::surface::{Frames, Surface};
 use crate::texture::{Footprint, Mapping, SurfacePoint, SurfaceUv, Texel, Wrap};

@@ -6,7 +6,8 @@
 //! first (where two objects touch or cut each other) becomes that neighbour's.
 
 use super::exact_hits::{ExactScratch, true_hits_along};
-use crate::raster::{Fragment, FrameObject, SampleRays};
+use super::frame_object::FrameObject;
+use crate::raster::{Fragment, SampleRays};
 use crate::surface::{Hit, Ray, Surface, TrueHit, intersect};
 use glam::{DVec3, Vec3};
 use std::ops::{Range, RangeInclusive};

@@ -5,7 +5,8 @@
 
 use super::exact_coverage::{Neighbours, cast_dropped, nearer_neighbours};
 use super::exact_hits::{DerivativeScratch, ExactScratch, true_hits_along};
-use crate::raster::{Fragment, FrameObject, SampleRays};
+use super::frame_object::FrameObject;
+use crate::raster::{Fragment, SampleRays};
 use crate::surface::{Frames, Surface, uv_derivatives};
 use glam::Vec2;
 

@@ -5,12 +5,13 @@
 use super::bump::{
     NormalForm, blinn_normals, blinn_normals_on_flat, bumped_normal, full_normals_in_closed_form,
 };
+use super::frame_object::FrameObject;
 use super::lighting::{
     FrameLights, Reach, RelativeLight, blinn_phong_many, faces_light, facing_sign,
 };
 use super::shade_scratch::ShadeScratch;
 use super::shadowing::Shadowing;
-use crate::raster::{Fragment, FrameObject};
+use crate::raster::Fragment;
 use crate::scene::Material;
 use glam::Vec3;
 use std::ops::Range;

@@ -7,6 +7,7 @@ use super::bump_stage::BumpStage;
 use super::colour_stage::base_colors;
 use super::exact_coverage::Neighbours;
 use super::exact_point::{SurfacePointSource, exact_fragments, true_hit_derivatives};
+use super::frame_object::FrameObject;
 use super::gradient::GradientMethod;
 use super::light_stage::LightStage;
 use super::lighting::{FrameLights, Reach, facing_sign};
@@ -15,7 +16,7 @@ use super::shader_mode::ShaderMode;
 use super::shadowing::Shadowing;
 use super::vertex_normals::VertexNormals;
 use crate::pattern::Precision;
-use crate::raster::{Fragment, FragmentShader, FrameObject, SampleRays};
+use crate::raster::{Fragment, FragmentShader, SampleRays};
 use crate::scene::Camera;
 use crate::scene::{BumpSource, Scene, Texturing};
 use crate::surface::{Frames, ModelSurface, Surface, Vectors};
@@ -74,6 +75,7 @@ impl LitShader {
 }
 
 impl FragmentShader for LitShader {
+    type Object<'o> = FrameObject<'o>;
     type Scratch = ShadeScratch;
 
     fn scratch(&self) -> ShadeScratch {
@@ -420,10 +422,11 @@ fn single_object(fragments: &[Fragment]) -> Option<u32> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::raster::{RenderTarget, Viewport, frame_objects};
+    use crate::raster::{RenderTarget, Viewport};
     use crate::render::render_with;
     use crate::scene::PreparedScene;
     use crate::shade::colour_stage::over_material;
+    use crate::shade::frame_objects;
     use crate::texture::{Mapping, SurfaceUv, Texel, Wrap};
     use glam::{Vec2, Vec4};
 
@@ -464,6 +467,7 @@ mod tests {
     struct AllDerivatives<'a>(&'a LitShader);
 
     impl FragmentShader for AllDerivatives<'_> {
+        type Object<'o> = FrameObject<'o>;
         type Scratch = ShadeScratch;
 
         fn scratch(&self) -> ShadeScratch {

@@ -251,10 +251,15 @@ impl LightMaps {
         views: Vec<MapView>,
         spheres: CasterSpheres,
     ) -> LightMaps {
+        let meshes: Vec<_> = casters
+            .iter()
+            .map(|&index| &prepared.objects[index])
+            .map(|object| (object.surface.origin(), &object.mesh))
+            .collect();
         let faces = views
             .into_par_iter()
             .map(|view| {
-                let map = distances(render_depth(prepared, casters, &view.view), &view);
+                let map = distances(render_depth(&meshes, &view.view), &view);
                 ShadowFace {
                     blocks: DepthBlocks::new(&map),
                     map,

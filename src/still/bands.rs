@@ -5,9 +5,10 @@ use super::contrast::contrast_mask;
 use super::refine_rule::RefineRule;
 use super::samples::Supersampling;
 use crate::raster::{
-    Blend, FragmentShader, FrameOutput, FrameStats, Framebuffer, ImageWindow, Interpolation,
-    Refinement, RenderTarget, ScreenTriangle, Srgb8Strips, TILE_SIZE, Viewport, render,
+    Blend, FrameOutput, FrameStats, Framebuffer, ImageWindow, Interpolation, Refinement,
+    RenderTarget, ScreenTriangle, Srgb8Strips, TILE_SIZE, Viewport,
 };
+use crate::render::{SceneShader, render_scene};
 use crate::scene::Camera;
 use crate::scene::PreparedScene;
 use glam::{Vec2, Vec3};
@@ -93,7 +94,7 @@ impl BandBuffers {
     }
 }
 
-impl<S: FragmentShader> BandJob<'_, S> {
+impl<S: SceneShader> BandJob<'_, S> {
     /// The contrast threshold when this job shades pixel centres first and supersamples only
     /// where they differ (adaptive, and more than one sample).
     fn adaptive_threshold(&self) -> Option<f32> {
@@ -275,7 +276,7 @@ struct Band<'a, 'j, S> {
     finished_strips: Option<&'a Srgb8Strips<'a>>,
 }
 
-impl<S: FragmentShader> Band<'_, '_, S> {
+impl<S: SceneShader> Band<'_, '_, S> {
     /// A pass of the band sampling at `offset` with `footprint`.
     fn target(&self, offset: Vec2, footprint: f32, blend: Blend) -> RenderTarget<'_> {
         RenderTarget {
@@ -304,7 +305,7 @@ impl<S: FragmentShader> Band<'_, '_, S> {
             Some(strips) => FrameOutput::Strips(strips),
             None => FrameOutput::Framebuffer(&mut buffers.frame),
         };
-        render(self.job.prepared, &[target], self.job.shader, output, None)
+        render_scene(self.job.prepared, &[target], self.job.shader, output, None)
     }
 
     /// The centre pass and its contrast mask (the band's outer rows marked wholly where another
@@ -313,7 +314,7 @@ impl<S: FragmentShader> Band<'_, '_, S> {
         let threshold = self.job.adaptive_threshold().expect("adaptive");
         let centre = self.target(Vec2::ZERO, footprint, Blend::Replace);
         let output = FrameOutput::Framebuffer(&mut buffers.frame);
-        let stats = render(self.job.prepared, &[centre], self.job.shader, output, None);
+        let stats = render_scene(self.job.prepared, &[centre], self.job.shader, output, None);
         contrast_mask(&buffers.frame, threshold, &mut buffers.mask);
         let (width, pixels) = (self.viewport.width as usize, buffers.mask.len());
         if self.rows.start > 0 {
@@ -382,7 +383,7 @@ impl<S: FragmentShader> Band<'_, '_, S> {
             rule,
             refined: &mut decided,
         });
-        let stats = render(
+        let stats = render_scene(
             self.job.prepared,
             &group,
             self.job.shader,
@@ -433,7 +434,7 @@ fn add_stats(a: FrameStats, b: FrameStats) -> FrameStats {
 
 /// Renders a whole image in memory with supersampling (for views that fit in memory: the
 /// workbench's export, benchmarks). The depth is the last pass's.
-pub fn render_supersampled<S: FragmentShader>(
+pub fn render_supersampled<S: SceneShader>(
     job: &BandJob<S>,
     buffers: &mut BandBuffers,
 ) -> (Framebuffer, FrameStats) {

@@ -5,7 +5,8 @@
 use super::bands::{BandBuffers, BandJob, band_rows};
 use super::in_order::{InOrderWriter, SpareRows};
 use super::row_sink::RowSink;
-use crate::raster::{FragmentShader, FrameStats, STRIP_ROWS, Srgb8Strips};
+use crate::raster::{FrameStats, STRIP_ROWS, Srgb8Strips};
+use crate::render::SceneShader;
 use std::ops::Range;
 
 /// Why a still stopped before its last row.
@@ -19,7 +20,7 @@ pub enum StillStop {
 
 /// Renders `job` band by band within `budget_bytes` of band memory, handing each band's rows to
 /// `sink` and the fraction done (0 to 1, after every pass) to `progress`.
-pub fn stream_still<S: FragmentShader>(
+pub fn stream_still<S: SceneShader>(
     job: &BandJob<S>,
     budget_bytes: u64,
     sink: &mut dyn RowSink,
@@ -62,7 +63,7 @@ pub fn stream_still<S: FragmentShader>(
 /// the rendering threads write in order between strips (see `InOrderWriter`), so a PNG's
 /// deflate (serial) runs within the render instead of after it. The band's render and the
 /// writing's result.
-fn render_and_write<S: FragmentShader>(
+fn render_and_write<S: SceneShader>(
     job: &BandJob<S>,
     rows: Range<u32>,
     buffers: &mut BandBuffers,

@@ -4,8 +4,9 @@
 //! same reference `bumpwork bench` measures against.
 
 use crate::quality::Quality;
-use crate::raster::{FrameStats, Framebuffer, RenderTarget, render_pass};
+use crate::raster::{FrameStats, Framebuffer, RenderTarget};
 use crate::reference::{error_heat_map, exact_shader, metrics::psnr, render_reference};
+use crate::render::render_scene_pass;
 use crate::scene::PreparedScene;
 use crate::shade::Showing;
 use crate::shadow::ShadowMaps;
@@ -24,7 +25,7 @@ pub fn render_error_view(
     framebuffer: &mut Framebuffer,
 ) -> (FrameStats, f64) {
     let shader = quality.shader_with_maps(prepared, target.camera, maps, Showing::at(time));
-    let stats = render_pass(prepared, target, &shader, framebuffer);
+    let stats = render_scene_pass(prepared, target, &shader, framebuffer);
     let exact = exact_shader(prepared, target.camera, time);
     let (reference, _) = render_reference(prepared, target.camera, target.viewport, &exact);
     let psnr_db = psnr(framebuffer, &reference);

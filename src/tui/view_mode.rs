@@ -3,7 +3,8 @@
 
 use super::error_view::render_error_view;
 use crate::quality::Quality;
-use crate::raster::{FrameStats, Framebuffer, RenderTarget, render_pass};
+use crate::raster::{FrameStats, Framebuffer, RenderTarget};
+use crate::render::render_scene_pass;
 use crate::scene::PreparedScene;
 use crate::shade::{ShaderMode, Showing};
 use crate::shadow::ShadowCache;
@@ -91,7 +92,7 @@ pub fn render_view_mode(
     };
     let shader = quality.shader_with_maps(prepared, target.camera, maps, showing);
     RenderedFrame {
-        stats: render_pass(prepared, target, &shader, framebuffer),
+        stats: render_scene_pass(prepared, target, &shader, framebuffer),
         psnr_db: None,
     }
 }

@@ -1,7 +1,8 @@
 //! The tessellation drawn over a rendered frame: the visible edges of the screen triangles.
 
-use crate::raster::{Framebuffer, RenderTarget, ScreenTriangle, frame_objects, screen_triangles};
+use crate::raster::{Framebuffer, RenderTarget, ScreenTriangle, screen_triangles};
 use crate::scene::PreparedScene;
+use crate::shade::frame_objects;
 use glam::{Vec2, Vec3};
 
 const LINE_COLOR: Vec3 = Vec3::new(1.0, 0.85, 0.2);

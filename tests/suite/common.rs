@@ -2,12 +2,13 @@
 #![allow(dead_code)]
 
 use bumpwork::raster::{
-    ClipVertex, Fragment, FrameObject, Framebuffer, Interpolation, PerFragment, PixelRect,
-    RenderTarget, SampleShift, ScreenTriangle, ShiftSpan, TrianglePlanes, Viewport, scan_shifted,
+    ClipVertex, Fragment, Framebuffer, Interpolation, PixelRect, RenderTarget, SampleShift,
+    ScreenTriangle, ShiftSpan, TrianglePlanes, Viewport, scan_shifted,
 };
 use bumpwork::scene::Camera;
 use bumpwork::scene::PreparedScene;
 use bumpwork::scene::Scene;
+use bumpwork::shade::{FrameObject, PerFragment};
 use bumpwork::surface::Tessellation;
 use glam::{Vec2, Vec3, Vec4};
 

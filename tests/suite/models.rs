@@ -4,10 +4,11 @@
 use crate::cli_support::{assert_user_error, bumpwork, run_ok, stderr, temp_dir};
 use crate::common::render_with;
 use crate::reference::support::{SMALL, raster_error, render_both};
-use bumpwork::raster::{Fragment, FrameObject, PerFragment, RenderTarget};
+use bumpwork::raster::{Fragment, RenderTarget};
 use bumpwork::reference::render_reference;
 use bumpwork::scene::PreparedScene;
 use bumpwork::scene::preset;
+use bumpwork::shade::{FrameObject, PerFragment};
 use bumpwork::surface::Tessellation;
 use glam::Vec3;
 

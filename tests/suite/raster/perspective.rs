@@ -102,8 +102,9 @@ fn affine_uv_fails_the_same_check() {
 #[test]
 fn screen_derivatives_of_uv_match_neighbouring_pixels() {
     use crate::common::render_with;
-    use bumpwork::raster::{Fragment, FrameObject, PerFragment, RenderTarget};
+    use bumpwork::raster::{Fragment, RenderTarget};
     use bumpwork::scene::PreparedScene;
+    use bumpwork::shade::{FrameObject, PerFragment};
     use bumpwork::surface::Tessellation;
     let viewport = Viewport {
         width: 320,

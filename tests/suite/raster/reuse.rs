@@ -3,12 +3,11 @@
 //! must hold exactly what a fresh framebuffer would. Renders restricted to a mask, or adding
 //! weighted colours into what is there (supersampling's passes), touch only their pixels.
 
-use bumpwork::raster::render_pass;
 use bumpwork::raster::{
     Blend, FrameOutput, Framebuffer, ImageWindow, Refinement, RenderTarget, STRIP_ROWS,
-    Srgb8Strips, Viewport, render,
+    Srgb8Strips, Viewport,
 };
-use bumpwork::render::render_lit;
+use bumpwork::render::{render_lit, render_scene, render_scene_pass};
 use bumpwork::scene::PreparedScene;
 use bumpwork::scene::{Scene, preset};
 use bumpwork::shade::LitShader;
@@ -49,7 +48,7 @@ fn fresh(prepared: &PreparedScene, viewport: Viewport) -> Framebuffer {
 fn render_reusing(prepared: &PreparedScene, viewport: Viewport, framebuffer: &mut Framebuffer) {
     let camera = &prepared.scene.camera;
     let shader = LitShader::new(&prepared.scene, camera);
-    render_pass(
+    render_scene_pass(
         prepared,
         &RenderTarget::new(camera, viewport),
         &shader,
@@ -163,7 +162,7 @@ fn render_writing(
         writes_depth,
         ..RenderTarget::new(camera, SMALL)
     };
-    render_pass(
+    render_scene_pass(
         prepared,
         &target,
         &LitShader::new(&prepared.scene, camera),
@@ -315,10 +314,10 @@ fn passes_rendered_tile_by_tile_equal_the_passes_one_after_another() {
         let passes = shifted_passes(&far, mask);
         let mut want = rendered_once(&far);
         for pass in &passes {
-            render_pass(&far, pass, &shader, &mut want);
+            render_scene_pass(&far, pass, &shader, &mut want);
         }
         let mut got = rendered_once(&far);
-        let stats = render(
+        let stats = render_scene(
             &far,
             &passes,
             &shader,
@@ -368,7 +367,7 @@ fn a_lone_pass_into_strips_alone_hands_on_each_strip_as_the_renders_pixels() {
             ..RenderTarget::new(camera, SMALL)
         };
         let shader = LitShader::new(&far.scene, camera);
-        render(&far, &[target], &shader, FrameOutput::Strips(strips), None)
+        render_scene(&far, &[target], &shader, FrameOutput::Strips(strips), None)
     });
     assert_eq!(indices, every_strip(), "each strip once");
     let want = fresh(&far, SMALL);
@@ -388,7 +387,7 @@ fn passes_rendered_tile_by_tile_hand_on_each_strip_once_finished_as_srgb() {
         let ((), indices, bytes) = hearing_strips(|strips| {
             let passes = shifted_passes(&far, mask);
             let output = FrameOutput::FramebufferAndStrips(&mut framebuffer, strips);
-            render(&far, &passes, &shader, output, None);
+            render_scene(&far, &passes, &shader, output, None);
         });
         assert_eq!(indices, every_strip(), "each strip once");
         let expected: Vec<u8> = framebuffer.to_srgb8().into_iter().flatten().collect();
@@ -449,7 +448,7 @@ fn refining_passes_render_only_the_moved_pixels_as_separate_passes_would() {
             let before = rendered_once(&far);
             let mut want = before.clone();
             for pass in &passes[..2] {
-                render_pass(&far, pass, &shader, &mut want);
+                render_scene_pass(&far, pass, &shader, &mut want);
             }
             let expected = refined_by_definition(&before, &want, mask, threshold);
             let settled = |i: usize| mask.is_none_or(|m| m[i]) && !expected[i];
@@ -459,7 +458,7 @@ fn refining_passes_render_only_the_moved_pixels_as_separate_passes_would() {
                     mask: Some(&expected),
                     ..*pass
                 };
-                render_pass(&far, &pass, &shader, &mut want);
+                render_scene_pass(&far, &pass, &shader, &mut want);
             }
             let mut got = before.clone();
             let mut refined = vec![true; 3];
@@ -472,7 +471,7 @@ fn refining_passes_render_only_the_moved_pixels_as_separate_passes_would() {
                 refined: &mut refined,
             };
             let output = FrameOutput::Framebuffer(&mut got);
-            render(&far, &passes, &shader, output, Some(refinement));
+            render_scene(&far, &passes, &shader, output, Some(refinement));
             assert!(refined == expected, "{what}: not the moved pixels");
             assert_same(&got, &want, &what);
             let count = expected.iter().filter(|&&r| r).count();

@@ -4,13 +4,14 @@
 
 use crate::common::render_with;
 use crate::common::*;
-use bumpwork::raster::{Fragment, FrameObject, ImageWindow, PerFragment};
+use bumpwork::raster::{Fragment, ImageWindow};
 use bumpwork::raster::{
-    PixelRect, RenderTarget, SampleShift, ShiftSpan, Viewport, frame_objects, scan_shifted,
-    screen_triangles,
+    PixelRect, RenderTarget, SampleShift, ShiftSpan, Viewport, scan_shifted, screen_triangles,
 };
 use bumpwork::scene::PreparedScene;
 use bumpwork::scene::{Light, Material, Object, Scene};
+use bumpwork::shade::frame_objects;
+use bumpwork::shade::{FrameObject, PerFragment};
 use bumpwork::surface::{Sphere, Surface, Tessellation};
 use glam::{DVec3, Vec2, Vec3};
 use proptest::prelude::*;

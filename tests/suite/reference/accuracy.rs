@@ -4,10 +4,11 @@
 
 use crate::common::render_with;
 use crate::reference::support::*;
-use bumpwork::raster::{Fragment, FrameObject, PerFragment, RenderTarget};
+use bumpwork::raster::{Fragment, RenderTarget};
 use bumpwork::reference::render_reference;
 use bumpwork::scene::PreparedScene;
 use bumpwork::scene::preset;
+use bumpwork::shade::{FrameObject, PerFragment};
 use bumpwork::surface::Tessellation;
 use glam::Vec3;
 

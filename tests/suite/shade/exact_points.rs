@@ -6,14 +6,12 @@
 
 use crate::common::render_with;
 use bumpwork::quality::{Coverage, Quality};
-use bumpwork::raster::{
-    Fragment, FragmentShader, FrameObject, PerFragment, RenderTarget, SampleRays, ViewRays,
-    Viewport, frame_objects,
-};
+use bumpwork::raster::{Fragment, FragmentShader, RenderTarget, SampleRays, ViewRays, Viewport};
 use bumpwork::reference::{cast_pixel, render_reference};
 use bumpwork::scene::PreparedScene;
 use bumpwork::scene::{Camera, Material, Object, Scene, preset};
 use bumpwork::shade::{ExactScratch, Neighbours, SurfacePointSource, exact_fragments};
+use bumpwork::shade::{FrameObject, PerFragment, frame_objects};
 use bumpwork::surface::{AxisBasis, Cone, Paraboloid, Sphere, Surface, Tessellation, Torus, Wave};
 use glam::{DVec3, Vec2, Vec3};
 use std::sync::Mutex;
@@ -33,6 +31,7 @@ struct Recorder {
 }
 
 impl FragmentShader for Recorder {
+    type Object<'o> = FrameObject<'o>;
     type Scratch = ExactScratch;
 
     fn scratch(&self) -> ExactScratch {
@@ -348,6 +347,7 @@ struct ObjectIds {
 }
 
 impl FragmentShader for ObjectIds {
+    type Object<'o> = FrameObject<'o>;
     type Scratch = ExactScratch;
 
     fn scratch(&self) -> ExactScratch {

@@ -3,12 +3,12 @@
 
 use crate::common::render_with;
 use bumpwork::raster::{
-    Fragment, FrameObject, FrameStats, Framebuffer, ImageWindow, Interpolation, PerFragment,
-    RenderTarget, Viewport,
+    Fragment, FrameStats, Framebuffer, ImageWindow, Interpolation, RenderTarget, Viewport,
 };
 use bumpwork::scene::Camera;
 use bumpwork::scene::PreparedScene;
 use bumpwork::scene::{Material, Object, Scene};
+use bumpwork::shade::{FrameObject, PerFragment};
 use bumpwork::still::{
     BandBuffers, BandJob, ResolveFilter, RowSink, Supersampling, render_supersampled, stream_still,
 };
