@@ -14,6 +14,7 @@ pub mod measure;
 pub mod memory_budget;
 pub mod model;
 pub mod overrides;
+pub mod palette;
 pub mod pattern;
 pub mod quality;
 pub mod raster;

@@ -1,11 +1,12 @@
 //! An animation as one file, written frame by frame as the frames are rendered, never
 //! half-written (see `output_file`): APNG, every frame exact in 8-bit sRGB, or GIF, each frame
-//! with a 256-colour palette of its own (NeuQuant, from the `gif` crate). Both carry the first
+//! with a 256-colour palette of its own, dithered (`palette`, as sixel pictures are). Both carry the first
 //! frame's recipe: APNG in the text chunks a still has, GIF in a comment.
 
 use super::output_file::OutputFile;
 use super::writeback::WritebackFile;
 use crate::Error;
+use crate::palette::{self, Precision};
 use std::fs::File;
 use std::io::{BufWriter, Write};
 use std::path::Path;
@@ -20,10 +21,6 @@ pub enum AnimationFormat {
 /// The fastest frame rate a GIF plays as asked: its frame times are whole hundredths of a
 /// second, and browsers show frames of under two hundredths for a tenth.
 pub const GIF_MAX_FPS: f64 = 50.0;
-
-/// NeuQuant's sampling: 1 looks at every pixel, 30 at every 30th. 10 is the `gif` crate's
-/// suggestion for quality at a moderate cost.
-const GIF_QUANTIZER_SPEED: i32 = 10;
 
 /// An animation being written: frames go in in order; `finish` completes it and makes it appear.
 pub struct AnimationFile {
@@ -73,7 +70,10 @@ impl AnimationFile {
                 .map_err(|e| Error::write(&path, e)),
             Encoder::Gif(encoder) => {
                 let (width, height) = (self.size.0 as u16, self.size.1 as u16);
-                let mut frame = gif::Frame::from_rgb_speed(width, height, rgb, GIF_QUANTIZER_SPEED);
+                let picture = palette::indexed(rgb, usize::from(width), Precision::Fine);
+                let palette = picture.palette.concat();
+                let mut frame =
+                    gif::Frame::from_palette_pixels(width, height, picture.indices, palette, None);
                 frame.delay = gif_delay(index, self.fps);
                 encoder
                     .write_frame(&frame)

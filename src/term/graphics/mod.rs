@@ -6,10 +6,9 @@ mod detect;
 pub mod iterm2;
 pub mod kitty;
 pub mod sixel;
-mod sixel_palette;
 
+pub use crate::palette::MAX_COLOURS as SIXEL_MAX_COLOURS;
 pub use detect::{GraphicsFound, Replies, decide, query_terminal};
-pub use sixel_palette::MAX_COLOURS as SIXEL_MAX_COLOURS;
 
 /// A way of sending pixels.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, strum::VariantArray, strum::IntoStaticStr)]

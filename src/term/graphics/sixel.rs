@@ -2,7 +2,7 @@
 //! it, raster attributes giving square pixels and the exact size, bands of six rows run-length
 //! encoded colour by colour.
 
-use super::sixel_palette::indexed;
+use crate::palette::{Precision, indexed};
 use std::fmt::Write as _;
 
 /// The sixel sequence that draws `rgb` (`width` × `height` pixels, 3 bytes each) from the
@@ -10,7 +10,7 @@ use std::fmt::Write as _;
 pub fn image(rgb: &[u8], width: u32, height: u32) -> Vec<u8> {
     let (width, height) = (width as usize, height as usize);
     assert_eq!(rgb.len(), width * height * 3, "3 bytes a pixel");
-    let picture = indexed(rgb, width);
+    let picture = indexed(rgb, width, Precision::Coarse);
     // P2 = 1: pixels no colour is set for keep what was there (there are none).
     let mut out = format!("\x1bP0;1;0q\"1;1;{width};{height}");
     for (index, colour) in picture.palette.iter().enumerate() {

@@ -1,12 +1,50 @@
 //! A palette of at most 256 colours chosen for one picture (median cut over its colours at five
-//! bits a channel) and the picture mapped onto it with Floyd–Steinberg error diffusion.
+//! or six bits a channel, `Precision`) and the picture mapped onto it with Floyd–Steinberg error diffusion: the one
+//! quantizer behind sixel pictures and GIF frames.
 
-/// Colours a sixel palette holds at most (the terminals that take more are rare).
+/// Colours a palette holds at most: a GIF's limit, and a sixel's on all but rare terminals.
 pub const MAX_COLOURS: usize = 256;
 
-/// Bits a channel keeps in the histogram and in the nearest-colour table.
-const BITS: u32 = 5;
-const LEVELS: usize = 1 << BITS;
+/// How finely colours are told apart while the palette is chosen and looked up: the bits of
+/// each channel kept in the histogram and in the nearest-colour table.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Precision {
+    /// Five bits: fewer distinct colours, so fewer and longer colour runs, in less time; for
+    /// the terminal, where a picture's bytes cross the link every frame.
+    Coarse,
+    /// Six bits: a smooth gradient keeps four times the steps; for files (GIF frames).
+    Fine,
+}
+
+impl Precision {
+    fn bits(self) -> u32 {
+        match self {
+            Precision::Coarse => 5,
+            Precision::Fine => 6,
+        }
+    }
+}
+
+/// The histogram's cells: colours with the same leading bits in each channel share one.
+#[derive(Clone, Copy)]
+struct Cells {
+    bits: u32,
+}
+
+impl Cells {
+    fn levels(self) -> usize {
+        1 << self.bits
+    }
+
+    fn count(self) -> usize {
+        self.levels().pow(3)
+    }
+
+    fn of(self, pixel: &[u8]) -> usize {
+        let k = |c: u8| usize::from(c >> (8 - self.bits));
+        (k(pixel[0]) * self.levels() + k(pixel[1])) * self.levels() + k(pixel[2])
+    }
+}
 
 /// A picture as palette indices, and the palette (sRGB, 8 bits a channel).
 pub struct Indexed {
@@ -15,9 +53,12 @@ pub struct Indexed {
 }
 
 /// `rgb` (3 bytes a pixel, `width` across) on a palette of its own, dithered.
-pub fn indexed(rgb: &[u8], width: usize) -> Indexed {
-    let palette = median_cut(&histogram(rgb));
-    let indices = dither(rgb, width, &palette);
+pub fn indexed(rgb: &[u8], width: usize, precision: Precision) -> Indexed {
+    let cells = Cells {
+        bits: precision.bits(),
+    };
+    let palette = median_cut(&histogram(rgb, cells));
+    let indices = dither(rgb, width, &palette, cells);
     Indexed { palette, indices }
 }
 
@@ -29,15 +70,10 @@ struct Bucket {
     sum: [u64; 3],
 }
 
-fn bucket_of(pixel: &[u8]) -> usize {
-    let k = |c: u8| usize::from(c >> (8 - BITS));
-    (k(pixel[0]) * LEVELS + k(pixel[1])) * LEVELS + k(pixel[2])
-}
-
-fn histogram(rgb: &[u8]) -> Vec<Bucket> {
-    let mut counts = vec![(0u64, [0u64; 3]); LEVELS * LEVELS * LEVELS];
+fn histogram(rgb: &[u8], cells: Cells) -> Vec<Bucket> {
+    let mut counts = vec![(0u64, [0u64; 3]); cells.count()];
     for pixel in rgb.chunks_exact(3) {
-        let slot = &mut counts[bucket_of(pixel)];
+        let slot = &mut counts[cells.of(pixel)];
         slot.0 += 1;
         for (sum, &c) in slot.1.iter_mut().zip(pixel) {
             *sum += u64::from(c);
@@ -49,9 +85,9 @@ fn histogram(rgb: &[u8]) -> Vec<Bucket> {
         .filter(|(_, (count, _))| *count > 0)
         .map(|(index, (count, sum))| Bucket {
             key: [
-                (index / (LEVELS * LEVELS)) as u8,
-                (index / LEVELS % LEVELS) as u8,
-                (index % LEVELS) as u8,
+                (index / cells.levels().pow(2)) as u8,
+                (index / cells.levels() % cells.levels()) as u8,
+                (index % cells.levels()) as u8,
             ],
             count,
             sum,
@@ -119,9 +155,10 @@ fn mean(colours: &[Bucket]) -> [u8; 3] {
     [channel(0), channel(1), channel(2)]
 }
 
-/// The palette index nearest each 5-bit bucket, found when first asked for.
+/// The palette index nearest each cell's colours, found when first asked for.
 struct Nearest<'a> {
     palette: &'a [[u8; 3]],
+    cells: Cells,
     table: Vec<u16>,
 }
 
@@ -129,7 +166,7 @@ impl Nearest<'_> {
     const UNKNOWN: u16 = u16::MAX;
 
     fn of(&mut self, pixel: [u8; 3]) -> u8 {
-        let bucket = bucket_of(&pixel);
+        let bucket = self.cells.of(&pixel);
         if self.table[bucket] == Self::UNKNOWN {
             self.table[bucket] = u16::from(closest(self.palette, pixel));
         }
@@ -153,10 +190,11 @@ fn closest(palette: &[[u8; 3]], pixel: [u8; 3]) -> u8 {
 
 /// Floyd–Steinberg: each pixel takes the palette colour nearest it plus the error carried from
 /// its neighbours, and passes its own error on (7/16 right; 3/16, 5/16, 1/16 below).
-fn dither(rgb: &[u8], width: usize, palette: &[[u8; 3]]) -> Vec<u8> {
+fn dither(rgb: &[u8], width: usize, palette: &[[u8; 3]], cells: Cells) -> Vec<u8> {
     let mut nearest = Nearest {
         palette,
-        table: vec![Nearest::UNKNOWN; LEVELS * LEVELS * LEVELS],
+        cells,
+        table: vec![Nearest::UNKNOWN; cells.count()],
     };
     let height = rgb.len() / 3 / width.max(1);
     let mut indices = vec![0u8; width * height];
@@ -192,20 +230,11 @@ fn dither(rgb: &[u8], width: usize, palette: &[[u8; 3]]) -> Vec<u8> {
 mod tests {
     use super::*;
 
-    #[test]
-    fn few_colours_are_kept_exactly_and_many_fit_the_limit() {
-        let two: Vec<u8> = [[200, 10, 10], [10, 10, 200]].repeat(50).concat();
-        let picture = indexed(&two, 10);
-        assert_eq!(picture.palette.len(), 2);
-        for (pixel, &index) in two.chunks(3).zip(&picture.indices) {
-            assert_eq!(picture.palette[usize::from(index)], pixel);
-        }
-        let ramp: Vec<u8> = (0..256 * 64)
-            .flat_map(|i| [(i % 256) as u8, (i / 256 * 4) as u8, 128])
-            .collect();
-        let picture = indexed(&ramp, 256);
+    /// Mean absolute error a channel of `rgb` on its own palette.
+    fn mean_error(rgb: &[u8], width: usize, precision: Precision) -> f64 {
+        let picture = indexed(rgb, width, precision);
         assert!(picture.palette.len() <= MAX_COLOURS);
-        let error: f64 = ramp
+        let total: f64 = rgb
             .chunks(3)
             .zip(&picture.indices)
             .map(|(p, &i)| {
@@ -214,8 +243,40 @@ mod tests {
                     .map(|c| (f64::from(p[c]) - f64::from(q[c])).abs())
                     .sum::<f64>()
             })
-            .sum::<f64>()
-            / ramp.len() as f64;
-        assert!(error < 6.0, "mean error {error} a channel");
+            .sum();
+        total / rgb.len() as f64
+    }
+
+    #[test]
+    fn few_colours_are_kept_exactly_at_either_precision() {
+        let two: Vec<u8> = [[200, 10, 10], [10, 10, 200]].repeat(50).concat();
+        for precision in [Precision::Coarse, Precision::Fine] {
+            let picture = indexed(&two, 10, precision);
+            assert_eq!(picture.palette.len(), 2);
+            for (pixel, &index) in two.chunks(3).zip(&picture.indices) {
+                assert_eq!(picture.palette[usize::from(index)], pixel);
+            }
+        }
+    }
+
+    #[test]
+    fn many_colours_fit_the_limit_and_fine_precision_keeps_a_gradient_closer() {
+        let ramp: Vec<u8> = (0..256 * 64)
+            .flat_map(|i| [(i % 256) as u8, (i / 256 * 4) as u8, 128])
+            .collect();
+        let coarse = mean_error(&ramp, 256, Precision::Coarse);
+        assert!(coarse < 6.0, "mean error {coarse} a channel");
+        // A slow grey ramp, as a lit surface shades: 256 levels over a wide picture.
+        let grey: Vec<u8> = (0..512 * 32)
+            .flat_map(|i| [(i % 512 / 2) as u8; 3])
+            .collect();
+        let (coarse, fine) = (
+            mean_error(&grey, 512, Precision::Coarse),
+            mean_error(&grey, 512, Precision::Fine),
+        );
+        assert!(
+            fine < 0.75 * coarse,
+            "fine {fine}, coarse {coarse} a channel"
+        );
     }
 }
