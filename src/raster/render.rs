@@ -49,12 +49,7 @@ pub fn render<S: FragmentShader>(
         FrameOutput::Strips(strips) => (None, Some(strips)),
     };
     if framebuffer.is_none() {
-        let alone = targets.len() == 1 && refinement.is_none();
-        let replaces = last.mask.is_none() && last.blend == Blend::Replace && !last.writes_depth;
-        assert!(
-            alone && replaces,
-            "strips alone come of one unmasked pass that keeps no depth"
-        );
+        assert_strips_alone_can_be(targets, refinement.as_ref());
     }
     let viewport = last.viewport;
     let derivatives: Vec<bool> = objects
@@ -67,7 +62,6 @@ pub fn render<S: FragmentShader>(
         .map(|target| Pass::new(objects, &set_up, target, shader, &derivatives))
         .collect();
     let tiles_x = passes[0].bins.tiles_x;
-    let strips_y = viewport.height.div_ceil(STRIP_ROWS);
     let job = StripJob {
         passes: &passes,
         last,
@@ -79,43 +73,16 @@ pub fn render<S: FragmentShader>(
         refinement: refinement.as_ref().map(|r| r.rule),
     };
     let mut no_framebuffer_known = Vec::new();
-    let (strips, known_background) = match framebuffer {
-        None => {
-            no_framebuffer_known.resize((tiles_x * strips_y) as usize, false);
-            let nothing = (0..strips_y).map(|_| (&mut [][..], &mut [][..])).collect();
-            (nothing, &mut no_framebuffer_known[..])
-        }
-        Some(framebuffer) => {
-            framebuffer.resize(viewport.width, viewport.height);
-            let (color, depth, known) = framebuffer.tiles_mut((tiles_x, strips_y), job.background);
-            let pixels = (STRIP_ROWS * viewport.width) as usize;
-            let strips: Vec<_> = color
-                .chunks_mut(pixels)
-                .zip(depth.chunks_mut(pixels))
-                .collect();
-            (strips, known)
-        }
-    };
-    let mut refined = refined_strips(refinement, viewport);
-    refined.resize_with(strips.len(), || &mut []);
-    let strips: Vec<_> = strips
-        .into_iter()
-        .zip(known_background.chunks_mut(tiles_x.max(1) as usize))
-        .zip(refined)
-        .collect();
+    let strips = strip_buffers(
+        framebuffer.ok_or(&mut no_framebuffer_known),
+        (viewport, tiles_x, background),
+        refinement,
+    );
     let (fragments, flattened) = map_top_first(
         strips,
         // Once per thread, not per strip: the buffers keep their grown capacity.
         || (TileBuffers::default(), shader.scratch()),
-        |(tile, scratch), index, (((color, depth), known_background), refined)| {
-            let strip = StripBuffers {
-                color,
-                depth,
-                known_background,
-                refined,
-            };
-            job.render(index as u32, strip, tile, scratch)
-        },
+        |(tile, scratch), index, strip| job.render(index as u32, strip, tile, scratch),
     )
     .into_iter()
     .fold((0, 0), |a, b| (a.0 + b.0, a.1 + b.1));
@@ -147,6 +114,61 @@ fn assert_renderable_together(targets: &[RenderTarget], refinement: Option<&Refi
         targets.iter().all(shared),
         "passes rendered together share viewport, camera, mask, window and interpolation"
     );
+}
+
+/// Checks that a frame with no framebuffer, only strips of bytes, is one unmasked pass that
+/// replaces and keeps no depth (nothing to add into, nothing to test against).
+fn assert_strips_alone_can_be(targets: &[RenderTarget], refinement: Option<&Refinement>) {
+    let last = targets.last().expect("a pass");
+    let alone = targets.len() == 1 && refinement.is_none();
+    let replaces = last.mask.is_none() && last.blend == Blend::Replace && !last.writes_depth;
+    assert!(
+        alone && replaces,
+        "strips alone come of one unmasked pass that keeps no depth"
+    );
+}
+
+/// Each strip's share of `output`: the framebuffer's rows (resized to `viewport`, the
+/// background known tile by tile), or, without a framebuffer, no pixels and a record of known
+/// background kept in the given vector; and its share of the refinement's record.
+fn strip_buffers<'f>(
+    output: Result<&'f mut Framebuffer, &'f mut Vec<bool>>,
+    (viewport, tiles_x, background): (Viewport, u32, Vec3),
+    refinement: Option<Refinement<'f>>,
+) -> Vec<StripBuffers<'f>> {
+    let strips_y = viewport.height.div_ceil(STRIP_ROWS);
+    let (colour_and_depth, known_background) = match output {
+        Err(no_framebuffer_known) => {
+            no_framebuffer_known.resize((tiles_x * strips_y) as usize, false);
+            let nothing = (0..strips_y).map(|_| (&mut [][..], &mut [][..])).collect();
+            (nothing, &mut no_framebuffer_known[..])
+        }
+        Ok(framebuffer) => {
+            framebuffer.resize(viewport.width, viewport.height);
+            let (color, depth, known) = framebuffer.tiles_mut((tiles_x, strips_y), background);
+            let pixels = (STRIP_ROWS * viewport.width) as usize;
+            let strips: Vec<_> = color
+                .chunks_mut(pixels)
+                .zip(depth.chunks_mut(pixels))
+                .collect();
+            (strips, known)
+        }
+    };
+    let mut refined = refined_strips(refinement, viewport);
+    refined.resize_with(colour_and_depth.len(), || &mut []);
+    colour_and_depth
+        .into_iter()
+        .zip(known_background.chunks_mut(tiles_x.max(1) as usize))
+        .zip(refined)
+        .map(
+            |(((color, depth), known_background), refined)| StripBuffers {
+                color,
+                depth,
+                known_background,
+                refined,
+            },
+        )
+        .collect()
 }
 
 /// The refinement's record of refined pixels, sized to the viewport and cut into strips (none

@@ -139,6 +139,84 @@ fn restore_undoes_only_what_was_entered() {
     );
 }
 
+/// Environment variables, as names and values.
+type Variables = &'static [(&'static str, &'static str)];
+
+/// Environments as they arrive over SSH (only TERM and what the SSH set-up forwards), with the
+/// colours and the reason detection gives.
+const DIRECT_COLOUR_CASES: &[(Variables, ColorMode, &str)] = &[
+    (
+        &[("TERM", "xterm-kitty")],
+        ColorMode::TrueColor,
+        "TERM=xterm-kitty",
+    ),
+    (&[("TERM", "foot")], ColorMode::TrueColor, "TERM=foot"),
+    (
+        &[("TERM", "alacritty")],
+        ColorMode::TrueColor,
+        "TERM=alacritty",
+    ),
+    (
+        &[("TERM", "xterm-ghostty")],
+        ColorMode::TrueColor,
+        "TERM=xterm-ghostty",
+    ),
+    (&[("TERM", "wezterm")], ColorMode::TrueColor, "TERM=wezterm"),
+    (
+        &[("TERM", "xterm-direct")],
+        ColorMode::TrueColor,
+        "TERM=xterm-direct",
+    ),
+    (
+        &[("TERM", "xterm-256color"), ("TERM_PROGRAM", "iTerm.app")],
+        ColorMode::TrueColor,
+        "TERM_PROGRAM=iTerm.app",
+    ),
+    (
+        &[
+            ("TERM", "xterm-256color"),
+            ("TERM_PROGRAM", "Apple_Terminal"),
+        ],
+        ColorMode::Ansi256,
+        "TERM_PROGRAM=Apple_Terminal",
+    ),
+    (
+        &[("TERM", "xterm-256color"), ("LC_TERMINAL", "iTerm2")],
+        ColorMode::TrueColor,
+        "LC_TERMINAL=iTerm2",
+    ),
+    (
+        &[("TERM", "xterm-256color"), ("VTE_VERSION", "7600")],
+        ColorMode::TrueColor,
+        "VTE_VERSION=7600",
+    ),
+    (
+        &[("TERM", "xterm-256color"), ("VTE_VERSION", "3405")],
+        ColorMode::Ansi256,
+        "TERM=xterm-256color",
+    ),
+    (
+        &[("TERM", "xterm-256color"), ("KITTY_WINDOW_ID", "1")],
+        ColorMode::TrueColor,
+        "KITTY_WINDOW_ID is set",
+    ),
+    (
+        &[("TERM", "tmux-256color")],
+        ColorMode::Ansi256,
+        "TERM=tmux-256color",
+    ),
+    (
+        &[("TERM", "xterm")],
+        ColorMode::Ansi16,
+        "TERM=xterm, nothing more known",
+    ),
+    (
+        &[("TERM", "xterm-kitty"), ("NO_COLOR", "1")],
+        ColorMode::Monochrome,
+        "NO_COLOR is set",
+    ),
+];
+
 #[test]
 fn direct_colour_terminals_are_known_without_colorterm_and_the_reason_is_given() {
     let detected = |vars: &[(&str, &str)]| {
@@ -148,79 +226,7 @@ fn direct_colour_terminals_are_known_without_colorterm_and_the_reason_is_given()
             .collect();
         bumpwork::term::detect_colors(|name| env.get(name).cloned())
     };
-    // Over SSH only TERM (and what the SSH set-up forwards) arrives.
-    for (vars, mode, reason) in [
-        (
-            &[("TERM", "xterm-kitty")][..],
-            ColorMode::TrueColor,
-            "TERM=xterm-kitty",
-        ),
-        (&[("TERM", "foot")], ColorMode::TrueColor, "TERM=foot"),
-        (
-            &[("TERM", "alacritty")],
-            ColorMode::TrueColor,
-            "TERM=alacritty",
-        ),
-        (
-            &[("TERM", "xterm-ghostty")],
-            ColorMode::TrueColor,
-            "TERM=xterm-ghostty",
-        ),
-        (&[("TERM", "wezterm")], ColorMode::TrueColor, "TERM=wezterm"),
-        (
-            &[("TERM", "xterm-direct")],
-            ColorMode::TrueColor,
-            "TERM=xterm-direct",
-        ),
-        (
-            &[("TERM", "xterm-256color"), ("TERM_PROGRAM", "iTerm.app")],
-            ColorMode::TrueColor,
-            "TERM_PROGRAM=iTerm.app",
-        ),
-        (
-            &[
-                ("TERM", "xterm-256color"),
-                ("TERM_PROGRAM", "Apple_Terminal"),
-            ],
-            ColorMode::Ansi256,
-            "TERM_PROGRAM=Apple_Terminal",
-        ),
-        (
-            &[("TERM", "xterm-256color"), ("LC_TERMINAL", "iTerm2")],
-            ColorMode::TrueColor,
-            "LC_TERMINAL=iTerm2",
-        ),
-        (
-            &[("TERM", "xterm-256color"), ("VTE_VERSION", "7600")],
-            ColorMode::TrueColor,
-            "VTE_VERSION=7600",
-        ),
-        (
-            &[("TERM", "xterm-256color"), ("VTE_VERSION", "3405")],
-            ColorMode::Ansi256,
-            "TERM=xterm-256color",
-        ),
-        (
-            &[("TERM", "xterm-256color"), ("KITTY_WINDOW_ID", "1")],
-            ColorMode::TrueColor,
-            "KITTY_WINDOW_ID is set",
-        ),
-        (
-            &[("TERM", "tmux-256color")],
-            ColorMode::Ansi256,
-            "TERM=tmux-256color",
-        ),
-        (
-            &[("TERM", "xterm")],
-            ColorMode::Ansi16,
-            "TERM=xterm, nothing more known",
-        ),
-        (
-            &[("TERM", "xterm-kitty"), ("NO_COLOR", "1")],
-            ColorMode::Monochrome,
-            "NO_COLOR is set",
-        ),
-    ] {
+    for &(vars, mode, reason) in DIRECT_COLOUR_CASES {
         let found = detected(vars);
         assert_eq!(
             (found.mode, found.reason.as_str()),
