@@ -5,7 +5,9 @@
 //! `[OBJECT.]texture.PARAM`, `[OBJECT.]bump.strength` (the bump's own factor) and
 //! `[OBJECT.]bump.params.PARAM` (a pattern parameter, also one called `strength`) for the
 //! objects' bindings (OBJECT counts from 1; without it, every object whose binding has PARAM);
-//! and `shadows` (true or false), whether the scene's lights cast shadows.
+//! `shadows` (true or false), whether the scene's lights cast shadows; and `[OBJECT.]displace`
+//! (true or false), whether an object's bump height moves its surface (every object's without
+//! OBJECT).
 
 use crate::quality::Quality;
 use crate::scene::{BumpSource, KnobPlace, KnobSetting, PatternBinding, Scene, Texturing};
@@ -23,6 +25,7 @@ pub struct Override {
 enum Target {
     Quality(String),
     Shadows,
+    Displace(Option<usize>),
     Binding {
         object: Option<usize>,
         slot: Slot,
@@ -72,6 +75,7 @@ impl Override {
         let target = match parts.as_slice() {
             ["quality", knob] if object.is_none() => Some(Target::Quality(knob.to_string())),
             ["shadows"] if object.is_none() => Some(Target::Shadows),
+            ["displace"] => Some(Target::Displace(object)),
             [slot, "strength"] => binding(object, slot, Name::Strength),
             [slot, "params", name] | [slot, name] => {
                 binding(object, slot, Name::Param(name.to_string()))
@@ -81,7 +85,7 @@ impl Override {
         .ok_or_else(|| {
             format!(
                 "unknown setting '{shown}'; the keys are quality.KNOB, shadows, \
-                 [OBJECT.]bump.PARAM, [OBJECT.]texture.PARAM, [OBJECT.]bump.strength and \
+                 [OBJECT.]displace, [OBJECT.]bump.PARAM, [OBJECT.]texture.PARAM, [OBJECT.]bump.strength and \
                  [OBJECT.]bump.params.PARAM"
             )
         })?;
@@ -100,6 +104,15 @@ impl Override {
     /// The setting as given, safe to show.
     pub fn shown(&self) -> String {
         crate::diagnostic::shown_input(&self.text)
+    }
+
+    /// The value as a switch: true or false (on or off).
+    fn switch(&self) -> Result<bool, String> {
+        match self.value.as_str() {
+            "true" | "on" => Ok(true),
+            "false" | "off" => Ok(false),
+            _ => Err(format!("--set {}: expected true or false", self.shown())),
+        }
     }
 
     /// Whether it sets a binding of the scene (not the quality).
@@ -144,7 +157,7 @@ pub fn knob_settings(overrides: &[Override]) -> Vec<KnobSetting> {
                 value: toml_value(&o.value),
                 place: KnobPlace::CommandLine(o.shown()),
             }),
-            Target::Shadows | Target::Binding { .. } => None,
+            Target::Shadows | Target::Displace(_) | Target::Binding { .. } => None,
         })
         .collect()
 }
@@ -202,11 +215,23 @@ fn apply_to(o: &Override, scene: &mut Scene) -> Result<Applied, String> {
     match o.target {
         Target::Quality(_) => Ok(Applied::NotABinding),
         Target::Shadows => {
-            scene.shadows = match o.value.as_str() {
-                "true" | "on" => true,
-                "false" | "off" => false,
-                _ => return Err(format!("--set {}: expected true or false", o.shown())),
-            };
+            scene.shadows = o.switch()?;
+            Ok(Applied::Taken)
+        }
+        Target::Displace(object) => {
+            let on = o.switch()?;
+            let count = scene.objects.len();
+            if object.is_some_and(|n| n > count) {
+                return Err(format!(
+                    "--set {}: the scene has {count} objects",
+                    o.shown()
+                ));
+            }
+            for (index, each) in scene.objects.iter_mut().enumerate() {
+                if object.is_none_or(|n| n == index + 1) {
+                    each.displace = on;
+                }
+            }
             Ok(Applied::Taken)
         }
         Target::Binding { .. } => apply_binding(o, scene),

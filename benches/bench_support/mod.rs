@@ -60,6 +60,7 @@ pub fn sphere_scene() -> Scene {
                 shininess: 32.0,
                 ..Material::default()
             },
+            displace: false,
         }],
     }
 }

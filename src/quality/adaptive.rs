@@ -11,7 +11,8 @@
 
 use crate::raster::Viewport;
 use crate::scene::Camera;
-use crate::surface::{Surface, Tessellation};
+use crate::surface::{Mesh, Surface, Tessellation};
+use glam::{DVec3, Vec2, Vec3};
 
 /// Densest adaptive tessellation: a sphere at 512 has 512 K triangles.
 pub const MAX_ADAPTIVE_DENSITY: u32 = 512;
@@ -49,22 +50,51 @@ pub fn projected_chord_error(
     viewport: Viewport,
 ) -> f32 {
     let mesh = surface.tessellate(Tessellation { density });
-    let origin = (surface.origin() - camera.eye).as_vec3();
+    let midpoints = edge_midpoint_uvs(&mesh);
+    let on_surface: Vec<Vec3> = midpoints
+        .iter()
+        .map(|uv| surface.frame(uv.x, uv.y).p)
+        .collect();
+    worst_projected_sag(&mesh, &on_surface, surface.origin(), camera, viewport)
+}
+
+/// The (u,v) midpoint of every edge of every triangle, three a triangle in order.
+pub fn edge_midpoint_uvs(mesh: &Mesh) -> Vec<Vec2> {
+    mesh.indices
+        .iter()
+        .flat_map(|tri| {
+            EDGES.map(|(a, b)| (mesh.uvs[tri[a] as usize] + mesh.uvs[tri[b] as usize]) / 2.0)
+        })
+        .collect()
+}
+
+const EDGES: [(usize, usize); 3] = [(0, 1), (1, 2), (2, 0)];
+
+/// The largest distance in pixels between an edge's midpoint and `on_surface`, the surface at
+/// its (u,v) midpoint (in `edge_midpoint_uvs`'s order, relative to `anchor`), over the edges in
+/// front of the near plane.
+pub fn worst_projected_sag(
+    mesh: &Mesh,
+    on_surface: &[Vec3],
+    anchor: DVec3,
+    camera: &Camera,
+    viewport: Viewport,
+) -> f32 {
+    let origin = (anchor - camera.eye).as_vec3();
     let forward = camera.forward();
     let half_fov = (camera.vfov_degrees.clamp(1e-3, 179.0).to_radians() / 2.0).tan();
     let pixels_per_unit_at_depth_1 = viewport.height as f32 / (2.0 * half_fov);
     let mut worst: f32 = 0.0;
-    for tri in &mesh.indices {
-        for (a, b) in [(0, 1), (1, 2), (2, 0)] {
-            let (ia, ib) = (tri[a] as usize, tri[b] as usize);
-            let uv = (mesh.uvs[ia] + mesh.uvs[ib]) / 2.0;
-            let on_surface = surface.frame(uv.x, uv.y).p;
-            let chord = (mesh.positions[ia] + mesh.positions[ib]) / 2.0;
-            let depth = (origin + on_surface).dot(forward);
-            if depth > camera.near {
-                let sag = on_surface.distance(chord);
-                worst = worst.max(sag * pixels_per_unit_at_depth_1 / depth);
-            }
+    let edges = mesh
+        .indices
+        .iter()
+        .flat_map(|tri| EDGES.map(|(a, b)| (tri[a], tri[b])));
+    for ((ia, ib), &on_surface) in edges.zip(on_surface) {
+        let chord = (mesh.positions[ia as usize] + mesh.positions[ib as usize]) / 2.0;
+        let depth = (origin + on_surface).dot(forward);
+        if depth > camera.near {
+            let sag = on_surface.distance(chord);
+            worst = worst.max(sag * pixels_per_unit_at_depth_1 / depth);
         }
     }
     if worst.is_finite() { worst } else { 0.0 }

@@ -79,6 +79,9 @@ pub fn check_quality(quality: &Quality) -> Result<(), String> {
     if quality.adaptive_tolerance_px.is_some_and(|t| !positive(t)) {
         return Err("the adaptive tolerance must be a positive number of pixels".into());
     }
+    if !positive(quality.displace_tolerance_px) {
+        return Err("the displacement tolerance must be a positive number of pixels".into());
+    }
     if quality
         .adaptive_samples
         .is_some_and(|c| !(0.0..=1.0).contains(&c))

@@ -6,25 +6,27 @@
 //! Samples per pixel are carried here for the supersampled renderer to read.
 
 mod adaptive;
+mod displaced_grid;
 mod knob_settings;
 mod preset;
 
 pub use adaptive::{MAX_ADAPTIVE_DENSITY, adaptive_density, projected_chord_error};
+pub use displaced_grid::{DisplacedGrid, displaced_grid};
 pub use knob_settings::{
     MAX_DENSITY, MAX_SAMPLES, MAX_SHADOW_BIAS, SHADOW_MAP_SIZES, SHADOW_TAPS, check_quality,
     knob_names,
 };
 pub use preset::Preset;
 
-use crate::memory_budget::{MemoryUse, OverBudget};
+use crate::memory_budget::{BYTES_PER_TRIANGLE, MemoryUse, OverBudget};
 use crate::pattern::Precision;
 use crate::raster::{Interpolation, RenderTarget, Viewport};
 use crate::scene::Camera;
+use crate::scene::{Material, Object, Scene, Texturing};
 use crate::scene::{PreparedObject, PreparedScene};
-use crate::scene::{Scene, Texturing};
 use crate::shade::{
-    GradientMethod, LitShader, Neighbours, NormalForm, Reach, ReachShape, Shadowing, Showing,
-    SurfacePointSource, VertexNormals,
+    BumpHeights, GradientMethod, LitShader, Neighbours, NormalForm, Reach, ReachShape, Shadowing,
+    Showing, SurfacePointSource, VertexNormals,
 };
 use crate::shadow::{ShadowMaps, ShadowSettings};
 use crate::surface::{Surface, Tessellation, push_out_to_hull};
@@ -112,6 +114,10 @@ pub struct Quality {
     /// read as filtered, as they were drawn.
     #[serde(default)]
     pub shadow_edges: ShadowEdges,
+    /// How far, in pixels of the view, a displaced surface's triangles may stray from it: its
+    /// grid is refined until they do not (within the memory budget).
+    #[serde(default = "interactive_displace_tolerance")]
+    pub displace_tolerance_px: f32,
 }
 
 /// How the edges of shadows are drawn (see `Quality::shadow_edges`).
@@ -134,6 +140,14 @@ fn interactive_shadow_taps() -> u32 {
 fn interactive_shadow_bias() -> f32 {
     Quality::interactive().shadow_bias
 }
+
+fn interactive_displace_tolerance() -> f32 {
+    Quality::interactive().displace_tolerance_px
+}
+
+/// The most triangles one displaced surface is cut into, whatever the budget: past this a
+/// still takes seconds to cut and the workbench stops being immediate.
+pub const MOST_DISPLACED_TRIANGLES: u64 = 1 << 21;
 
 impl Default for Quality {
     fn default() -> Self {
@@ -159,6 +173,7 @@ impl Quality {
             normal_form: NormalForm::Blinn,
             surface_point: SurfacePointSource::Interpolated,
             coverage: Coverage::Mesh,
+            displace_tolerance_px: 1.0,
             ..Quality::interactive()
         }
     }
@@ -184,6 +199,7 @@ impl Quality {
             shadow_taps: 4,
             shadow_bias: 0.0,
             shadow_edges: ShadowEdges::Exact,
+            displace_tolerance_px: 0.5,
         }
     }
 
@@ -195,6 +211,7 @@ impl Quality {
             adaptive_tolerance_px: Some(0.5),
             samples: 16,
             shadow_map: 2048,
+            displace_tolerance_px: 0.25,
             ..Quality::interactive()
         }
     }
@@ -209,6 +226,7 @@ impl Quality {
             samples: 64,
             pattern_precision: Precision::Double,
             shadow_map: 4096,
+            displace_tolerance_px: 0.1,
             ..Quality::high()
         }
     }
@@ -238,37 +256,99 @@ impl Quality {
                 density: self.density_for(&o.surface, camera, viewport),
             })
             .collect();
-        let triangles = scene
-            .objects
-            .iter()
-            .zip(&tessellations)
-            .map(|(o, &tessellation)| o.surface.triangle_count(tessellation))
-            .fold(0, u64::saturating_add);
-        MemoryUse {
+        let memory = |triangles| MemoryUse {
             image_bytes: scene.image_bytes(),
             triangles,
             lights: scene.lights.len() as u64,
             output_bytes,
             shadow_map_bytes: crate::shadow::map_bytes(&scene, &self.shadow_settings()),
-        }
-        .check(crate::memory_budget::budget_bytes())?;
+        };
+        let budget = crate::memory_budget::budget_bytes();
+        let undisplaced = |(o, &tessellation): (&Object, &Tessellation)| match o.displace {
+            true => 0,
+            false => o.surface.triangle_count(tessellation),
+        };
+        let fixed = memory(
+            scene
+                .objects
+                .iter()
+                .zip(&tessellations)
+                .map(undisplaced)
+                .sum(),
+        );
+        fixed.check(budget)?;
+        let displaced_count = scene.objects.iter().filter(|o| o.displace).count().max(1) as u64;
+        let spare = budget.saturating_sub(fixed.total()) / BYTES_PER_TRIANGLE / displaced_count;
+        let most_triangles = spare.min(MOST_DISPLACED_TRIANGLES);
+        let grids: Vec<Option<DisplacedGrid>> = scene
+            .objects
+            .par_iter()
+            .map(|o| self.displaced(o, scene.time, (camera, viewport), most_triangles))
+            .collect();
+        let triangles = scene
+            .objects
+            .iter()
+            .zip(&tessellations)
+            .zip(&grids)
+            .map(|((o, &tessellation), grid)| match grid {
+                Some(grid) => grid.mesh.indices.len() as u64,
+                None => o.surface.triangle_count(tessellation),
+            })
+            .fold(0, u64::saturating_add);
+        memory(triangles).check(budget)?;
         let objects = scene
             .objects
             .par_iter()
             .zip(tessellations)
-            .map(|(o, tessellation)| {
-                let mut mesh = o.surface.tessellate(tessellation);
-                if self.coverage == Coverage::Exact {
-                    push_out_to_hull(&o.surface, &mut mesh);
-                }
-                PreparedObject {
-                    surface: o.surface.clone(),
-                    material: o.material.clone(),
-                    mesh,
+            .zip(grids)
+            .map(|((o, tessellation), grid)| match grid {
+                Some(grid) => PreparedObject {
+                    surface: Surface::Displaced(grid.surface),
+                    // The bump is the geometry now: its normal is the displaced frame's.
+                    material: Material {
+                        bump: None,
+                        ..o.material.clone()
+                    },
+                    mesh: grid.mesh,
+                },
+                None => {
+                    let mut mesh = o.surface.tessellate(tessellation);
+                    if self.coverage == Coverage::Exact {
+                        push_out_to_hull(&o.surface, &mut mesh);
+                    }
+                    PreparedObject {
+                        surface: o.surface.clone(),
+                        material: o.material.clone(),
+                        mesh,
+                    }
                 }
             })
             .collect();
         Ok(PreparedScene { scene, objects })
+    }
+
+    /// The displaced surface `object` asks for, cut for this view in at most `most_triangles`
+    /// triangles; `None` where it does not ask, or cannot be displaced (see
+    /// `displacement_refused`).
+    fn displaced(
+        &self,
+        object: &Object,
+        time: f64,
+        view: (&Camera, Viewport),
+        most_triangles: u64,
+    ) -> Option<DisplacedGrid> {
+        if !object.displace {
+            return None;
+        }
+        let field = BumpHeights::new(object.material.bump.as_ref()?, time)?;
+        let tolerance = self.displace_tolerance_px;
+        displaced_grid(
+            &object.surface,
+            Arc::new(field),
+            view,
+            tolerance,
+            most_triangles,
+        )
     }
 
     /// The tessellation density this quality gives a surface in this view.
@@ -399,7 +479,11 @@ fn override_filter(scene: &mut Scene, filter: Filter) {
 /// in front of the other's mesh.
 fn neighbours(prepared: &PreparedScene) -> Neighbours {
     let bounds = crate::shadow::object_bounds(prepared);
+    // A displaced surface's mesh is the surface (within its tolerance): the depth buffer
+    // settles it against its neighbours, with no ray search.
+    let displaced = |i: usize| matches!(prepared.objects[i].surface, Surface::Displaced(_));
     let overlap = |i: usize, j: usize| match (bounds[i], bounds[j]) {
+        _ if displaced(i) || displaced(j) => false,
         (Some(a), Some(b)) => a.intersection(b).is_some(),
         _ => false,
     };

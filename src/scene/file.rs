@@ -95,6 +95,9 @@ pub struct ObjectFile {
     pub texture: Option<BindingFile>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub bump: Option<BindingFile>,
+    /// Draw the bump's height as true displacement of the surface.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub displace: bool,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -383,6 +386,7 @@ impl ObjectFile {
                 texture,
                 bump,
             },
+            displace: self.displace,
         })
     }
 }

@@ -61,6 +61,18 @@ pub struct Bump {
 }
 
 impl Bump {
+    /// Whether it defines a height B (not only its slope: slope patterns and normal maps do
+    /// not), which is what displacement moves the surface by.
+    pub fn has_height(&self) -> bool {
+        match &self.source {
+            BumpSource::Pattern(binding) => {
+                binding.pattern.output() == crate::pattern::OutputKind::Height
+            }
+            BumpSource::Image(_) => true,
+            BumpSource::NormalMap(_) => false,
+        }
+    }
+
     /// The factor applied to B: strength, negated when inverted.
     pub fn scale(&self) -> f32 {
         if self.invert {

@@ -57,6 +57,9 @@ pub struct Scene {
 pub struct Object {
     pub surface: Surface,
     pub material: Material,
+    /// Whether the object is drawn as the new surface P + B·n its bump height B describes
+    /// (true displacement) rather than as the unmoved surface with Blinn's bumped normal.
+    pub displace: bool,
 }
 
 impl Scene {

@@ -302,6 +302,7 @@ fn object(surface: SurfaceFile, material: MaterialFile) -> ObjectFile {
         material,
         texture: None,
         bump: None,
+        displace: false,
     }
 }
 

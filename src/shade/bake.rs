@@ -4,7 +4,6 @@
 //! sit at cell centres.
 
 use super::pattern_batch::{PatternBatch, Sites};
-use crate::pattern::OutputKind;
 use crate::raster::Fragment;
 use crate::scene::{Bump, BumpSource, Material, Texturing};
 use crate::surface::{Frame, Frames, Surface};
@@ -144,11 +143,7 @@ pub struct BakedBump {
 /// The bump over `grid`: its heights and its tangent-space normals.
 pub fn bake_bump_on(surface: &Surface, bump: &Bump, time: f64, grid: &BakeGrid) -> BakedBump {
     let mut batch = PatternBatch::default();
-    let has_height = match &bump.source {
-        BumpSource::Pattern(binding) => binding.pattern.output() == OutputKind::Height,
-        BumpSource::Image(_) => true,
-        BumpSource::NormalMap(_) => false,
-    };
+    let has_height = bump.has_height();
     let mut heights_out = Vec::with_capacity(if has_height { grid.samples() } else { 0 });
     let mut normals = Vec::with_capacity(grid.samples());
     let group: Vec<u32> = (0..grid.width).collect();
@@ -162,34 +157,7 @@ pub fn bake_bump_on(surface: &Surface, bump: &Bump, time: f64, grid: &BakeGrid) 
             group: &group,
             frames: &frames,
         };
-        match &bump.source {
-            BumpSource::Pattern(binding) => {
-                batch.bump(binding, at, time, &mut heights, &mut gradients);
-            }
-            BumpSource::Image(image) => {
-                let each = heights.iter_mut().zip(gradients.iter_mut());
-                for ((h, g), (fragment, frame)) in each.zip(fragments.iter().zip(frames.iter())) {
-                    let mapped = image.mapping.map(&surface_point(&frame, fragment.uv, time));
-                    let sample = (image.map).sample_gradient(
-                        mapped.st,
-                        image.wrap_s,
-                        image.wrap_t,
-                        Footprint::POINT,
-                    );
-                    *h = sample.height;
-                    *g = sample.surface_gradient(mapped.jacobian);
-                }
-            }
-            BumpSource::NormalMap(map) => {
-                let each = fragments.iter().zip(frames.iter());
-                for ((g, h), (fragment, frame)) in gradients.iter_mut().zip(&mut heights).zip(each)
-                {
-                    let point = surface_point(&frame, fragment.uv, time);
-                    *g = map.gradient(&point);
-                    *h = 0.0;
-                }
-            }
-        }
+        sample_bump(bump, at, time, &mut batch, (&mut heights, &mut gradients));
         if has_height {
             heights_out.extend(heights.iter().map(|h| h * scale));
         }
@@ -199,6 +167,44 @@ pub fn bake_bump_on(surface: &Surface, bump: &Bump, time: f64, grid: &BakeGrid) 
     BakedBump {
         heights: has_height.then_some(heights_out),
         normals,
+    }
+}
+
+/// The bump's B and (Bu, Bv) at the sites (strength not applied), into `out` (the sites'
+/// length): a normal map's heights are zero.
+pub(super) fn sample_bump(
+    bump: &Bump,
+    at: Sites,
+    time: f64,
+    batch: &mut PatternBatch,
+    out: (&mut [f32], &mut [Vec2]),
+) {
+    let (heights, gradients) = out;
+    let sites = at.fragments.iter().zip(at.frames.iter());
+    match &bump.source {
+        BumpSource::Pattern(binding) => {
+            batch.bump(binding, at, time, heights, gradients);
+        }
+        BumpSource::Image(image) => {
+            let each = heights.iter_mut().zip(gradients.iter_mut());
+            for ((h, g), (fragment, frame)) in each.zip(sites) {
+                let mapped = image.mapping.map(&surface_point(&frame, fragment.uv, time));
+                let sample = (image.map).sample_gradient(
+                    mapped.st,
+                    image.wrap_s,
+                    image.wrap_t,
+                    Footprint::POINT,
+                );
+                *h = sample.height;
+                *g = sample.surface_gradient(mapped.jacobian);
+            }
+        }
+        BumpSource::NormalMap(map) => {
+            for ((g, h), (fragment, frame)) in gradients.iter_mut().zip(heights).zip(sites) {
+                *g = map.gradient(&surface_point(&frame, fragment.uv, time));
+                *h = 0.0;
+            }
+        }
     }
 }
 

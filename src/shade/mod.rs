@@ -3,6 +3,7 @@
 
 mod bake;
 mod bump;
+mod bump_heights;
 mod bump_stage;
 mod colour_stage;
 mod exact_coverage;
@@ -26,6 +27,7 @@ pub use bake::{
     BakeGrid, BakedBump, bake_bump_on, bake_color, bake_color_on, bake_height, tangent_normal,
 };
 pub use bump::{NormalForm, bumped_normal};
+pub use bump_heights::BumpHeights;
 pub use exact_coverage::{Neighbours, Reach, ReachShape, nearest_true_hit};
 pub use exact_hits::ExactScratch;
 pub use exact_point::{ExactPoints, SurfacePointSource, exact_fragments};

@@ -3,7 +3,7 @@
 
 use super::bounds::Bounds;
 use crate::scene::PreparedScene;
-use crate::scene::{Light, Scene};
+use crate::scene::{Bump, Light, Object, Scene};
 use crate::surface::Surface;
 use glam::{DVec3, Vec3};
 
@@ -17,9 +17,15 @@ pub fn can_shadow(scene: &Scene) -> bool {
     }
     match scene.objects.as_slice() {
         [] => false,
-        [only] => can_shadow_itself(&only.surface) || seen_from_within(&only.surface, scene),
+        [only] => object_can_shadow_itself(only) || seen_from_within(&only.surface, scene),
         _ => true,
     }
+}
+
+/// `can_shadow_itself` for a scene's object: a displaced one's bumps can shadow each other.
+pub(super) fn object_can_shadow_itself(object: &Object) -> bool {
+    let displaced = object.displace && object.material.bump.as_ref().is_some_and(Bump::has_height);
+    displaced || can_shadow_itself(&object.surface)
 }
 
 /// Whether a surface can stand between a light and another part of itself, seen from outside.

@@ -3,7 +3,7 @@
 //! filtered lookup is partly lit, the answer exact shadow edges take.
 
 use super::caster_spheres::MOST_SPHERES;
-use super::casting::{can_shadow, can_shadow_itself};
+use super::casting::{can_shadow, object_can_shadow_itself};
 use crate::scene::PreparedScene;
 use crate::scene::{Camera, Light, Scene};
 use crate::shade::Shadowing;
@@ -28,7 +28,7 @@ const DIRECTIONAL_REACH: f64 = 1e12;
 /// have settled).
 pub fn rays_cheaper_than_maps(scene: &Scene) -> bool {
     scene.objects.len() <= MOST_SPHERES
-        && scene.objects.iter().all(|o| !can_shadow_itself(&o.surface))
+        && scene.objects.iter().all(|o| !object_can_shadow_itself(o))
 }
 
 /// Shadow rays through the exact scene, for points relative to one camera's eye.

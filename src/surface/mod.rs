@@ -21,6 +21,7 @@ macro_rules! each_kind {
             Surface::Triangle($s) => $body,
             Surface::Torus($s) => $body,
             Surface::Model($s) => $body,
+            Surface::Displaced($s) => $body,
         }
     };
 }
@@ -29,6 +30,7 @@ mod angles;
 mod basis;
 mod cone;
 mod corner;
+mod displaced;
 mod frames;
 mod grid_shape;
 mod hull;
@@ -51,6 +53,7 @@ pub use angles::{atan2, sin_cos};
 pub use basis::AxisBasis;
 pub use cone::Cone;
 pub use corner::Corner;
+pub use displaced::{Displaced, DisplacedBase, HeightField};
 pub use frames::{FrameSlices, Frames, Vectors};
 pub use grid_shape::GridShape;
 pub use hull::push_out_to_hull;
@@ -94,6 +97,8 @@ pub enum Surface {
     Torus(Torus),
     /// A user's triangle mesh, in the (u,v) of its chart (see `model.rs`).
     Model(ModelSurface),
+    /// A plane or sphere moved along its normal by a height field (see `displaced.rs`).
+    Displaced(Displaced),
 }
 
 /// The rectangle of (u,v) a surface is defined on. The triangle's domain is the triangle inside it.

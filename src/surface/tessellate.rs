@@ -1,5 +1,6 @@
 //! Tessellation: a surface's (u,v) grid cut into an indexed triangle mesh.
 
+use super::grid_shape::GridShape;
 use super::parametric::Parametric;
 use glam::{Vec2, Vec3};
 
@@ -33,7 +34,11 @@ pub struct Mesh {
 /// wraps without a crack in the interpolated parameters. A collapsed row gets one vertex per cell at
 /// the cell's mid-u, so the pole is a fan of proper triangles rather than a row of zero-area slivers.
 pub(super) fn grid(surface: &impl Parametric, tessellation: Tessellation) -> Mesh {
-    let shape = surface.grid_shape(tessellation.density.max(1));
+    grid_with_shape(surface, surface.grid_shape(tessellation.density.max(1)))
+}
+
+/// `grid` with the cells `shape` gives.
+pub(super) fn grid_with_shape(surface: &impl Parametric, shape: GridShape) -> Mesh {
     let domain = surface.domain();
     let step = (domain.max - domain.min) / Vec2::new(shape.cells_u as f32, shape.cells_v as f32);
     let mut mesh = Mesh::default();

@@ -126,7 +126,11 @@ mod tests {
             center: glam::DVec3::ZERO,
             radius: 1.0,
         });
-        scene.objects = vec![Object { surface, material }];
+        scene.objects = vec![Object {
+            surface,
+            material,
+            displace: false,
+        }];
         scene
     }
 

@@ -40,6 +40,7 @@ mod slow_link;
 mod source_layout;
 mod ssh_session;
 mod still;
+mod surface;
 mod sweeps;
 mod term;
 mod test_dir;

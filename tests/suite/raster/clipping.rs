@@ -32,6 +32,7 @@ fn scene_of(camera: Camera, surface: Surface) -> Scene {
                 shininess: 1.0,
                 ..Material::default()
             },
+            displace: false,
         }],
     }
 }

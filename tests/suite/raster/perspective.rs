@@ -37,6 +37,7 @@ fn grazing_plane_scene() -> (Scene, Plane) {
                 shininess: 1.0,
                 ..Material::default()
             },
+            displace: false,
         }],
     };
     (scene, plane)

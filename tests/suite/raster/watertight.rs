@@ -285,6 +285,7 @@ fn sphere_scene(radius: f32) -> Scene {
                 shininess: 1.0,
                 ..Material::default()
             },
+            displace: false,
         }],
     }
 }

@@ -60,6 +60,7 @@ fn scene_of(surface: Surface, eye: [f64; 3], target: [f64; 3]) -> Scene {
     scene.objects = vec![Object {
         surface,
         material: Material::default(),
+        displace: false,
     }];
     scene.camera = Camera {
         eye: DVec3::from(eye),
@@ -411,6 +412,7 @@ fn two_spheres_cutting_each_other_on_a_floor() -> Scene {
             radius,
         }),
         material: Material::default(),
+        displace: false,
     };
     scene.objects.truncate(1);
     scene
@@ -430,6 +432,7 @@ fn sphere_sunk_through_a_floor(from_below: bool) -> Scene {
             radius: 100.0,
         }),
         material: Material::default(),
+        displace: false,
     });
     if from_below {
         scene.camera.eye = DVec3::new(150.0, -260.0, 420.0);

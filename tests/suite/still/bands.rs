@@ -33,6 +33,7 @@ fn triangle_scene() -> (PreparedScene, Camera) {
                 DVec3::new(-0.4, 2.6, 0.0),
             )),
             material: Material::default(),
+            displace: false,
         }],
     };
     let camera = scene.camera.clone();
