@@ -168,6 +168,9 @@ fn render_start(
     let mut scene = start.scene.clone();
     args.choice().apply(&mut scene)?;
     apply_to_scene(&args.set, &mut scene).map_err(Error::InvalidArgument)?;
+    for warning in scene.displacement_warnings() {
+        eprintln!("bumpwork: warning: {}", sanitize_lines(&warning));
+    }
     scene.camera = camera_from_options(args, &scene.camera)?;
     let camera = scene.camera.clone();
     let frames = frames(args, settings.time, output)?;

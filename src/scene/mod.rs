@@ -4,6 +4,7 @@ mod binding_file;
 mod by_name;
 mod checked_values;
 pub mod dependencies;
+mod displacement_requests;
 pub(crate) mod exact_arrays;
 mod file;
 mod material;

@@ -57,6 +57,8 @@ pub const PRESET_NAMES: &[&str] = &[
     "rounded-cube-dimples",
     "torus-dimples",
     "torus-bricks",
+    "big-sphere-dimples-displaced",
+    "plane-dimples-displaced",
 ];
 
 /// The built-in scene of that name, as a scene file (so it can be printed and edited).
@@ -92,6 +94,9 @@ fn geometry(name: &str) -> SceneFile {
 
 /// The bump patterns and textures of each figure.
 fn dress(name: &str, objects: &mut [ObjectFile]) {
+    if let Some(twin) = name.strip_suffix("-displaced") {
+        return displace_dimples(twin, objects);
+    }
     if name.starts_with("torus-") {
         return objects[0].bump = Some(torus_bump(name));
     }
@@ -171,6 +176,16 @@ const BUMP_PATTERNS: &[&str] = &[
     "cobbles",
     "bark",
 ];
+
+/// `twin`'s dimples as the new surface: the height form (`dimples.pat`, whose slope is the
+/// seed's), displaced.
+fn displace_dimples(twin: &str, objects: &mut [ObjectFile]) {
+    dress(twin, objects);
+    for object in objects.iter_mut() {
+        object.bump = Some(pattern_binding("dimples"));
+        object.displace = true;
+    }
+}
 
 /// The torus's u turns around the ring, 2.5 times the tube's length (its major radius over its
 /// minor one): features a fifth of the size along u come out square half way round the tube,

@@ -31,6 +31,7 @@ pub enum Action {
     ResetLights,
     /// Shadows on or off (the scene file's `shadows`, until it is saved or reloaded).
     ToggleShadows,
+    ToggleDisplacement,
     /// Every material value changed with the keys back to the file's (patterns, parameters,
     /// strengths).
     DropLiveValues,

@@ -246,8 +246,24 @@ impl App {
     }
 
     /// The material the material keys edit.
+    /// The edited object's material; a displaced object's bump is its shape, and is read from
+    /// the scene.
     pub fn material(&self) -> Option<&Material> {
-        self.prepared.objects.get(self.object).map(|o| &o.material)
+        match self.is_displaced() {
+            true => self
+                .prepared
+                .scene
+                .objects
+                .get(self.object)
+                .map(|o| &o.material),
+            false => self.prepared.objects.get(self.object).map(|o| &o.material),
+        }
+    }
+
+    /// Whether the edited object is drawn displaced by its bump.
+    pub fn is_displaced(&self) -> bool {
+        let object = self.prepared.objects.get(self.object);
+        object.is_some_and(|o| matches!(o.surface, crate::surface::Surface::Displaced(_)))
     }
 
     /// A key: the topmost overlay's if it takes it, else the key map's.
@@ -410,6 +426,7 @@ impl App {
             Action::PreviousTexture => return self.cycle(controls::cycle_texture, -1),
             Action::ScaleBump(factor) => self.edit_material(|m| controls::scale_bump(m, factor)),
             Action::InvertBump => self.edit_material(controls::invert_bump),
+            Action::ToggleDisplacement => return self.toggle_displacement(),
             Action::SelectParam(step) => self.select_param(step),
             Action::AdjustParam(steps) => {
                 self.edit_material(|m| controls::adjust_param(m, param, steps))
@@ -460,10 +477,38 @@ impl App {
         }
     }
 
+    /// Draws the edited object as the surface its bump height moves it to, or back as the
+    /// unmoved surface with Blinn's bump; says which, or why it cannot be displaced.
+    fn toggle_displacement(&mut self) {
+        let Some(object) = self.prepared.scene.objects.get_mut(self.object) else {
+            return;
+        };
+        object.displace = !object.displace;
+        let refused = match object.material.bump {
+            None => Some("it has no bump to displace it by".to_string()),
+            Some(_) => object.displacement_refused(),
+        };
+        let on = object.displace;
+        self.reprepare(self.quality);
+        self.tell(Message::Info(match (on, refused) {
+            (true, Some(why)) => crate::term::sanitize(&why).into_owned(),
+            (true, None) => "displaced by its bump".into(),
+            (false, _) => "bump only (Blinn)".into(),
+        }));
+    }
+
     /// Applies `edit` to the current object's material, both as rendered and as kept in the scene
-    /// (which a quality change re-prepares from). Returns what `edit` returned.
+    /// (which a quality change re-prepares from). Returns what `edit` returned. A displaced
+    /// object's bump is its shape, so it is cut again.
     fn edit_material(&mut self, edit: impl Fn(&mut Material) -> bool) -> bool {
         let index = self.object;
+        if let Some(object) = self.prepared.scene.objects.get_mut(index)
+            && object.displace
+        {
+            let edited = edit(&mut object.material);
+            self.reprepare(self.quality);
+            return edited;
+        }
         let rendered = self
             .prepared
             .objects

@@ -99,7 +99,13 @@ pub const BINDINGS: &[Binding] = &[
         Action::ScaleBump(1.25),
     ),
     bind("", "", &[Char('B')], Action::ScaleBump(0.8)),
-    bind("i", "invert bump", &[Char('i')], Action::InvertBump),
+    bind(
+        "i D",
+        "invert bump; displace by it",
+        &[Char('i')],
+        Action::InvertBump,
+    ),
+    bind("", "", &[Char('D')], Action::ToggleDisplacement),
     bind(
         "[ ]",
         "previous / next parameter",

@@ -173,6 +173,9 @@ fn material_text(app: &App) -> String {
     let rows = app.param_rows();
     let params = |slot| params_text(&rows, slot, app.param);
     let mut text = format!("{} {}", app.object_name(), bump_text(material));
+    if app.is_displaced() {
+        text += " displaced";
+    }
     text += &params(ParamSlot::Bump);
     if let Some(texture) = &material.texture {
         let name = match texture {
