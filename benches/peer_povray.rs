@@ -67,6 +67,7 @@ fn main() {
             ..prepared.scene.clone()
         },
         objects: prepared.objects.iter().map(clone_object).collect(),
+        notices: Vec::new(),
     };
     let unshadowed = PreparedStill::from_prepared((&source.0, &source.1), unshadowed, &camera);
     let prepared = PreparedStill::from_prepared((&source.0, &source.1), prepared, &camera);

@@ -181,6 +181,9 @@ fn render_start(
     }
     let source = (start.source.as_str(), start.scene_text.as_str());
     let prepared = PreparedStill::new(source, scene, &camera, &settings)?;
+    for notice in &prepared.prepared().notices {
+        eprintln!("bumpwork: warning: {}", sanitize_lines(notice));
+    }
     if args.time_range.is_some() {
         warn_if_still(prepared.scene(), frames.len());
     }

@@ -11,7 +11,7 @@
 
 use crate::raster::Viewport;
 use crate::scene::Camera;
-use crate::surface::{Mesh, Surface, Tessellation};
+use crate::surface::{Surface, Tessellation};
 use glam::{DVec3, Vec2, Vec3};
 
 /// Densest adaptive tessellation: a sphere at 512 has 512 K triangles.
@@ -50,21 +50,23 @@ pub fn projected_chord_error(
     viewport: Viewport,
 ) -> f32 {
     let mesh = surface.tessellate(Tessellation { density });
-    let midpoints = edge_midpoint_uvs(&mesh);
+    let midpoints = edge_midpoint_uvs(&mesh.uvs, &mesh.indices);
     let on_surface: Vec<Vec3> = midpoints
         .iter()
         .map(|uv| surface.frame(uv.x, uv.y).p)
         .collect();
-    worst_projected_sag(&mesh, &on_surface, surface.origin(), camera, viewport)
+    let triangles = (&mesh.positions[..], &mesh.indices[..]);
+    worst_projected_sag(triangles, &on_surface, surface.origin(), camera, viewport)
 }
 
-/// The (u,v) midpoint of every edge of every triangle, three a triangle in order.
-pub fn edge_midpoint_uvs(mesh: &Mesh) -> Vec<Vec2> {
-    mesh.indices
-        .iter()
-        .flat_map(|tri| {
-            EDGES.map(|(a, b)| (mesh.uvs[tri[a] as usize] + mesh.uvs[tri[b] as usize]) / 2.0)
-        })
+/// The (u,v) midpoint of every edge of every triangle (`indices` into vertices at `uvs`),
+/// three a triangle in order.
+pub fn edge_midpoint_uvs(uvs: &[Vec2], indices: &[[u32; 3]]) -> Vec<Vec2> {
+    let midpoint = |tri: &[u32; 3], (a, b): (usize, usize)| {
+        (uvs[tri[a] as usize] + uvs[tri[b] as usize]) / 2.0
+    };
+    (indices.iter())
+        .flat_map(|tri| EDGES.map(|edge| midpoint(tri, edge)))
         .collect()
 }
 
@@ -72,9 +74,9 @@ const EDGES: [(usize, usize); 3] = [(0, 1), (1, 2), (2, 0)];
 
 /// The largest distance in pixels between an edge's midpoint and `on_surface`, the surface at
 /// its (u,v) midpoint (in `edge_midpoint_uvs`'s order, relative to `anchor`), over the edges in
-/// front of the near plane.
+/// front of the near plane of the triangles (`indices` into vertices at `positions`).
 pub fn worst_projected_sag(
-    mesh: &Mesh,
+    (positions, indices): (&[Vec3], &[[u32; 3]]),
     on_surface: &[Vec3],
     anchor: DVec3,
     camera: &Camera,
@@ -85,12 +87,9 @@ pub fn worst_projected_sag(
     let half_fov = (camera.vfov_degrees.clamp(1e-3, 179.0).to_radians() / 2.0).tan();
     let pixels_per_unit_at_depth_1 = viewport.height as f32 / (2.0 * half_fov);
     let mut worst: f32 = 0.0;
-    let edges = mesh
-        .indices
-        .iter()
-        .flat_map(|tri| EDGES.map(|(a, b)| (tri[a], tri[b])));
+    let edges = (indices.iter()).flat_map(|tri| EDGES.map(|(a, b)| (tri[a], tri[b])));
     for ((ia, ib), &on_surface) in edges.zip(on_surface) {
-        let chord = (mesh.positions[ia as usize] + mesh.positions[ib as usize]) / 2.0;
+        let chord = (positions[ia as usize] + positions[ib as usize]) / 2.0;
         let depth = (origin + on_surface).dot(forward);
         if depth > camera.near {
             let sag = on_surface.distance(chord);

@@ -22,22 +22,29 @@ pub struct DisplacedGrid {
 
 /// Margin on the 1/d² prediction, so one refinement usually suffices.
 const PREDICTION_MARGIN: f32 = 1.1;
+/// Triangles whose edges are measured at once.
+const MEASURED_TOGETHER: usize = 1 << 14;
 /// Refinements tried before the grid is taken as it is.
 const MOST_REFINEMENTS: u32 = 6;
 
 /// `base` moved by `field`, cut finely enough that its mesh stays within `tolerance_px` of it in
-/// this view, in at most `most_triangles` triangles; `None` when `base` cannot be displaced.
+/// this view, in at most `most_triangles` triangles; `None` when `base` cannot be displaced, and
+/// why not when the heights reach past the base's own size (a sphere's radius, a plane's longer
+/// side): so far out the surface folds through itself and its triangles swamp every view.
 pub fn displaced_grid(
     base: &Surface,
     field: Arc<dyn HeightField>,
     (camera, viewport): (&Camera, Viewport),
     tolerance_px: f32,
     most_triangles: u64,
-) -> Option<DisplacedGrid> {
+) -> Option<Result<DisplacedGrid, String>> {
     let base = DisplacedBase::of(base)?;
     let tolerance = tolerance_px.max(1e-3);
     let mut cells = starting_cells(&base);
     let mut grid = cut(&base, &field, cells, (camera, viewport));
+    if let Err(why) = within_bounds(&grid.surface) {
+        return Some(Err(why));
+    }
     for _ in 0..MOST_REFINEMENTS {
         if grid.error_px <= tolerance {
             break;
@@ -50,7 +57,24 @@ pub fn displaced_grid(
         cells = affordable;
         grid = cut(&base, &field, cells, (camera, viewport));
     }
-    Some(grid)
+    Some(Ok(grid))
+}
+
+/// Whether the heights stay within the base's own size (see `displaced_grid`).
+fn within_bounds(surface: &Displaced) -> Result<(), String> {
+    let (low, high) = surface.heights;
+    let reach = low.abs().max(high.abs());
+    let (size, what) = match &surface.base {
+        DisplacedBase::Plane(plane) => (plane.size.max_element(), "the plane's size"),
+        DisplacedBase::Sphere(sphere) => (sphere.radius, "the sphere's radius"),
+    };
+    match reach.is_finite() && reach <= size {
+        true => Ok(()),
+        false => Err(format!(
+            "its bump's heights reach {reach}, past {what} ({size}): displaced that far it \
+             would fold through itself; it keeps Blinn's bump (lower the strength to displace it)"
+        )),
+    }
 }
 
 /// Cells along the base's longer side (a plane) or per half turn (a sphere), to start from.
@@ -101,11 +125,18 @@ fn cut(
     let mesh = surface
         .own_mesh()
         .expect("a displaced surface makes its own mesh");
-    let midpoints = edge_midpoint_uvs(&mesh);
-    let mut on_surface = Frames::default();
-    surface.displaced_frames(&midpoints, &mut on_surface);
-    let on_surface: Vec<_> = on_surface.iter().map(|f| f.p).collect();
-    let error_px = worst_projected_sag(&mesh, &on_surface, surface.origin(), camera, viewport);
+    // A piece of the triangles at a time: every edge's midpoint frame at once would take more
+    // memory than the mesh.
+    let error_px = (mesh.indices.chunks(MEASURED_TOGETHER))
+        .map(|indices| {
+            let midpoints = edge_midpoint_uvs(&mesh.uvs, indices);
+            let mut on_surface = Frames::default();
+            surface.displaced_frames(&midpoints, &mut on_surface);
+            let on_surface: Vec<_> = on_surface.iter().map(|f| f.p).collect();
+            let triangles = (&mesh.positions[..], indices);
+            worst_projected_sag(triangles, &on_surface, surface.origin(), camera, viewport)
+        })
+        .fold(0.0, f32::max);
     DisplacedGrid {
         surface,
         mesh,

@@ -147,7 +147,7 @@ fn interactive_displace_tolerance() -> f32 {
 
 /// The most triangles one displaced surface is cut into, whatever the budget: past this a
 /// still takes seconds to cut and the workbench stops being immediate.
-pub const MOST_DISPLACED_TRIANGLES: u64 = 1 << 21;
+pub const MOST_DISPLACED_TRIANGLES: u64 = 1 << 20;
 
 impl Default for Quality {
     fn default() -> Self {
@@ -280,10 +280,19 @@ impl Quality {
         let displaced_count = scene.objects.iter().filter(|o| o.displace).count().max(1) as u64;
         let spare = budget.saturating_sub(fixed.total()) / BYTES_PER_TRIANGLE / displaced_count;
         let most_triangles = spare.min(MOST_DISPLACED_TRIANGLES);
-        let grids: Vec<Option<DisplacedGrid>> = scene
+        let attempts: Vec<Result<Option<DisplacedGrid>, String>> = scene
             .objects
             .par_iter()
             .map(|o| self.displaced(o, scene.time, (camera, viewport), most_triangles))
+            .collect();
+        let mut notices = Vec::new();
+        let grids: Vec<Option<DisplacedGrid>> = (attempts.into_iter().enumerate())
+            .map(|(index, attempt)| {
+                attempt.unwrap_or_else(|why| {
+                    notices.push(format!("object {}: {why}", index + 1));
+                    None
+                })
+            })
             .collect();
         let triangles = scene
             .objects
@@ -324,31 +333,30 @@ impl Quality {
                 }
             })
             .collect();
-        Ok(PreparedScene { scene, objects })
+        Ok(PreparedScene {
+            scene,
+            objects,
+            notices,
+        })
     }
 
     /// The displaced surface `object` asks for, cut for this view in at most `most_triangles`
     /// triangles; `None` where it does not ask, or cannot be displaced (see
-    /// `displacement_refused`).
+    /// `Object::displacement_refused`), and why not where its heights are out of bounds.
     fn displaced(
         &self,
         object: &Object,
         time: f64,
         view: (&Camera, Viewport),
         most_triangles: u64,
-    ) -> Option<DisplacedGrid> {
-        if !object.displace {
-            return None;
-        }
-        let field = BumpHeights::new(object.material.bump.as_ref()?, time)?;
+    ) -> Result<Option<DisplacedGrid>, String> {
+        let bump = object.material.bump.as_ref().filter(|_| object.displace);
+        let Some(field) = bump.and_then(|bump| BumpHeights::new(bump, time)) else {
+            return Ok(None);
+        };
         let tolerance = self.displace_tolerance_px;
-        displaced_grid(
-            &object.surface,
-            Arc::new(field),
-            view,
-            tolerance,
-            most_triangles,
-        )
+        let field = Arc::new(field);
+        displaced_grid(&object.surface, field, view, tolerance, most_triangles).transpose()
     }
 
     /// The tessellation density this quality gives a surface in this view.

@@ -9,6 +9,8 @@ use rayon::prelude::*;
 pub struct PreparedScene {
     pub scene: Scene,
     pub objects: Vec<PreparedObject>,
+    /// What preparing could not do as the scene asked, one line each (a displacement refused).
+    pub notices: Vec<String>,
 }
 
 pub struct PreparedObject {
@@ -28,7 +30,11 @@ impl PreparedScene {
                 mesh: o.surface.tessellate(tessellation),
             })
             .collect();
-        PreparedScene { scene, objects }
+        PreparedScene {
+            scene,
+            objects,
+            notices: Vec::new(),
+        }
     }
 
     pub fn triangle_count(&self) -> usize {

@@ -426,18 +426,22 @@ impl Displaced {
     /// triangle's plane strays from the tangent planes of the exact normals shaded on it, which
     /// shadow lookups are lifted past.
     fn chord_error(&self, mesh: &Mesh) -> f32 {
-        let centres: Vec<Vec2> = mesh
-            .indices
-            .iter()
-            .map(|t| t.iter().map(|&i| mesh.uvs[i as usize]).sum::<Vec2>() / 3.0)
-            .collect();
-        let mut frames = Frames::default();
-        self.displaced_frames(&centres, &mut frames);
-        let gaps = mesh.indices.iter().zip(frames.iter()).map(|(t, frame)| {
-            let centroid = t.iter().map(|&i| mesh.positions[i as usize]).sum::<Vec3>() / 3.0;
-            frame.p.distance(centroid)
-        });
-        gaps.filter(|g| g.is_finite()).fold(0.0, f32::max)
+        let piece_error = |indices: &[[u32; 3]]| {
+            let centres: Vec<Vec2> = (indices.iter())
+                .map(|t| t.iter().map(|&i| mesh.uvs[i as usize]).sum::<Vec2>() / 3.0)
+                .collect();
+            let mut frames = Frames::default();
+            self.displaced_frames(&centres, &mut frames);
+            let gaps = indices.iter().zip(frames.iter()).map(|(t, frame)| {
+                let centroid = t.iter().map(|&i| mesh.positions[i as usize]).sum::<Vec3>() / 3.0;
+                frame.p.distance(centroid)
+            });
+            gaps.filter(|g| g.is_finite()).fold(0.0, f32::max)
+        };
+        // A piece at a time, so the centres' frames take little memory beside the mesh.
+        (mesh.indices.chunks(1 << 14))
+            .map(piece_error)
+            .fold(0.0, f32::max)
     }
 }
 

@@ -593,6 +593,9 @@ impl App {
     fn reprepare(&mut self, quality: Preset) {
         match prepare(self.prepared.scene.clone(), quality, &self.settings) {
             Ok((prepared, in_use)) => {
+                if let Some(notice) = prepared.notices.first() {
+                    self.tell(Message::Info(crate::term::sanitize(notice).into_owned()));
+                }
                 self.prepared = prepared;
                 self.quality = quality;
                 self.quality_in_use = in_use;

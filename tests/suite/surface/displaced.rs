@@ -166,3 +166,36 @@ fn pits_shadow_their_own_floors_only_when_displaced() {
         VIEW.width * VIEW.height
     );
 }
+
+#[test]
+fn heights_past_the_radius_are_refused_in_one_line_and_drawn_as_blinns_bump() {
+    let dir = TestDir::new("displaced-refused");
+    let scene = scene(&dir, "height = sin(u * 0.25) * sin(v * 0.25)", 1e6, true);
+    let quality = Quality::draft();
+    let prepared = quality
+        .prepare(scene.clone(), &scene.camera, VIEW, 0)
+        .unwrap();
+    assert_eq!(prepared.notices.len(), 1, "{:?}", prepared.notices);
+    assert!(
+        prepared.notices[0].contains("past the sphere's radius"),
+        "{}",
+        prepared.notices[0]
+    );
+    let surface = &prepared.objects[0].surface;
+    assert!(matches!(surface, bumpwork::surface::Surface::Sphere(_)));
+    assert!(
+        prepared.objects[0].material.bump.is_some(),
+        "the bump stays"
+    );
+}
+
+#[test]
+fn a_height_with_no_value_leaves_the_surface_where_it_was_and_nothing_is_nan() {
+    let dir = TestDir::new("displaced-nan");
+    let frame = render(
+        &scene(&dir, "height = sqrt(u - 200)", 1.0, true),
+        &Quality::interactive(),
+    );
+    assert!(frame.color().iter().all(|c| c.is_finite()));
+    assert!(covered(&frame) > 1000, "the sphere is drawn");
+}
