@@ -78,13 +78,6 @@ impl DisplacedBase {
         }
     }
 
-    pub fn surface(&self) -> Surface {
-        match self {
-            DisplacedBase::Plane(plane) => Surface::Plane(plane.clone()),
-            DisplacedBase::Sphere(sphere) => Surface::Sphere(sphere.clone()),
-        }
-    }
-
     fn parametric(&self) -> &dyn BaseSurface {
         match self {
             DisplacedBase::Plane(plane) => plane,
@@ -419,9 +412,7 @@ impl Displaced {
             DisplacedBase::Sphere(sphere) => std::f32::consts::PI * sphere.radius / cells_v,
         }
     }
-}
 
-impl Displaced {
     /// The farthest a triangle's centroid lies from P' at its centroid's (u,v): how far a
     /// triangle's plane strays from the tangent planes of the exact normals shaded on it, which
     /// shadow lookups are lifted past.

@@ -1,17 +1,10 @@
 //! The workbench's displacement key: the edited object drawn as the surface its bump moves it
 //! to, or back as the unmoved surface with Blinn's bump, and the bump still edited either way.
 
-use bumpwork::term::{ColorChoice, ColorMode};
-use bumpwork::tui::{Action, App, Screen, WorkbenchOptions};
+use bumpwork::tui::{Action, App, Screen};
 
 fn app(scene: &str) -> App {
-    let options = WorkbenchOptions {
-        scenes: vec![scene.into()],
-        colors: ColorChoice::Fixed(ColorMode::TrueColor),
-        watch: false,
-        ..WorkbenchOptions::default()
-    };
-    App::new(&options, ColorMode::TrueColor).unwrap()
+    super::true_colour_app(scene)
 }
 
 fn status(app: &App) -> String {

@@ -2,18 +2,11 @@
 //! frame's PSNR in the status line, and the preset key cycling the crate's presets.
 
 use bumpwork::raster::Framebuffer;
-use bumpwork::term::{ColorChoice, ColorMode};
-use bumpwork::tui::{Action, App, Screen, ViewMode, WorkbenchOptions, render_frame};
+use bumpwork::tui::{Action, App, Screen, ViewMode, render_frame};
 use glam::Vec3;
 
 fn app(scene: &str) -> App {
-    let options = WorkbenchOptions {
-        scenes: vec![scene.into()],
-        colors: ColorChoice::Fixed(ColorMode::TrueColor),
-        watch: false,
-        ..WorkbenchOptions::default()
-    };
-    App::new(&options, ColorMode::TrueColor).unwrap()
+    super::true_colour_app(scene)
 }
 
 fn status(screen: &Screen, app: &App) -> String {
