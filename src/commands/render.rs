@@ -202,7 +202,7 @@ fn render_start(
             sweep: None,
         };
         render_one(
-            &prepared,
+            &*prepared.at(&settings)?,
             (settings, place),
             (&frame.path, format),
             interrupt,
@@ -256,7 +256,9 @@ fn render_animation(
     for (i, frame) in frames.iter().enumerate() {
         let mut report = |f: f64| progress.update((i as f64 + f) / frames.len() as f64);
         let interrupted = || interrupt.received();
-        let (stats, rgb) = prepared.rows(at(frame.time), output, &mut report, &interrupted)?;
+        let settings = at(frame.time);
+        let prepared = prepared.at(&settings)?;
+        let (stats, rgb) = prepared.rows(settings, output, &mut report, &interrupted)?;
         flattened += stats.flattened;
         file.add_frame(&rgb)?;
     }

@@ -24,5 +24,5 @@ pub use output_file::{OutputFile, STANDARD_OUTPUT, check_destination, write_whol
 pub use png_file::{PngStill, read_png_rgb8, write_png, write_png_with_text};
 pub use pov_scene::{BAKE_SIDE, pov, rgb, write_pov, write_pov_header};
 pub use ppm_file::PpmStill;
-pub use still_file::{PreparedStill, StillFormat, StillPlace, StillWritten};
+pub use still_file::{PreparedStill, StillAt, StillFormat, StillPlace, StillWritten};
 pub use still_start::StillStart;

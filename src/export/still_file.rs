@@ -69,6 +69,23 @@ pub struct StillWritten {
     pub warnings: Vec<String>,
 }
 
+/// A still at one moment: the same prepared still, or one prepared again for that moment.
+pub enum StillAt<'a> {
+    Same(&'a PreparedStill),
+    Again(Box<PreparedStill>),
+}
+
+impl std::ops::Deref for StillAt<'_> {
+    type Target = PreparedStill;
+
+    fn deref(&self) -> &PreparedStill {
+        match self {
+            StillAt::Same(still) => still,
+            StillAt::Again(still) => still,
+        }
+    }
+}
+
 impl PreparedStill {
     /// Prepares `scene` from `source` (text `scene_text`) for stills seen by `camera` at the
     /// size and quality of `settings`, within the memory budget.
@@ -84,6 +101,20 @@ impl PreparedStill {
             source: source.to_string(),
             scene_text: scene_text.to_string(),
         })
+    }
+
+    /// This still at the moment `settings` shows: itself, or prepared again where a displaced
+    /// object's bump moves with time (its shape is cut at the moment it shows).
+    pub fn at(&self, settings: &StillSettings) -> Result<StillAt<'_>, Error> {
+        let scene = self.scene();
+        let moving_shape =
+            (scene.objects.iter()).any(|o| o.displace && o.material.moves_with_time());
+        if !moving_shape || scene.time == settings.time {
+            return Ok(StillAt::Same(self));
+        }
+        let source = (self.source.as_str(), self.scene_text.as_str());
+        let again = PreparedStill::new(source, scene.clone(), &self.camera, settings)?;
+        Ok(StillAt::Again(Box::new(again)))
     }
 
     /// A scene prepared already (say at a tessellation of its own), seen by `camera`.

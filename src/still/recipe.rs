@@ -122,6 +122,11 @@ impl StillSettings {
     ) -> Result<crate::scene::PreparedScene, crate::memory_budget::OverBudget> {
         let (width, height) = self.size;
         let full = crate::raster::Viewport { width, height };
+        // The scene at the moment the still shows: a displaced surface is cut as it is then.
+        let scene = Scene {
+            time: self.time,
+            ..scene
+        };
         self.quality.prepare(scene, camera, full, output_bytes)
     }
 

@@ -199,3 +199,33 @@ fn a_height_with_no_value_leaves_the_surface_where_it_was_and_nothing_is_nan() {
     assert!(frame.color().iter().all(|c| c.is_finite()));
     assert!(covered(&frame) > 1000, "the sphere is drawn");
 }
+
+#[test]
+fn a_moving_height_is_cut_at_the_moment_each_still_shows() {
+    use bumpwork::still::{ResolveFilter, StillSettings};
+    let dir = TestDir::new("displaced-moving");
+    let scene = scene(&dir, "height = 4 * sin(u * 0.25 + 3 * t)", 1.0, true);
+    let at = |time: f64| StillSettings {
+        size: (VIEW.width, VIEW.height),
+        quality: Quality::draft(),
+        resolve: ResolveFilter::default(),
+        time,
+        mode: bumpwork::shade::ShaderMode::Shaded,
+    };
+    let shape = |time: f64| {
+        let prepared = at(time).prepare(scene.clone(), &scene.camera).unwrap();
+        assert_eq!(prepared.scene.time, time, "the scene at the still's moment");
+        prepared.objects[0].mesh.positions.clone()
+    };
+    let (now, later) = (shape(0.0), shape(0.5));
+    let moved = now
+        .iter()
+        .zip(&later)
+        .filter(|(a, b)| a.distance(**b) > 0.1)
+        .count();
+    assert!(
+        moved > now.len() / 4,
+        "{moved} of {} vertices moved",
+        now.len()
+    );
+}
