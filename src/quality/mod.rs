@@ -280,20 +280,7 @@ impl Quality {
         let displaced_count = scene.objects.iter().filter(|o| o.displace).count().max(1) as u64;
         let spare = budget.saturating_sub(fixed.total()) / BYTES_PER_TRIANGLE / displaced_count;
         let most_triangles = spare.min(MOST_DISPLACED_TRIANGLES);
-        let attempts: Vec<Result<Option<DisplacedGrid>, String>> = scene
-            .objects
-            .par_iter()
-            .map(|o| self.displaced(o, scene.time, (camera, viewport), most_triangles))
-            .collect();
-        let mut notices = Vec::new();
-        let grids: Vec<Option<DisplacedGrid>> = (attempts.into_iter().enumerate())
-            .map(|(index, attempt)| {
-                attempt.unwrap_or_else(|why| {
-                    notices.push(format!("object {}: {why}", index + 1));
-                    None
-                })
-            })
-            .collect();
+        let (grids, notices) = self.displaced_grids(&scene, (camera, viewport), most_triangles);
         let triangles = scene
             .objects
             .iter()
@@ -305,39 +292,67 @@ impl Quality {
             })
             .fold(0, u64::saturating_add);
         memory(triangles).check(budget)?;
-        let objects = scene
-            .objects
-            .par_iter()
-            .zip(tessellations)
-            .zip(grids)
-            .map(|((o, tessellation), grid)| match grid {
-                Some(grid) => PreparedObject {
-                    surface: Surface::Displaced(grid.surface),
-                    // The bump is the geometry now: its normal is the displaced frame's.
-                    material: Material {
-                        bump: None,
-                        ..o.material.clone()
-                    },
-                    mesh: grid.mesh,
-                },
-                None => {
-                    let mut mesh = o.surface.tessellate(tessellation);
-                    if self.coverage == Coverage::Exact {
-                        push_out_to_hull(&o.surface, &mut mesh);
-                    }
-                    PreparedObject {
-                        surface: o.surface.clone(),
-                        material: o.material.clone(),
-                        mesh,
-                    }
-                }
-            })
+        let objects = (scene.objects.par_iter().zip(tessellations).zip(grids))
+            .map(|((o, tessellation), grid)| self.prepared_object(o, tessellation, grid))
             .collect();
         Ok(PreparedScene {
             scene,
             objects,
             notices,
         })
+    }
+
+    /// Each object's displaced surface, where it asks for one and can have it, and a notice for
+    /// each that cannot for its heights.
+    fn displaced_grids(
+        &self,
+        scene: &Scene,
+        view: (&Camera, Viewport),
+        most_triangles: u64,
+    ) -> (Vec<Option<DisplacedGrid>>, Vec<String>) {
+        let attempts: Vec<Result<Option<DisplacedGrid>, String>> = (scene.objects.par_iter())
+            .map(|o| self.displaced(o, scene.time, view, most_triangles))
+            .collect();
+        let mut notices = Vec::new();
+        let grids = (attempts.into_iter().enumerate())
+            .map(|(index, attempt)| {
+                attempt.unwrap_or_else(|why| {
+                    notices.push(format!("object {}: {why}", index + 1));
+                    None
+                })
+            })
+            .collect();
+        (grids, notices)
+    }
+
+    /// `object` as the rasterizer draws it: its displaced surface and mesh where it has one,
+    /// else its surface tessellated (as a hull around it, with exact coverage).
+    fn prepared_object(
+        &self,
+        object: &Object,
+        tessellation: Tessellation,
+        grid: Option<DisplacedGrid>,
+    ) -> PreparedObject {
+        if let Some(grid) = grid {
+            return PreparedObject {
+                surface: Surface::Displaced(grid.surface),
+                // The bump is the geometry now: its normal is the displaced frame's.
+                material: Material {
+                    bump: None,
+                    ..object.material.clone()
+                },
+                mesh: grid.mesh,
+            };
+        }
+        let mut mesh = object.surface.tessellate(tessellation);
+        if self.coverage == Coverage::Exact {
+            push_out_to_hull(&object.surface, &mut mesh);
+        }
+        PreparedObject {
+            surface: object.surface.clone(),
+            material: object.material.clone(),
+            mesh,
+        }
     }
 
     /// The displaced surface `object` asks for, cut for this view in at most `most_triangles`

@@ -1,6 +1,7 @@
 //! The workbench's state and how each action changes it. Drawing reads this state; nothing here
 //! touches the terminal. Changes mark what must be redrawn, so an idle screen costs nothing.
 
+mod displacement;
 mod scene_files;
 mod scene_switching;
 mod workbench_state;
@@ -260,12 +261,6 @@ impl App {
         }
     }
 
-    /// Whether the edited object is drawn displaced by its bump.
-    pub fn is_displaced(&self) -> bool {
-        let object = self.prepared.objects.get(self.object);
-        object.is_some_and(|o| matches!(o.surface, crate::surface::Surface::Displaced(_)))
-    }
-
     /// A key: the topmost overlay's if it takes it, else the key map's.
     pub fn key(&mut self, key: &KeyEvent) {
         self.dirty.text = true;
@@ -475,26 +470,6 @@ impl App {
             }
             Err(e) => self.tell(Message::Error(crate::term::sanitize(&e).into_owned())),
         }
-    }
-
-    /// Draws the edited object as the surface its bump height moves it to, or back as the
-    /// unmoved surface with Blinn's bump; says which, or why it cannot be displaced.
-    fn toggle_displacement(&mut self) {
-        let Some(object) = self.prepared.scene.objects.get_mut(self.object) else {
-            return;
-        };
-        object.displace = !object.displace;
-        let refused = match object.material.bump {
-            None => Some("it has no bump to displace it by".to_string()),
-            Some(_) => object.displacement_refused(),
-        };
-        let on = object.displace;
-        self.reprepare(self.quality);
-        self.tell(Message::Info(match (on, refused) {
-            (true, Some(why)) => crate::term::sanitize(&why).into_owned(),
-            (true, None) => "displaced by its bump".into(),
-            (false, _) => "bump only (Blinn)".into(),
-        }));
     }
 
     /// Applies `edit` to the current object's material, both as rendered and as kept in the scene
