@@ -121,10 +121,7 @@ fn cut(
     cells: f32,
     (camera, viewport): (&Camera, Viewport),
 ) -> DisplacedGrid {
-    let surface = Displaced::new(base.clone(), field.clone(), shape(base, cells));
-    let mesh = surface
-        .own_mesh()
-        .expect("a displaced surface makes its own mesh");
+    let (surface, mesh) = Displaced::cut(base.clone(), field.clone(), shape(base, cells));
     // A piece of the triangles at a time: every edge's midpoint frame at once would take more
     // memory than the mesh.
     let error_px = (mesh.indices.chunks(MEASURED_TOGETHER))

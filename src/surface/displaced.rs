@@ -88,7 +88,6 @@ impl DisplacedBase {
 
 /// What displacement needs of its base beyond `Parametric`.
 trait BaseSurface {
-    fn frame_at(&self, uv: Vec2) -> Frame;
     fn frames_at(&self, uvs: &[Vec2], out: &mut Frames);
     /// ∂n/∂u and ∂n/∂v at `frame`.
     fn normal_derivatives(&self, frame: &Frame) -> (Vec3, Vec3);
@@ -105,10 +104,6 @@ trait BaseSurface {
 }
 
 impl BaseSurface for Plane {
-    fn frame_at(&self, uv: Vec2) -> Frame {
-        self.frame(uv.x, uv.y)
-    }
-
     fn frames_at(&self, uvs: &[Vec2], out: &mut Frames) {
         self.frames(uvs.len(), |k| uvs[k], out);
     }
@@ -142,10 +137,6 @@ impl BaseSurface for Plane {
 }
 
 impl BaseSurface for Sphere {
-    fn frame_at(&self, uv: Vec2) -> Frame {
-        self.frame(uv.x, uv.y)
-    }
-
     fn frames_at(&self, uvs: &[Vec2], out: &mut Frames) {
         self.frames(uvs.len(), |k| uvs[k], out);
     }
@@ -188,8 +179,10 @@ fn clip((start, end): (f64, f64), range: &RangeInclusive<f64>) -> Option<(f64, f
     (start <= end).then_some((start, end))
 }
 
-/// Iterations of bisection once a crossing is bracketed: 2⁻⁴⁰ of a march step.
-const BISECTIONS: u32 = 40;
+/// Steps of the ray search evaluated together.
+const MARCH_BATCH: u64 = 32;
+/// Rounds narrowing a bracketed crossing: each to a 32nd, 32⁻⁶ ≈ 2⁻³⁰ of a march step in all.
+const REFINEMENTS: u32 = 6;
 
 impl Displaced {
     fn base(&self) -> &dyn BaseSurface {
@@ -229,50 +222,74 @@ impl Displaced {
         }
     }
 
-    /// The signed gap between the ray's point at `t` and P' along the normal there: positive
-    /// above the displaced surface, negative below; `None` off the domain.
-    fn gap(&self, ray: &Ray, t: f64) -> Option<(Vec2, f64)> {
-        let (uv, height) = self.base().project(ray.origin + ray.direction * t)?;
+    /// The signed gap between the ray's point at each `t` and P' along the normal there:
+    /// positive above the displaced surface, negative below; `None` off the domain. One batch of
+    /// heights for them all: the field's evaluation has a cost per call.
+    fn gaps(&self, ray: &Ray, ts: &[f64]) -> Vec<Option<(Vec2, f64)>> {
+        let projected: Vec<Option<(Vec2, f64)>> = (ts.iter())
+            .map(|&t| self.base().project(ray.origin + ray.direction * t))
+            .collect();
+        let uvs: Vec<Vec2> = projected.iter().flatten().map(|&(uv, _)| uv).collect();
         let mut frames = Frames::default();
-        frames.push(self.base().frame_at(uv));
-        let (mut b, mut gradient) = (Vec::new(), Vec::new());
-        self.field.sample(&[uv], &frames, &mut b, &mut gradient);
-        Some((uv, height - f64::from(b[0])))
+        self.base().frames_at(&uvs, &mut frames);
+        let (mut heights, mut gradients) = (Vec::new(), Vec::new());
+        self.field
+            .sample(&uvs, &frames, &mut heights, &mut gradients);
+        let mut heights = heights.into_iter();
+        (projected.into_iter())
+            .map(|point| {
+                let (uv, above_base) = point?;
+                Some((uv, above_base - f64::from(heights.next()?)))
+            })
+            .collect()
     }
 
-    /// The first crossing from above P' to below it along the ray within `range`.
+    /// The first crossing from above P' to below it along the ray within `range`, marched
+    /// `MARCH_BATCH` steps at a time.
     fn march(&self, ray: &Ray, range: &RangeInclusive<f64>) -> Option<Hit> {
         let heights = (f64::from(self.heights.0), f64::from(self.heights.1));
         let (start, end) = self.base().shell(ray, heights, range)?;
         let speed = ray.direction.length();
         let step = f64::from(self.march_step.max(1e-6)) / speed.max(1e-300);
-        let steps = ((end - start) / step).ceil().min(1e6) as u64;
-        let mut before = (start, self.gap(ray, start));
-        for k in 1..=steps.max(1) {
-            let t = (start + step * k as f64).min(end);
-            let now = (t, self.gap(ray, t));
-            if let (Some((_, above)), Some((_, below))) = (before.1, now.1)
-                && above > 0.0
-                && below <= 0.0
-            {
-                return Some(self.bisect(ray, before.0, t));
+        let steps = ((end - start) / step).ceil().clamp(1.0, 1e6) as u64;
+        let mut first = 0;
+        while first < steps {
+            let last = (first + MARCH_BATCH).min(steps);
+            let ts: Vec<f64> = (first..=last)
+                .map(|k| (start + step * k as f64).min(end))
+                .collect();
+            if let Some(k) = first_crossing(&self.gaps(ray, &ts)) {
+                return Some(self.refine(ray, ts[k - 1], ts[k]));
             }
-            before = now;
+            first = last;
         }
         None
     }
 
-    fn bisect(&self, ray: &Ray, mut above: f64, mut below: f64) -> Hit {
-        for _ in 0..BISECTIONS {
-            let middle = 0.5 * (above + below);
-            match self.gap(ray, middle) {
-                Some((_, gap)) if gap > 0.0 => above = middle,
-                _ => below = middle,
-            }
+    /// The crossing between `above` and `below` (t along the ray), narrowed by
+    /// `REFINEMENTS` rounds of `MARCH_BATCH` even steps each.
+    fn refine(&self, ray: &Ray, mut above: f64, mut below: f64) -> Hit {
+        for _ in 0..REFINEMENTS {
+            let width = (below - above) / MARCH_BATCH as f64;
+            let ts: Vec<f64> = (0..=MARCH_BATCH)
+                .map(|k| above + width * k as f64)
+                .collect();
+            let Some(k) = first_crossing(&self.gaps(ray, &ts)) else {
+                break;
+            };
+            (above, below) = (ts[k - 1], ts[k]);
         }
-        let uv = self.gap(ray, below).map_or(Vec2::NAN, |(uv, _)| uv);
+        let uv = self.gaps(ray, &[below])[0].map_or(Vec2::NAN, |(uv, _)| uv);
         Hit { t: below, uv }
     }
+}
+
+/// The first index whose gap is at or below P' while the one before it is above.
+fn first_crossing(gaps: &[Option<(Vec2, f64)>]) -> Option<usize> {
+    (1..gaps.len()).find(|&k| {
+        let (before, now) = (gaps[k - 1], gaps[k]);
+        matches!((before, now), (Some((_, a)), Some((_, b))) if a > 0.0 && b <= 0.0)
+    })
 }
 
 impl Parametric for Displaced {
@@ -337,17 +354,7 @@ impl Parametric for Displaced {
     /// The base's grid moved to P', its rows' seam and pole vertices welded to one height so the
     /// moved mesh has no crack where the base's did not.
     fn own_mesh(&self) -> Option<Mesh> {
-        let mut mesh = match &self.base {
-            DisplacedBase::Plane(plane) => tessellate::grid_with_shape(plane, self.shape),
-            DisplacedBase::Sphere(sphere) => tessellate::grid_with_shape(sphere, self.shape),
-        };
-        let mut frames = Frames::default();
-        self.displaced_frames(&mesh.uvs, &mut frames);
-        mesh.positions = frames.iter().map(|f| f.p).collect();
-        if let DisplacedBase::Sphere(_) = self.base {
-            weld_seams_and_poles(self.shape, &mut mesh.positions);
-        }
-        mesh.chord_error = self.chord_error(&mesh);
+        let (_, mesh) = Displaced::cut(self.base.clone(), self.field.clone(), self.shape);
         Some(mesh)
     }
 
@@ -361,9 +368,14 @@ impl Parametric for Displaced {
 }
 
 impl Displaced {
-    /// P + B·n over `base`, cut into `shape`, its ray search stepping `march_step`, with its
-    /// height bounds sampled at the vertices of that grid (and a tenth of their span beyond).
-    pub fn new(base: DisplacedBase, field: Arc<dyn HeightField>, shape: GridShape) -> Displaced {
+    /// P + B·n over `base`, cut into `shape`, and its mesh, from one evaluation of the field at
+    /// the grid's vertices: its height bounds are those samples' (and a tenth of their span
+    /// beyond), its ray search steps half a cell.
+    pub fn cut(
+        base: DisplacedBase,
+        field: Arc<dyn HeightField>,
+        shape: GridShape,
+    ) -> (Displaced, Mesh) {
         let mut displaced = Displaced {
             base,
             field,
@@ -372,16 +384,14 @@ impl Displaced {
             march_step: 0.0,
             curvature: 0.0,
         };
-        let mesh = match &displaced.base {
+        let mut mesh = match &displaced.base {
             DisplacedBase::Plane(plane) => tessellate::grid_with_shape(plane, shape),
             DisplacedBase::Sphere(sphere) => tessellate::grid_with_shape(sphere, shape),
         };
         let mut frames = Frames::default();
         displaced.base().frames_at(&mesh.uvs, &mut frames);
         let (mut heights, mut gradients) = (Vec::new(), Vec::new());
-        displaced
-            .field
-            .sample(&mesh.uvs, &frames, &mut heights, &mut gradients);
+        (displaced.field).sample(&mesh.uvs, &frames, &mut heights, &mut gradients);
         let low = heights.iter().copied().fold(0.0, f32::min);
         let high = heights.iter().copied().fold(0.0, f32::max);
         let margin = 0.1 * (high - low);
@@ -391,7 +401,12 @@ impl Displaced {
             .map(|k| displaced.moved(&frames.at(k), heights[k], gradients[k]))
             .collect();
         displaced.curvature = largest_turn(&mesh, &moved).max(displaced.base_curvature());
-        displaced
+        mesh.positions = moved.iter().map(|f| f.p).collect();
+        if let DisplacedBase::Sphere(_) = displaced.base {
+            weld_seams_and_poles(shape, &mut mesh.positions);
+        }
+        mesh.chord_error = displaced.chord_error(&mesh);
+        (displaced, mesh)
     }
 
     fn base_curvature(&self) -> f32 {
